@@ -1,0 +1,95 @@
+#ifndef thinlayer_output_writer_h
+#define thinlayer_output_writer_h
+
+#include <deal.II/base/data_out_base.h>
+
+#include <thinlayer/analysis.h>
+
+#include <fstream>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace thinlayer
+{
+  using namespace dealii;
+
+  /**
+   * One row of history.csv: one load step.
+   */
+  struct HistoryRow
+  {
+    unsigned int        step;
+    double              load_factor;
+    double              load;
+    DisplacementMeasure displacement;
+    StepResult          result;
+  };
+
+  /**
+   * A small JSON object writer: enough for summary.json, with NaN written
+   * as null so that scripts see "no value" rather than a number.
+   */
+  class JsonObject
+  {
+  public:
+    JsonObject &
+    add(const std::string &key, const double value);
+    JsonObject &
+    add(const std::string &key, const std::string &value);
+    JsonObject &
+    add(const std::string &key, const bool value);
+    JsonObject &
+    add_integer(const std::string &key, const unsigned long value);
+    JsonObject &
+    add(const std::string &key, const JsonObject &value);
+
+    /// The object as text, indented by @p indent spaces.
+    std::string
+    str(const unsigned int indent = 0) const;
+
+  private:
+    std::vector<std::pair<std::string, std::string>> members;
+  };
+
+  /**
+   * The files of one run in its output directory: history.csv (one row per
+   * load step, flushed as it goes so a long run can be watched),
+   * fields-NNNN.vtu with fields.pvd for ParaView, summary.json at the end.
+   * The directory is created by the constructor, so construct it only once
+   * all input has been checked.
+   */
+  class OutputWriter
+  {
+  public:
+    explicit OutputWriter(const std::string &directory);
+
+    void
+    write_history_row(const HistoryRow &row);
+
+    template <int dim>
+    void
+    write_fields(const unsigned int    step,
+                 const double          load_factor,
+                 const Analysis<dim>  &analysis,
+                 const Parameters     &parameters);
+
+    void
+    write_summary(const JsonObject &summary);
+
+    /// Any other file (the mesh, the parameters), written whole.
+    void
+    write_file(const std::string &name, const std::string &content) const;
+
+    const std::string &
+    get_directory() const;
+
+  private:
+    std::string                                directory;
+    std::ofstream                              history;
+    std::vector<std::pair<double, std::string>> pvd_records;
+  };
+} // namespace thinlayer
+
+#endif

@@ -1,0 +1,138 @@
+#ifndef thinlayer_parameters_h
+#define thinlayer_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/types.h>
+
+#include <iosfwd>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace thinlayer
+{
+  using namespace dealii;
+
+  /**
+   * Elastic properties of one material id (a gmsh physical surface).
+   */
+  struct MaterialParameters
+  {
+    std::string name;
+    double      youngs_modulus;
+    double      poissons_ratio;
+  };
+
+  /**
+   * Conditions on one boundary id (a gmsh physical curve). Prescribed
+   * displacements, tractions and pressures are all given per unit load
+   * factor, so that one load programme scales all of them together.
+   */
+  struct BoundaryParameters
+  {
+    std::string name;
+    /// Which Cartesian components are prescribed (x, y[, z]).
+    std::vector<bool> constrained_components;
+    /// Function expressions (one per component, ';'-separated) in x, y, z.
+    std::string displacement;
+    std::string traction;
+    /// Normal pressure, positive when it pushes into the body.
+    std::string pressure;
+  };
+
+  /**
+   * How the "load" column of history.csv is measured.
+   */
+  enum class LoadMeasure
+  {
+    /// The load factor times a scale (e.g. a traction times an area).
+    load_factor,
+    /// The sum of reactions on a boundary id in one direction.
+    reaction
+  };
+
+  /**
+   * Everything one analysis needs, read from a parameter file (plus
+   * command-line overrides) by ParameterReader. Plain data: validation
+   * happens while reading, so code that receives a Parameters object can
+   * trust it.
+   */
+  struct Parameters
+  {
+    /// The parameter file, as given on the command line (for messages).
+    std::string parameter_file;
+
+    // Mesh
+    /// The mesh or geometry file, resolved relative to the parameter file.
+    std::string                   mesh_file;
+    std::map<std::string, double> geometry_parameters;
+
+    // Discretisation
+    /// true: 8-node serendipity (constrained Q2); false: 9-node Q2.
+    bool         serendipity;
+    unsigned int gauss_points_per_direction;
+
+    // Materials and boundaries, by id
+    std::map<types::material_id, MaterialParameters> materials;
+    std::map<types::boundary_id, BoundaryParameters> boundaries;
+
+    // Loading: increments of the load factor, one per load step.
+    std::vector<double> load_increments;
+
+    // Monitors
+    LoadMeasure        load_measure;
+    double             load_scale;
+    types::boundary_id load_boundary_id;
+    unsigned int       load_component;
+    types::boundary_id displacement_boundary_id;
+    unsigned int       displacement_component;
+    double             displacement_scale;
+
+    // Reference: the analytic value of the load the run is compared with,
+    // evaluated from the geometry parameters; NaN where none is declared.
+    double reference_load;
+
+    // Output
+    std::string  output_directory;
+    bool         write_vtu;
+    unsigned int vtu_subdivisions;
+    bool         print_timing;
+  };
+
+  /**
+   * Reads parameter files into Parameters. Per-id sections ("Material 3",
+   * "Boundary 2") cannot be declared in advance because the ids come from the
+   * user's mesh, so the reader first scans the file and the overrides for
+   * such section names and declares exactly those.
+   */
+  class ParameterReader
+  {
+  public:
+    /**
+     * Read @p file, then apply @p overrides of the form
+     * "Section/Subsection/Entry=value". Throws InputError naming the file
+     * (or the override) and the entry on any problem.
+     */
+    Parameters
+    read(const std::string              &file,
+         const std::vector<std::string> &overrides = {}) const;
+
+    /**
+     * Same as read(), from the text of a parameter file; @p file_name is
+     * used in messages and to resolve the mesh path.
+     */
+    Parameters
+    read_from_string(const std::string              &text,
+                     const std::string              &file_name,
+                     const std::vector<std::string> &overrides = {}) const;
+
+    /**
+     * Every entry with its documentation and default, with one example
+     * material and boundary section.
+     */
+    void
+    print_parameters(std::ostream &out) const;
+  };
+} // namespace thinlayer
+
+#endif

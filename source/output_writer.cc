@@ -1,0 +1,236 @@
+#include <deal.II/numerics/data_out.h>
+
+#include <thinlayer/elasticity.h>
+#include <thinlayer/output_writer.h>
+
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <sstream>
+
+namespace thinlayer
+{
+  namespace
+  {
+    std::string
+    quoted(const std::string &s)
+    {
+      std::string out = "\"";
+      for (const char c : s)
+        {
+          if (c == '"' || c == '\\')
+            out += '\\';
+          if (c == '\n')
+            out += "\\n";
+          else
+            out += c;
+        }
+      return out + "\"";
+    }
+
+    std::string
+    number(const double value)
+    {
+      if (!std::isfinite(value))
+        return "null";
+      std::ostringstream out;
+      out << std::setprecision(10) << value;
+      return out.str();
+    }
+  } // namespace
+
+
+
+  JsonObject &
+  JsonObject::add(const std::string &key, const double value)
+  {
+    members.emplace_back(key, number(value));
+    return *this;
+  }
+
+
+
+  JsonObject &
+  JsonObject::add(const std::string &key, const std::string &value)
+  {
+    members.emplace_back(key, quoted(value));
+    return *this;
+  }
+
+
+
+  JsonObject &
+  JsonObject::add(const std::string &key, const bool value)
+  {
+    members.emplace_back(key, value ? "true" : "false");
+    return *this;
+  }
+
+
+
+  JsonObject &
+  JsonObject::add_integer(const std::string &key, const unsigned long value)
+  {
+    members.emplace_back(key, std::to_string(value));
+    return *this;
+  }
+
+
+
+  JsonObject &
+  JsonObject::add(const std::string &key, const JsonObject &value)
+  {
+    members.emplace_back(key, value.str(2));
+    return *this;
+  }
+
+
+
+  std::string
+  JsonObject::str(const unsigned int indent) const
+  {
+    const std::string pad(indent, ' ');
+    std::string       out = "{\n";
+    for (unsigned int i = 0; i < members.size(); ++i)
+      {
+        // Nested objects carry their own indentation relative to us.
+        std::string value = members[i].second;
+        for (std::size_t p = value.find('\n'); p != std::string::npos;
+             p             = value.find('\n', p + 1))
+          value.insert(p + 1, pad);
+        out += pad + "  " + quoted(members[i].first) + ": " + value +
+               (i + 1 < members.size() ? ",\n" : "\n");
+      }
+    return out + pad + "}";
+  }
+
+
+
+  OutputWriter::OutputWriter(const std::string &directory)
+    : directory(directory)
+  {
+    std::filesystem::create_directories(directory);
+    history.open(directory + "/history.csv");
+    history << "step,load_factor,load,displacement,displacement_min,"
+               "displacement_max,iterations,converged,max_yield_ratio,"
+               "plastic_points\n";
+  }
+
+
+
+  void
+  OutputWriter::write_history_row(const HistoryRow &row)
+  {
+    const auto optional = [](const double v) {
+      return std::isfinite(v) ? number(v) : std::string();
+    };
+    history << row.step << ',' << number(row.load_factor) << ','
+            << number(row.load) << ',' << number(row.displacement.mean) << ','
+            << number(row.displacement.min) << ','
+            << number(row.displacement.max) << ',' << row.result.iterations
+            << ',' << (row.result.converged ? 1 : 0) << ','
+            << optional(row.result.max_yield_ratio) << ','
+            << row.result.plastic_points << '\n'
+            << std::flush;
+  }
+
+
+
+  template <int dim>
+  void
+  OutputWriter::write_fields(const unsigned int   step,
+                             const double         load_factor,
+                             const Analysis<dim> &analysis,
+                             const Parameters    &parameters)
+  {
+    const auto        &dof_handler = analysis.get_dof_handler();
+    const auto        &tria        = dof_handler.get_triangulation();
+    const unsigned int n_q         = analysis.n_quadrature_points();
+
+    // Cell averages of the point stresses: the stresses live at Gauss
+    // points (later with plastic history), not at nodes.
+    const char *names[] = {"stress_xx", "stress_yy", "stress_zz", "stress_xy"};
+    const unsigned int components[][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}};
+    std::vector<Vector<double>> stress(4, Vector<double>(tria.n_active_cells()));
+    Vector<double> equivalent(tria.n_active_cells());
+    Vector<double> material(tria.n_active_cells());
+    for (const auto &cell : tria.active_cell_iterators())
+      {
+        const unsigned int c = cell->active_cell_index();
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            const auto &sigma = analysis.stress(c, q);
+            for (unsigned int k = 0; k < 4; ++k)
+              stress[k][c] += sigma[components[k][0]][components[k][1]] / n_q;
+            equivalent[c] += equivalent_stress(sigma) / n_q;
+          }
+        material[c] = cell->material_id();
+      }
+
+    DataOut<dim> data_out;
+    data_out.attach_dof_handler(dof_handler);
+    const std::vector<std::string> displacement_names(dim, "displacement");
+    const std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      interpretation(dim,
+                     DataComponentInterpretation::component_is_part_of_vector);
+    data_out.add_data_vector(analysis.get_solution(),
+                             displacement_names,
+                             DataOut<dim>::type_dof_data,
+                             interpretation);
+    for (unsigned int k = 0; k < 4; ++k)
+      data_out.add_data_vector(stress[k], names[k]);
+    data_out.add_data_vector(equivalent, "equivalent_stress");
+    data_out.add_data_vector(material, "material_id");
+    data_out.build_patches(analysis.get_mapping(),
+                           parameters.vtu_subdivisions,
+                           DataOut<dim>::curved_inner_cells);
+
+    std::ostringstream name;
+    name << "fields-" << std::setw(4) << std::setfill('0') << step << ".vtu";
+    std::ofstream vtu(directory + "/" + name.str());
+    data_out.write_vtu(vtu);
+
+    pvd_records.emplace_back(load_factor, name.str());
+    std::ofstream pvd(directory + "/fields.pvd");
+    DataOutBase::write_pvd_record(pvd, pvd_records);
+  }
+
+
+
+  void
+  OutputWriter::write_summary(const JsonObject &summary)
+  {
+    write_file("summary.json", summary.str() + "\n");
+  }
+
+
+
+  void
+  OutputWriter::write_file(const std::string &name,
+                           const std::string &content) const
+  {
+    // Write beside, then rename: a reader never sees half a file.
+    const std::string path = directory + "/" + name;
+    {
+      std::ofstream out(path + ".partial");
+      out << content;
+    }
+    std::filesystem::rename(path + ".partial", path);
+  }
+
+
+
+  const std::string &
+  OutputWriter::get_directory() const
+  {
+    return directory;
+  }
+
+
+
+  template void
+  OutputWriter::write_fields(const unsigned int,
+                             const double,
+                             const Analysis<2> &,
+                             const Parameters &);
+} // namespace thinlayer

@@ -1,0 +1,617 @@
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/utilities.h>
+
+#include <thinlayer/input_error.h>
+#include <thinlayer/parameters.h>
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <regex>
+#include <set>
+#include <sstream>
+
+namespace thinlayer
+{
+  namespace
+  {
+    /**
+     * The message part of a deal.II exception, without the source location
+     * that means nothing to a user.
+     */
+    std::string
+    message_of(const ExceptionBase &exception)
+    {
+      std::ostringstream out;
+      exception.print_info(out);
+      std::string text = out.str();
+      while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+        text.pop_back();
+      return text;
+    }
+
+    std::string
+    directory_of(const std::string &file)
+    {
+      const auto slash = file.find_last_of('/');
+      return slash == std::string::npos ? std::string(".") :
+                                          file.substr(0, slash);
+    }
+
+    /**
+     * The names of per-id sections ("Material 3") that the parameter text
+     * opens, and that the overrides address ("Material 3/...").
+     */
+    std::set<types::global_dof_index>
+    ids_of_sections(const std::string              &text,
+                    const std::vector<std::string> &overrides,
+                    const std::string              &kind)
+    {
+      std::set<types::global_dof_index> ids;
+      const std::regex in_file("^\\s*subsection\\s+" + kind +
+                               "\\s+([0-9]+)\\s*(#.*)?$");
+      std::istringstream lines(text);
+      std::string        line;
+      std::smatch        match;
+      while (std::getline(lines, line))
+        if (std::regex_match(line, match, in_file))
+          ids.insert(std::stoul(match[1]));
+
+      const std::regex in_override("^\\s*" + kind + "\\s+([0-9]+)\\s*/.*");
+      for (const auto &o : overrides)
+        if (std::regex_match(o, match, in_override))
+          ids.insert(std::stoul(match[1]));
+      return ids;
+    }
+
+    void
+    declare_material(ParameterHandler &prm, const unsigned int id)
+    {
+      prm.enter_subsection("Material " + std::to_string(id));
+      prm.declare_entry("Name",
+                        "",
+                        Patterns::Anything(),
+                        "A name for this material id (the gmsh physical "
+                        "surface with the same number), used in output.");
+      prm.declare_entry("Young's modulus",
+                        "1e5",
+                        Patterns::Double(),
+                        "Young's modulus E (> 0).");
+      prm.declare_entry("Poisson's ratio",
+                        "0.3",
+                        Patterns::Double(),
+                        "Poisson's ratio nu, in (-1, 0.5).");
+      prm.leave_subsection();
+    }
+
+    void
+    declare_boundary(ParameterHandler &prm, const unsigned int id)
+    {
+      prm.enter_subsection("Boundary " + std::to_string(id));
+      prm.declare_entry("Name",
+                        "",
+                        Patterns::Anything(),
+                        "A name for this boundary id (the gmsh physical curve "
+                        "with the same number), used in output.");
+      prm.declare_entry("Constrained components",
+                        "",
+                        Patterns::Anything(),
+                        "Comma-separated Cartesian components whose "
+                        "displacement is prescribed here: any of x, y; empty "
+                        "for none.");
+      prm.declare_entry(
+        "Displacement",
+        "0",
+        Patterns::Anything(),
+        "Prescribed displacement per unit load factor of the constrained "
+        "components: one function expression of x, y (and the geometry "
+        "parameters) per component, separated by ';', or one expression "
+        "for all components.");
+      prm.declare_entry("Traction",
+                        "0",
+                        Patterns::Anything(),
+                        "Cartesian traction per unit load factor: expressions "
+                        "as for the displacement.");
+      prm.declare_entry("Pressure",
+                        "0",
+                        Patterns::Anything(),
+                        "Normal pressure per unit load factor, positive into "
+                        "the body: one expression of x, y.");
+      prm.leave_subsection();
+    }
+
+    void
+    declare_fixed_sections(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Mesh");
+      prm.declare_entry("File",
+                        "",
+                        Patterns::Anything(),
+                        "A gmsh geometry (.geo, meshed with gmsh) or mesh "
+                        "(.msh), relative to this parameter file. Physical "
+                        "surfaces become material ids, physical curves "
+                        "boundary ids; cells must be quadrilaterals.");
+      prm.declare_entry(
+        "Geometry parameters",
+        "",
+        Patterns::Anything(),
+        "Values for the DefineConstant[] parameters of the .geo file, as "
+        "'name=value, name=value'. They are also constants in every "
+        "expression of this file.");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Discretisation");
+      prm.declare_entry("Element",
+                        "Q8",
+                        Patterns::Selection("Q8|Q9"),
+                        "Q8: 8-node serendipity quadrilateral (a Q2 element "
+                        "whose centre node is constrained); Q9: Lagrangian "
+                        "9-node quadrilateral.");
+      prm.declare_entry("Gauss points per direction",
+                        "2",
+                        Patterns::Integer(2, 3),
+                        "2: reduced 2x2 integration, as in the paper; 3: full "
+                        "3x3 integration.");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Loading");
+      prm.declare_entry(
+        "Load increments",
+        "1",
+        Patterns::Anything(),
+        "Increments of the load factor, one per load step, comma-separated; "
+        "'n*d' repeats the increment d n times (e.g. '0.5, 10*0.05'). All "
+        "tractions, pressures and prescribed displacements scale with the "
+        "load factor.");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Monitors");
+      prm.declare_entry("Load measure",
+                        "load factor",
+                        Patterns::Selection("load factor|reaction"),
+                        "What the 'load' column reports: the load factor, or "
+                        "the sum of reactions on 'Load boundary id' in "
+                        "'Load component'. Either is multiplied by "
+                        "'Load scale'.");
+      prm.declare_entry("Load scale",
+                        "1",
+                        Patterns::Double(),
+                        "Factor applied to the load measure (e.g. the area a "
+                        "unit traction acts on, or -1 for a sign).");
+      prm.declare_entry("Load boundary id",
+                        "0",
+                        Patterns::Integer(0),
+                        "Boundary id whose reactions are summed.");
+      prm.declare_entry("Load component",
+                        "y",
+                        Patterns::Selection("x|y"),
+                        "Direction of the summed reactions.");
+      prm.declare_entry("Displacement boundary id",
+                        "0",
+                        Patterns::Integer(0),
+                        "Boundary id over which the displacement is "
+                        "averaged (length-weighted); min and max over its "
+                        "nodes are reported too.");
+      prm.declare_entry("Displacement component",
+                        "y",
+                        Patterns::Selection("x|y"),
+                        "Component of the monitored displacement.");
+      prm.declare_entry("Displacement scale",
+                        "1",
+                        Patterns::Double(),
+                        "Factor applied to the monitored displacement (e.g. "
+                        "-1 to report settlement as positive).");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Reference");
+      prm.declare_entry(
+        "Analytic load",
+        "",
+        Patterns::Anything(),
+        "Closed-form value the final load is compared with, as an "
+        "expression of the geometry parameters (e.g. "
+        "'1/(sin(alpha*pi/180)*cos(alpha*pi/180))'); empty for none.");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Output");
+      prm.declare_entry("Directory",
+                        "output",
+                        Patterns::Anything(),
+                        "Where results go, relative to the working "
+                        "directory; created if missing.");
+      prm.declare_entry("Write VTU",
+                        "true",
+                        Patterns::Bool(),
+                        "Write VTU/PVD fields for ParaView at every step.");
+      prm.declare_entry("VTU subdivisions",
+                        "2",
+                        Patterns::Integer(1, 8),
+                        "Patches per cell edge in VTU output (2 shows the "
+                        "quadratic fields).");
+      prm.declare_entry("Print timing",
+                        "true",
+                        Patterns::Bool(),
+                        "Print wall time and the timer table on screen "
+                        "(timings always go to summary.json).");
+      prm.leave_subsection();
+    }
+
+    /// Parse 'name=value, name=value' (the geometry parameters).
+    std::map<std::string, double>
+    parse_geometry_parameters(const std::string &text,
+                              const std::string &file)
+    {
+      const std::string             entry = "Mesh/Geometry parameters";
+      std::map<std::string, double> result;
+      const std::regex identifier("[A-Za-z_][A-Za-z0-9_]*");
+      for (const auto &pair : Utilities::split_string_list(text, ','))
+        {
+          const auto equal = pair.find('=');
+          if (equal == std::string::npos)
+            throw InputError(file,
+                             entry,
+                             "expected 'name=value' pairs, got '" + pair +
+                               "'");
+          const std::string name = Utilities::trim(pair.substr(0, equal));
+          const std::string value = Utilities::trim(pair.substr(equal + 1));
+          if (!std::regex_match(name, identifier))
+            throw InputError(file,
+                             entry,
+                             "expected a parameter name (letters, digits, "
+                             "'_'), got '" +
+                               name + "'");
+          if (name == "x" || name == "y" || name == "z" || name == "pi")
+            throw InputError(file,
+                             entry,
+                             "'" + name +
+                               "' is reserved for expressions; choose "
+                               "another parameter name");
+          try
+            {
+              std::size_t used   = 0;
+              result[name]       = std::stod(value, &used);
+              if (used != value.size())
+                throw std::invalid_argument(value);
+            }
+          catch (const std::exception &)
+            {
+              throw InputError(file,
+                               entry,
+                               "expected a number for '" + name + "', got '" +
+                                 value + "'");
+            }
+        }
+      return result;
+    }
+
+    /// Parse '0.5, 10*0.05' into a list of increments.
+    std::vector<double>
+    parse_increments(const std::string &text, const std::string &file)
+    {
+      const std::string   entry = "Loading/Load increments";
+      std::vector<double> result;
+      const std::regex    repeated(
+        "\\s*([0-9]+)\\s*\\*\\s*([-+0-9.eE]+)\\s*|\\s*([-+0-9.eE]+)\\s*");
+      for (const auto &item : Utilities::split_string_list(text, ','))
+        {
+          std::smatch match;
+          if (!std::regex_match(item, match, repeated))
+            throw InputError(file,
+                             entry,
+                             "expected a number or 'n*number', got '" + item +
+                               "'");
+          try
+            {
+              if (match[1].matched)
+                result.insert(result.end(),
+                              std::stoul(match[1]),
+                              std::stod(match[2]));
+              else
+                result.push_back(std::stod(match[3]));
+            }
+          catch (const std::exception &)
+            {
+              throw InputError(file,
+                               entry,
+                               "expected a number or 'n*number', got '" +
+                                 item + "'");
+            }
+        }
+      if (result.empty())
+        throw InputError(file, entry, "expected at least one increment");
+      return result;
+    }
+
+    std::vector<bool>
+    parse_components(const std::string &text,
+                     const std::string &file,
+                     const std::string &entry)
+    {
+      std::vector<bool> result(2, false);
+      for (const auto &c : Utilities::split_string_list(text, ','))
+        {
+          if (c == "x")
+            result[0] = true;
+          else if (c == "y")
+            result[1] = true;
+          else
+            throw InputError(file,
+                             entry,
+                             "expected a comma-separated list of x, y, got '" +
+                               c + "'");
+        }
+      return result;
+    }
+
+    /// Checks that an expression list parses, for messages at read time.
+    void
+    check_expressions(const std::string                   &expressions,
+                      const unsigned int                   n_components,
+                      const std::map<std::string, double> &constants,
+                      const std::string                   &file,
+                      const std::string                   &entry)
+    {
+      const auto parts = Utilities::split_string_list(expressions, ';');
+      if (parts.size() != 1 && parts.size() != n_components)
+        throw InputError(file,
+                         entry,
+                         "expected " + std::to_string(n_components) +
+                           " expressions separated by ';' (or one for all), "
+                           "got " +
+                           std::to_string(parts.size()));
+      try
+        {
+          FunctionParser<2> f(1);
+          auto              all_constants = constants;
+          all_constants["pi"]             = numbers::PI;
+          for (const auto &p : parts)
+            {
+              f.initialize("x,y", p, all_constants);
+              Point<2> origin;
+              (void)f.value(origin);
+            }
+        }
+      catch (const ExceptionBase &e)
+        {
+          throw InputError(file,
+                           entry,
+                           "expected function expressions of x, y and the "
+                           "geometry parameters: " +
+                             message_of(e));
+        }
+    }
+
+    double
+    positive(const ParameterHandler &prm,
+             const std::string      &name,
+             const std::string      &file,
+             const std::string      &section)
+    {
+      const double value = prm.get_double(name);
+      if (!(value > 0))
+        throw InputError(file,
+                         section + "/" + name,
+                         "expected a value > 0, got " + prm.get(name));
+      return value;
+    }
+
+    void
+    apply_override(ParameterHandler &prm, const std::string &override_text)
+    {
+      const auto equal = override_text.find('=');
+      if (equal == std::string::npos)
+        throw InputError("command line",
+                         override_text,
+                         "expected -s \"Section/Entry=value\"");
+      const std::string path  = Utilities::trim(override_text.substr(0, equal));
+      const std::string value = Utilities::trim(override_text.substr(equal + 1));
+      const auto        parts = Utilities::split_string_list(path, '/');
+      if (parts.size() < 2)
+        throw InputError("command line",
+                         path,
+                         "expected a path 'Section/Entry'");
+      for (unsigned int i = 0; i + 1 < parts.size(); ++i)
+        prm.enter_subsection(parts[i]);
+      try
+        {
+          prm.set(parts.back(), value);
+        }
+      catch (const ExceptionBase &e)
+        {
+          for (unsigned int i = 0; i + 1 < parts.size(); ++i)
+            prm.leave_subsection();
+          throw InputError("command line", path, message_of(e));
+        }
+      for (unsigned int i = 0; i + 1 < parts.size(); ++i)
+        prm.leave_subsection();
+    }
+
+    Parameters
+    extract(ParameterHandler                        &prm,
+            const std::string                       &file,
+            const std::set<types::global_dof_index> &material_ids,
+            const std::set<types::global_dof_index> &boundary_ids)
+    {
+      Parameters p;
+      p.parameter_file = file;
+
+      prm.enter_subsection("Mesh");
+      const std::string mesh = prm.get("File");
+      if (mesh.empty())
+        throw InputError(file, "Mesh/File", "expected a .geo or .msh file");
+      p.mesh_file = (mesh.front() == '/') ? mesh : directory_of(file) + "/" +
+                                                     mesh;
+      p.geometry_parameters =
+        parse_geometry_parameters(prm.get("Geometry parameters"), file);
+      prm.leave_subsection();
+
+      prm.enter_subsection("Discretisation");
+      p.serendipity                = (prm.get("Element") == "Q8");
+      p.gauss_points_per_direction = prm.get_integer("Gauss points per direction");
+      prm.leave_subsection();
+
+      if (material_ids.empty())
+        throw InputError(file,
+                         "Material <id>",
+                         "expected at least one 'subsection Material <id>' "
+                         "for the physical surfaces of the mesh");
+      for (const auto id : material_ids)
+        {
+          const std::string section = "Material " + std::to_string(id);
+          prm.enter_subsection(section);
+          MaterialParameters m;
+          m.name           = prm.get("Name");
+          m.youngs_modulus = positive(prm, "Young's modulus", file, section);
+          m.poissons_ratio = prm.get_double("Poisson's ratio");
+          if (!(m.poissons_ratio > -1 && m.poissons_ratio < 0.5))
+            throw InputError(file,
+                             section + "/Poisson's ratio",
+                             "expected a value in (-1, 0.5), got " +
+                               prm.get("Poisson's ratio"));
+          prm.leave_subsection();
+          p.materials[id] = m;
+        }
+
+      for (const auto id : boundary_ids)
+        {
+          const std::string section = "Boundary " + std::to_string(id);
+          prm.enter_subsection(section);
+          BoundaryParameters b;
+          b.name                   = prm.get("Name");
+          b.constrained_components = parse_components(
+            prm.get("Constrained components"),
+            file,
+            section + "/Constrained components");
+          b.displacement = prm.get("Displacement");
+          b.traction     = prm.get("Traction");
+          b.pressure     = prm.get("Pressure");
+          check_expressions(b.displacement,
+                            2,
+                            p.geometry_parameters,
+                            file,
+                            section + "/Displacement");
+          check_expressions(
+            b.traction, 2, p.geometry_parameters, file, section + "/Traction");
+          check_expressions(
+            b.pressure, 1, p.geometry_parameters, file, section + "/Pressure");
+          if (Utilities::split_string_list(b.pressure, ';').size() != 1)
+            throw InputError(file,
+                             section + "/Pressure",
+                             "expected a single expression");
+          prm.leave_subsection();
+          p.boundaries[id] = b;
+        }
+
+      prm.enter_subsection("Loading");
+      p.load_increments = parse_increments(prm.get("Load increments"), file);
+      prm.leave_subsection();
+
+      prm.enter_subsection("Monitors");
+      p.load_measure = (prm.get("Load measure") == "reaction") ?
+                         LoadMeasure::reaction :
+                         LoadMeasure::load_factor;
+      p.load_scale               = prm.get_double("Load scale");
+      p.load_boundary_id         = prm.get_integer("Load boundary id");
+      p.load_component           = (prm.get("Load component") == "x") ? 0 : 1;
+      p.displacement_boundary_id = prm.get_integer("Displacement boundary id");
+      p.displacement_component =
+        (prm.get("Displacement component") == "x") ? 0 : 1;
+      p.displacement_scale = prm.get_double("Displacement scale");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Reference");
+      const std::string reference = prm.get("Analytic load");
+      p.reference_load            = std::numeric_limits<double>::quiet_NaN();
+      if (!Utilities::trim(reference).empty())
+        {
+          check_expressions(reference,
+                            1,
+                            p.geometry_parameters,
+                            file,
+                            "Reference/Analytic load");
+          FunctionParser<2> f(1);
+          auto              constants = p.geometry_parameters;
+          constants["pi"]             = numbers::PI;
+          f.initialize("x,y", reference, constants);
+          p.reference_load = f.value(Point<2>());
+          if (!std::isfinite(p.reference_load) || p.reference_load == 0)
+            throw InputError(file,
+                             "Reference/Analytic load",
+                             "expected a finite, non-zero value, got " +
+                               std::to_string(p.reference_load));
+        }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Output");
+      p.output_directory = prm.get("Directory");
+      if (p.output_directory.empty())
+        throw InputError(file, "Output/Directory", "expected a directory");
+      p.write_vtu        = prm.get_bool("Write VTU");
+      p.vtu_subdivisions = prm.get_integer("VTU subdivisions");
+      p.print_timing     = prm.get_bool("Print timing");
+      prm.leave_subsection();
+
+      return p;
+    }
+  } // namespace
+
+
+
+  Parameters
+  ParameterReader::read(const std::string              &file,
+                        const std::vector<std::string> &overrides) const
+  {
+    std::ifstream in(file);
+    if (!in)
+      throw InputError(file, "", "cannot open the parameter file");
+    std::stringstream text;
+    text << in.rdbuf();
+    return read_from_string(text.str(), file, overrides);
+  }
+
+
+
+  Parameters
+  ParameterReader::read_from_string(
+    const std::string              &text,
+    const std::string              &file,
+    const std::vector<std::string> &overrides) const
+  {
+    const auto material_ids = ids_of_sections(text, overrides, "Material");
+    const auto boundary_ids = ids_of_sections(text, overrides, "Boundary");
+
+    ParameterHandler prm;
+    declare_fixed_sections(prm);
+    for (const auto id : material_ids)
+      declare_material(prm, id);
+    for (const auto id : boundary_ids)
+      declare_boundary(prm, id);
+
+    try
+      {
+        prm.parse_input_from_string(text, file);
+      }
+    catch (const ExceptionBase &e)
+      {
+        throw InputError(file, "", message_of(e));
+      }
+    for (const auto &o : overrides)
+      apply_override(prm, o);
+
+    return extract(prm, file, material_ids, boundary_ids);
+  }
+
+
+
+  void
+  ParameterReader::print_parameters(std::ostream &out) const
+  {
+    ParameterHandler prm;
+    declare_fixed_sections(prm);
+    declare_material(prm, 1);
+    declare_boundary(prm, 1);
+    out << "# thinlayer parameters. 'Material <id>' and 'Boundary <id>' may be\n"
+        << "# repeated for every physical surface and curve id of the mesh.\n";
+    prm.print_parameters(out, ParameterHandler::PRM);
+  }
+} // namespace thinlayer

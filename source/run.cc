@@ -1,0 +1,162 @@
+#include <deal.II/base/timer.h>
+
+#include <thinlayer/analysis.h>
+#include <thinlayer/run.h>
+#include <thinlayer/scene.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+namespace thinlayer
+{
+  namespace
+  {
+    std::string
+    format(const char *pattern, const double value)
+    {
+      char buffer[64];
+      std::snprintf(buffer, sizeof(buffer), pattern, value);
+      return buffer;
+    }
+
+    std::string
+    read_file(const std::string &file)
+    {
+      std::ifstream      in(file);
+      std::ostringstream text;
+      text << in.rdbuf();
+      return text.str();
+    }
+  } // namespace
+
+
+
+  JsonObject
+  run_scene(const Parameters &p, std::ostream &out)
+  {
+    Timer       wall_clock;
+    TimerOutput timer(out, TimerOutput::never, TimerOutput::wall_times);
+
+    timer.enter_subsection("mesh");
+    const Scene scene(p);
+    timer.leave_subsection();
+
+    timer.enter_subsection("setup and factorisation");
+    Analysis<2> analysis(p, scene.triangulation());
+    analysis.setup();
+    timer.leave_subsection();
+
+    // Everything the user gave us has been checked: only now write.
+    OutputWriter writer(p.output_directory);
+    writer.write_file("mesh.msh", scene.mesh_text());
+    writer.write_file("parameters.prm", read_file(p.parameter_file));
+
+    out << "thinlayer: " << p.parameter_file << '\n'
+        << "  mesh " << p.mesh_file << ": "
+        << scene.triangulation().n_active_cells() << " cells, "
+        << (p.serendipity ? "Q8" : "Q9") << ", "
+        << p.gauss_points_per_direction << 'x'
+        << p.gauss_points_per_direction << " Gauss points, "
+        << analysis.n_dofs() << " DoFs (" << analysis.n_equations()
+        << " equations)\n";
+
+    double       load_factor = 0, last_converged_load = 0;
+    double       first_failed_load = std::numeric_limits<double>::quiet_NaN();
+    unsigned int total_iterations  = 0;
+    bool         converged         = true;
+    DisplacementMeasure displacement{0, 0, 0};
+
+    for (unsigned int step = 1; step <= p.load_increments.size(); ++step)
+      {
+        load_factor += p.load_increments[step - 1];
+
+        timer.enter_subsection("load steps");
+        const StepResult result = analysis.solve(load_factor);
+        const double     load   = analysis.load();
+        displacement            = analysis.displacement();
+        timer.leave_subsection();
+        total_iterations += result.iterations;
+
+        timer.enter_subsection("output");
+        writer.write_history_row(
+          {step, load_factor, load, displacement, result});
+        if (p.write_vtu)
+          writer.write_fields(step, load_factor, analysis, p);
+        timer.leave_subsection();
+
+        out << "  step " << format("%4.0f", step) << "  load factor "
+            << format("%10.4g", load_factor) << "  load "
+            << format("%12.5e", load) << "  displacement "
+            << format("%12.5e", displacement.mean) << "  iterations "
+            << format("%4.0f", result.iterations) << "  "
+            << (result.converged ? "converged" : "FAILED") << '\n';
+
+        if (!result.converged)
+          {
+            converged         = false;
+            first_failed_load = load;
+            break;
+          }
+        last_converged_load = load;
+      }
+
+    const double relative_error =
+      (last_converged_load - p.reference_load) / p.reference_load;
+    out << "  displacement on boundary " << p.displacement_boundary_id
+        << ": mean " << format("%.5e", displacement.mean) << ", min "
+        << format("%.5e", displacement.min) << ", max "
+        << format("%.5e", displacement.max) << ", spread (max-min)/|mean| "
+        << format("%.4f",
+                  (displacement.max - displacement.min) /
+                    std::abs(displacement.mean))
+        << '\n';
+    out << "  last converged load " << format("%.5g", last_converged_load);
+    if (std::isfinite(p.reference_load))
+      out << ", analytic " << format("%.5g", p.reference_load)
+          << ", relative error " << format("%+.4f", relative_error);
+    out << '\n';
+
+    JsonObject geometry;
+    for (const auto &[name, value] : p.geometry_parameters)
+      geometry.add(name, value);
+    JsonObject timing;
+    for (const auto &[section, seconds] :
+         timer.get_summary_data(TimerOutput::total_wall_time))
+      timing.add(section, seconds);
+
+    JsonObject summary;
+    summary.add("parameter_file", p.parameter_file)
+      .add("mesh_file", p.mesh_file)
+      .add("geometry_parameters", geometry)
+      .add("element", std::string(p.serendipity ? "Q8" : "Q9"))
+      .add_integer("gauss_points_per_direction", p.gauss_points_per_direction)
+      .add_integer("cells", scene.triangulation().n_active_cells())
+      .add_integer("dofs", analysis.n_dofs())
+      .add_integer("equations", analysis.n_equations())
+      .add("converged", converged)
+      .add("last_converged_load", last_converged_load)
+      .add("first_failed_load", first_failed_load)
+      .add("reference_load", p.reference_load)
+      .add("relative_error", relative_error)
+      .add("final_displacement", displacement.mean)
+      .add("final_displacement_min", displacement.min)
+      .add("final_displacement_max", displacement.max)
+      .add_integer("load_steps", p.load_increments.size())
+      .add_integer("total_iterations", total_iterations)
+      .add("wall_seconds", wall_clock.wall_time())
+      .add("timing", timing);
+    writer.write_summary(summary);
+
+    if (p.print_timing)
+      {
+        out << "  wall time " << format("%.3f", wall_clock.wall_time())
+            << " s\n";
+        timer.print_summary();
+      }
+    out << "  results in " << writer.get_directory() << '\n';
+    return summary;
+  }
+} // namespace thinlayer

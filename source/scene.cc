@@ -1,0 +1,226 @@
+#include <deal.II/grid/grid_in.h>
+
+#include <thinlayer/input_error.h>
+#include <thinlayer/scene.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+
+namespace thinlayer
+{
+  namespace
+  {
+    std::string
+    shell_quote(const std::string &s)
+    {
+      std::string quoted = "'";
+      for (const char c : s)
+        quoted += (c == '\'') ? std::string("'\\''") : std::string(1, c);
+      return quoted + "'";
+    }
+
+    std::string
+    read_file(const std::string &file)
+    {
+      std::ifstream in(file);
+      std::ostringstream text;
+      text << in.rdbuf();
+      return text.str();
+    }
+
+    /**
+     * Mesh a .geo with the gmsh program, setting its DefineConstant[]
+     * parameters with -setnumber. Returns the mesh in gmsh's 2.2 format.
+     */
+    std::string
+    mesh_geometry(const Parameters &p)
+    {
+      const std::string geo = read_file(p.mesh_file);
+      for (const auto &[name, value] : p.geometry_parameters)
+        if (!std::regex_search(geo, std::regex("\\b" + name + "\\b")))
+          throw InputError(p.parameter_file,
+                           "Mesh/Geometry parameters",
+                           "'" + name + "' is not a parameter of " +
+                             p.mesh_file);
+
+      char directory_template[] = "/tmp/thinlayer-gmsh-XXXXXX";
+      if (mkdtemp(directory_template) == nullptr)
+        throw std::runtime_error("cannot create a temporary directory");
+      const std::string directory = directory_template;
+      const std::string msh_file  = directory + "/mesh.msh";
+      const std::string log_file  = directory + "/gmsh.log";
+
+      std::ostringstream command;
+      command << shell_quote(THINLAYER_GMSH_EXECUTABLE)
+              << " -2 -format msh22 -nt 1";
+      command.precision(17);
+      for (const auto &[name, value] : p.geometry_parameters)
+        command << " -setnumber " << name << ' ' << value;
+      command << " -o " << shell_quote(msh_file) << ' '
+              << shell_quote(p.mesh_file) << " > " << shell_quote(log_file)
+              << " 2>&1";
+      const int status = std::system(command.str().c_str());
+
+      std::string errors;
+      {
+        std::istringstream log(read_file(log_file));
+        std::string        line;
+        while (std::getline(log, line))
+          if (line.rfind("Error", 0) == 0)
+            errors += "\n  " + line;
+      }
+      const std::string msh = read_file(msh_file);
+      std::filesystem::remove_all(directory);
+
+      if (status != 0 || !errors.empty())
+        throw InputError(p.mesh_file,
+                         "",
+                         "gmsh could not mesh this geometry:" +
+                           (errors.empty() ? std::string(" exit status ") +
+                                               std::to_string(status) :
+                                             errors));
+      return msh;
+    }
+
+    std::string
+    describe(const std::set<unsigned int> &ids)
+    {
+      std::string text;
+      for (const auto id : ids)
+        text += (text.empty() ? "" : ", ") + std::to_string(id);
+      return text.empty() ? "none" : text;
+    }
+  } // namespace
+
+
+
+  Scene::Scene(const Parameters &p)
+  {
+    if (!std::filesystem::is_regular_file(p.mesh_file) ||
+        !std::ifstream(p.mesh_file))
+      throw InputError(p.parameter_file,
+                       "Mesh/File",
+                       "cannot read the mesh file '" + p.mesh_file + "'");
+
+    const std::string extension =
+      std::filesystem::path(p.mesh_file).extension().string();
+    if (extension == ".geo")
+      msh = mesh_geometry(p);
+    else if (extension == ".msh")
+      msh = read_file(p.mesh_file);
+    else
+      throw InputError(p.parameter_file,
+                       "Mesh/File",
+                       "expected a .geo or .msh file, got '" + p.mesh_file +
+                         "'");
+
+    try
+      {
+        GridIn<2> grid_in;
+        grid_in.attach_triangulation(tria);
+        std::istringstream in(msh);
+        grid_in.read_msh(in);
+      }
+    catch (const ExceptionBase &e)
+      {
+        std::ostringstream message;
+        e.print_info(message);
+        throw InputError(p.mesh_file,
+                         "",
+                         "cannot read the mesh: " + message.str());
+      }
+    if (tria.n_active_cells() == 0)
+      throw InputError(p.mesh_file,
+                       "",
+                       "the mesh has no 2D cells: are all surfaces in a "
+                       "physical group?");
+    if (!tria.all_reference_cells_are_hyper_cube())
+      throw InputError(p.mesh_file,
+                       "",
+                       "expected quadrilateral cells only (use Recombine "
+                       "Surface or Mesh.RecombineAll in the .geo)");
+    check_ids(p, tria);
+  }
+
+
+
+  const Triangulation<2> &
+  Scene::triangulation() const
+  {
+    return tria;
+  }
+
+
+
+  const std::string &
+  Scene::mesh_text() const
+  {
+    return msh;
+  }
+
+
+
+  template <int dim>
+  void
+  check_ids(const Parameters &p, const Triangulation<dim> &tria)
+  {
+    std::set<unsigned int> mesh_materials, mesh_boundaries;
+    for (const auto &cell : tria.active_cell_iterators())
+      {
+        mesh_materials.insert(cell->material_id());
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary())
+            mesh_boundaries.insert(face->boundary_id());
+      }
+
+    for (const auto id : mesh_materials)
+      if (p.materials.count(id) == 0)
+        throw InputError(p.parameter_file,
+                         "Material " + std::to_string(id),
+                         "the mesh has cells with material id " +
+                           std::to_string(id) +
+                           " (a physical surface) but this file has no "
+                           "'subsection Material " +
+                           std::to_string(id) + "'");
+    for (const auto &[id, material] : p.materials)
+      if (mesh_materials.count(id) == 0)
+        throw InputError(p.parameter_file,
+                         "Material " + std::to_string(id),
+                         "the mesh has no physical surface " +
+                           std::to_string(id) +
+                           " (its material ids: " + describe(mesh_materials) +
+                           ")");
+    for (const auto &[id, boundary] : p.boundaries)
+      if (mesh_boundaries.count(id) == 0)
+        throw InputError(p.parameter_file,
+                         "Boundary " + std::to_string(id),
+                         "the mesh has no physical curve " +
+                           std::to_string(id) +
+                           " on its boundary (its boundary ids: " +
+                           describe(mesh_boundaries) + ")");
+    if (mesh_boundaries.count(p.displacement_boundary_id) == 0)
+      throw InputError(p.parameter_file,
+                       "Monitors/Displacement boundary id",
+                       "the mesh has no boundary id " +
+                         std::to_string(p.displacement_boundary_id) +
+                         " (its boundary ids: " + describe(mesh_boundaries) +
+                         ")");
+    if (p.load_measure == LoadMeasure::reaction &&
+        mesh_boundaries.count(p.load_boundary_id) == 0)
+      throw InputError(p.parameter_file,
+                       "Monitors/Load boundary id",
+                       "the mesh has no boundary id " +
+                         std::to_string(p.load_boundary_id) +
+                         " (its boundary ids: " + describe(mesh_boundaries) +
+                         ")");
+  }
+
+
+
+  template void
+  check_ids(const Parameters &, const Triangulation<2> &);
+} // namespace thinlayer
