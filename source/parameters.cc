@@ -5,7 +5,9 @@
 #include <thinlayer/parameters.h>
 
 #include <cmath>
+#include <cctype>
 #include <fstream>
+#include <iostream>
 #include <limits>
 #include <regex>
 #include <set>
@@ -24,11 +26,38 @@ namespace thinlayer
     {
       std::ostringstream out;
       exception.print_info(out);
-      std::string text = out.str();
-      while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+      // deal.II lays its messages out over indented lines; one line reads
+      // better after our "error in 'file', entry '...':" prefix.
+      std::string text;
+      for (const char c : out.str())
+        if (!std::isspace(static_cast<unsigned char>(c)))
+          text += c;
+        else if (!text.empty() && text.back() != ' ')
+          text += ' ';
+      while (!text.empty() && text.back() == ' ')
         text.pop_back();
       return text;
     }
+
+    /**
+     * Silences std::cerr while alive: muparser's diagnostics go there, and
+     * we report the error ourselves, once, naming the entry.
+     */
+    class SilencedErrorStream
+    {
+    public:
+      SilencedErrorStream()
+        : saved(std::cerr.rdbuf(sink.rdbuf()))
+      {}
+      ~SilencedErrorStream()
+      {
+        std::cerr.rdbuf(saved);
+      }
+
+    private:
+      std::ostringstream sink;
+      std::streambuf    *saved;
+    };
 
     std::string
     directory_of(const std::string &file)
@@ -359,6 +388,7 @@ namespace thinlayer
                            " expressions separated by ';' (or one for all), "
                            "got " +
                            std::to_string(parts.size()));
+      const SilencedErrorStream silence;
       try
         {
           FunctionParser<2> f(1);
@@ -589,7 +619,8 @@ namespace thinlayer
 
     try
       {
-        prm.parse_input_from_string(text, file);
+        std::istringstream in(text);
+        prm.parse_input(in, file);
       }
     catch (const ExceptionBase &e)
       {

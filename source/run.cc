@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -20,6 +21,12 @@ namespace thinlayer
       char buffer[64];
       std::snprintf(buffer, sizeof(buffer), pattern, value);
       return buffer;
+    }
+
+    std::string
+    file_name(const std::string &path)
+    {
+      return std::filesystem::path(path).filename().string();
     }
 
     std::string
@@ -54,8 +61,10 @@ namespace thinlayer
     writer.write_file("mesh.msh", scene.mesh_text());
     writer.write_file("parameters.prm", read_file(p.parameter_file));
 
-    out << "thinlayer: " << p.parameter_file << '\n'
-        << "  mesh " << p.mesh_file << ": "
+    // File names only: the full paths are in summary.json, and the screen
+    // output stays the same wherever the project is checked out.
+    out << "thinlayer: " << file_name(p.parameter_file) << '\n'
+        << "  mesh " << file_name(p.mesh_file) << ": "
         << scene.triangulation().n_active_cells() << " cells, "
         << (p.serendipity ? "Q8" : "Q9") << ", "
         << p.gauss_points_per_direction << 'x'
@@ -109,14 +118,14 @@ namespace thinlayer
         << ": mean " << format("%.5e", displacement.mean) << ", min "
         << format("%.5e", displacement.min) << ", max "
         << format("%.5e", displacement.max) << ", spread (max-min)/|mean| "
-        << format("%.4f",
+        << format("%.3e",
                   (displacement.max - displacement.min) /
                     std::abs(displacement.mean))
         << '\n';
     out << "  last converged load " << format("%.5g", last_converged_load);
     if (std::isfinite(p.reference_load))
       out << ", analytic " << format("%.5g", p.reference_load)
-          << ", relative error " << format("%+.4f", relative_error);
+          << ", relative error " << format("%+.3e", relative_error);
     out << '\n';
 
     JsonObject geometry;

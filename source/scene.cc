@@ -87,11 +87,12 @@ namespace thinlayer
     }
 
     std::string
-    describe(const std::set<unsigned int> &ids)
+    describe(const std::set<unsigned int> &ids, const bool boundary = false)
     {
       std::string text;
       for (const auto id : ids)
-        text += (text.empty() ? "" : ", ") + std::to_string(id);
+        text += (text.empty() ? "" : ", ") + std::to_string(id) +
+                ((boundary && id == 0) ? " (untagged)" : "");
       return text.empty() ? "none" : text;
     }
   } // namespace
@@ -201,13 +202,13 @@ namespace thinlayer
                          "the mesh has no physical curve " +
                            std::to_string(id) +
                            " on its boundary (its boundary ids: " +
-                           describe(mesh_boundaries) + ")");
+                           describe(mesh_boundaries, true) + ")");
     if (mesh_boundaries.count(p.displacement_boundary_id) == 0)
       throw InputError(p.parameter_file,
                        "Monitors/Displacement boundary id",
                        "the mesh has no boundary id " +
                          std::to_string(p.displacement_boundary_id) +
-                         " (its boundary ids: " + describe(mesh_boundaries) +
+                         " (its boundary ids: " + describe(mesh_boundaries, true) +
                          ")");
     if (p.load_measure == LoadMeasure::reaction &&
         mesh_boundaries.count(p.load_boundary_id) == 0)
@@ -215,7 +216,7 @@ namespace thinlayer
                        "Monitors/Load boundary id",
                        "the mesh has no boundary id " +
                          std::to_string(p.load_boundary_id) +
-                         " (its boundary ids: " + describe(mesh_boundaries) +
+                         " (its boundary ids: " + describe(mesh_boundaries, true) +
                          ")");
   }
 
