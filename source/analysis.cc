@@ -1,8 +1,6 @@
 #include <deal.II/dofs/dof_tools.h>
-
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
-
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <thinlayer/analysis.h>
@@ -30,7 +28,6 @@ namespace thinlayer
   {
     static_assert(dim == 2, "Only plane strain is implemented so far.");
   }
-
 
 
   template <int dim>
@@ -107,10 +104,11 @@ namespace thinlayer
       DoFTools::extract_boundary_dofs(dof_handler,
                                       component_mask(parameters.load_component),
                                       {parameters.load_boundary_id});
-    monitored_dofs = DoFTools::extract_boundary_dofs(
-      dof_handler,
-      component_mask(parameters.displacement_component),
-      {parameters.displacement_boundary_id});
+    monitored_dofs =
+      DoFTools::extract_boundary_dofs(dof_handler,
+                                      component_mask(
+                                        parameters.displacement_component),
+                                      {parameters.displacement_boundary_id});
 
     solution.reinit(dof_handler.n_dofs());
     internal_forces.reinit(dof_handler.n_dofs());
@@ -119,12 +117,11 @@ namespace thinlayer
   }
 
 
-
   template <int dim>
   void
   Analysis<dim>::assemble_stiffness()
   {
-    FEValues<dim> fe_values(mapping,
+    FEValues<dim>                        fe_values(mapping,
                             fe,
                             quadrature,
                             update_gradients | update_JxW_values);
@@ -161,7 +158,6 @@ namespace thinlayer
   }
 
 
-
   template <int dim>
   StepResult
   Analysis<dim>::solve(const double new_load_factor)
@@ -182,12 +178,11 @@ namespace thinlayer
   }
 
 
-
   template <int dim>
   void
   Analysis<dim>::update_stresses_and_internal_forces()
   {
-    FEValues<dim> fe_values(mapping,
+    FEValues<dim>                        fe_values(mapping,
                             fe,
                             quadrature,
                             update_gradients | update_JxW_values);
@@ -212,7 +207,8 @@ namespace thinlayer
             sigma = C * plane_strain(strains[q]);
             for (const unsigned int i : fe_values.dof_indices())
               cell_forces[i] +=
-                (plane_strain(fe_values[displacement].symmetric_gradient(i, q)) *
+                (plane_strain(
+                   fe_values[displacement].symmetric_gradient(i, q)) *
                  sigma) *
                 fe_values.JxW(q);
           }
@@ -221,7 +217,6 @@ namespace thinlayer
           internal_forces[dofs[i]] += cell_forces[i];
       }
   }
-
 
 
   template <int dim>
@@ -243,19 +238,18 @@ namespace thinlayer
   }
 
 
-
   template <int dim>
   DisplacementMeasure
   Analysis<dim>::displacement() const
   {
-    const QGauss<dim - 1>     face_quadrature(3);
-    FEFaceValues<dim>         fe_face(mapping,
+    const QGauss<dim - 1>       face_quadrature(3);
+    FEFaceValues<dim>           fe_face(mapping,
                               fe,
                               face_quadrature,
                               update_values | update_JxW_values);
     std::vector<Vector<double>> values(face_quadrature.size(),
                                        Vector<double>(dim));
-    const unsigned int          c = parameters.displacement_component;
+    const unsigned int          c        = parameters.displacement_component;
     double                      integral = 0, length = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (const auto f : cell->face_indices())
@@ -279,10 +273,10 @@ namespace thinlayer
         max = std::max(max, solution[dof]);
       }
     const double s = parameters.displacement_scale;
-    return {s * integral / length, std::min(s * min, s * max),
+    return {s * integral / length,
+            std::min(s * min, s * max),
             std::max(s * min, s * max)};
   }
-
 
 
   template <int dim>
@@ -293,14 +287,12 @@ namespace thinlayer
   }
 
 
-
   template <int dim>
   const Mapping<dim> &
   Analysis<dim>::get_mapping() const
   {
     return mapping;
   }
-
 
 
   template <int dim>
@@ -311,14 +303,12 @@ namespace thinlayer
   }
 
 
-
   template <int dim>
   const SymmetricTensor<2, 3> &
   Analysis<dim>::stress(const unsigned int cell, const unsigned int q) const
   {
     return stresses[cell * quadrature.size() + q];
   }
-
 
 
   template <int dim>
@@ -329,7 +319,6 @@ namespace thinlayer
   }
 
 
-
   template <int dim>
   types::global_dof_index
   Analysis<dim>::n_dofs() const
@@ -338,14 +327,12 @@ namespace thinlayer
   }
 
 
-
   template <int dim>
   types::global_dof_index
   Analysis<dim>::n_equations() const
   {
     return dof_handler.n_dofs() - constraints.n_constraints();
   }
-
 
 
   template class Analysis<2>;

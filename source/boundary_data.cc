@@ -1,8 +1,6 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
-
 #include <deal.II/fe/fe_values.h>
-
 #include <deal.II/numerics/vector_tools.h>
 
 #include <thinlayer/boundary_data.h>
@@ -42,13 +40,12 @@ namespace thinlayer
   } // namespace
 
 
-
   template <int dim>
   BoundaryData<dim>::BoundaryData(const Parameters &p)
   {
     for (const auto &[id, b] : p.boundaries)
       {
-        Condition &c = conditions[id];
+        Condition        &c = conditions[id];
         std::vector<bool> mask(b.constrained_components);
         mask.resize(dim, false);
         c.constrained = ComponentMask(mask);
@@ -61,7 +58,6 @@ namespace thinlayer
   }
 
 
-
   template <int dim>
   void
   BoundaryData<dim>::make_zero_constraints(
@@ -72,11 +68,11 @@ namespace thinlayer
       if (c.constrained.n_selected_components(dim) > 0)
         VectorTools::interpolate_boundary_values(dof_handler,
                                                  id,
-                                                 Functions::ZeroFunction<dim>(dim),
+                                                 Functions::ZeroFunction<dim>(
+                                                   dim),
                                                  constraints,
                                                  c.constrained);
   }
-
 
 
   template <int dim>
@@ -93,17 +89,16 @@ namespace thinlayer
   }
 
 
-
   template <int dim>
   void
   BoundaryData<dim>::assemble_load_vector(const Mapping<dim>    &mapping,
                                           const DoFHandler<dim> &dof_handler,
                                           Vector<double>        &load) const
   {
-    load = 0;
-    const FiniteElement<dim> &fe = dof_handler.get_fe();
-    const QGauss<dim - 1>     quadrature(fe.degree + 2);
-    FEFaceValues<dim>         fe_face(mapping,
+    load                                    = 0;
+    const FiniteElement<dim>            &fe = dof_handler.get_fe();
+    const QGauss<dim - 1>                quadrature(fe.degree + 2);
+    FEFaceValues<dim>                    fe_face(mapping,
                               fe,
                               quadrature,
                               update_values | update_normal_vectors |
@@ -129,11 +124,11 @@ namespace thinlayer
               const double pressure = c->second.pressure->value(x);
               for (const unsigned int i : fe_face.dof_indices())
                 {
-                  const unsigned int k =
-                    fe.system_to_component_index(i).first;
-                  const double t =
+                  const unsigned int k = fe.system_to_component_index(i).first;
+                  const double       t =
                     traction[k] - pressure * fe_face.normal_vector(q)[k];
-                  cell_load[i] += t * fe_face.shape_value(i, q) * fe_face.JxW(q);
+                  cell_load[i] +=
+                    t * fe_face.shape_value(i, q) * fe_face.JxW(q);
                 }
             }
           cell->get_dof_indices(dofs);
@@ -141,7 +136,6 @@ namespace thinlayer
             load[dofs[i]] += cell_load[i];
         }
   }
-
 
 
   template <int dim>
@@ -153,7 +147,6 @@ namespace thinlayer
         return true;
     return false;
   }
-
 
 
   template class BoundaryData<2>;

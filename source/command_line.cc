@@ -17,13 +17,13 @@ namespace thinlayer
           << "       thinlayer --help\n\n"
           << "Runs the scene described by FILE.prm (a gmsh .geo or .msh plus\n"
           << "materials, boundary conditions and a load programme). -s\n"
-          << "overrides any entry, e.g. -s \"Mesh/Geometry parameters=alpha=30\"\n"
+          << "overrides any entry, e.g. -s \"Mesh/Geometry "
+             "parameters=alpha=30\"\n"
           << "or -s \"Material 2/Young's modulus=1e4\". Results go to the\n"
           << "directory named by Output/Directory: history.csv, summary.json,\n"
           << "fields.pvd with one VTU per load step.\n";
     }
   } // namespace
-
 
 
   int

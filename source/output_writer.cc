@@ -40,14 +40,12 @@ namespace thinlayer
   } // namespace
 
 
-
   JsonObject &
   JsonObject::add(const std::string &key, const double value)
   {
     members.emplace_back(key, number(value));
     return *this;
   }
-
 
 
   JsonObject &
@@ -58,14 +56,12 @@ namespace thinlayer
   }
 
 
-
   JsonObject &
   JsonObject::add(const std::string &key, const bool value)
   {
     members.emplace_back(key, value ? "true" : "false");
     return *this;
   }
-
 
 
   JsonObject &
@@ -76,14 +72,12 @@ namespace thinlayer
   }
 
 
-
   JsonObject &
   JsonObject::add(const std::string &key, const JsonObject &value)
   {
     members.emplace_back(key, value.str(2));
     return *this;
   }
-
 
 
   std::string
@@ -105,7 +99,6 @@ namespace thinlayer
   }
 
 
-
   OutputWriter::OutputWriter(const std::string &directory)
     : directory(directory)
   {
@@ -115,7 +108,6 @@ namespace thinlayer
                "displacement_max,iterations,converged,max_yield_ratio,"
                "plastic_points\n";
   }
-
 
 
   void
@@ -135,7 +127,6 @@ namespace thinlayer
   }
 
 
-
   template <int dim>
   void
   OutputWriter::write_fields(const unsigned int   step,
@@ -151,9 +142,10 @@ namespace thinlayer
     // points (later with plastic history), not at nodes.
     const char *names[] = {"stress_xx", "stress_yy", "stress_zz", "stress_xy"};
     const unsigned int components[][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}};
-    std::vector<Vector<double>> stress(4, Vector<double>(tria.n_active_cells()));
-    Vector<double> equivalent(tria.n_active_cells());
-    Vector<double> material(tria.n_active_cells());
+    std::vector<Vector<double>> stress(4,
+                                       Vector<double>(tria.n_active_cells()));
+    Vector<double>              equivalent(tria.n_active_cells());
+    Vector<double>              material(tria.n_active_cells());
     for (const auto &cell : tria.active_cell_iterators())
       {
         const unsigned int c = cell->active_cell_index();
@@ -196,13 +188,11 @@ namespace thinlayer
   }
 
 
-
   void
   OutputWriter::write_summary(const JsonObject &summary)
   {
     write_file("summary.json", summary.str() + "\n");
   }
-
 
 
   void
@@ -219,13 +209,11 @@ namespace thinlayer
   }
 
 
-
   const std::string &
   OutputWriter::get_directory() const
   {
     return directory;
   }
-
 
 
   template void

@@ -4,8 +4,8 @@
 #include <thinlayer/input_error.h>
 #include <thinlayer/parameters.h>
 
-#include <cmath>
 #include <cctype>
+#include <cmath>
 #include <fstream>
 #include <iostream>
 #include <limits>
@@ -63,8 +63,8 @@ namespace thinlayer
     directory_of(const std::string &file)
     {
       const auto slash = file.find_last_of('/');
-      return slash == std::string::npos ? std::string(".") :
-                                          file.substr(0, slash);
+      return slash == std::string::npos ? std::string(".")
+                                        : file.substr(0, slash);
     }
 
     /**
@@ -77,11 +77,11 @@ namespace thinlayer
                     const std::string              &kind)
     {
       std::set<types::global_dof_index> ids;
-      const std::regex in_file("^\\s*subsection\\s+" + kind +
+      const std::regex                  in_file("^\\s*subsection\\s+" + kind +
                                "\\s+([0-9]+)\\s*(#.*)?$");
-      std::istringstream lines(text);
-      std::string        line;
-      std::smatch        match;
+      std::istringstream                lines(text);
+      std::string                       line;
+      std::smatch                       match;
       while (std::getline(lines, line))
         if (std::regex_match(line, match, in_file))
           ids.insert(std::stoul(match[1]));
@@ -267,21 +267,19 @@ namespace thinlayer
 
     /// Parse 'name=value, name=value' (the geometry parameters).
     std::map<std::string, double>
-    parse_geometry_parameters(const std::string &text,
-                              const std::string &file)
+    parse_geometry_parameters(const std::string &text, const std::string &file)
     {
       const std::string             entry = "Mesh/Geometry parameters";
       std::map<std::string, double> result;
-      const std::regex identifier("[A-Za-z_][A-Za-z0-9_]*");
+      const std::regex              identifier("[A-Za-z_][A-Za-z0-9_]*");
       for (const auto &pair : Utilities::split_string_list(text, ','))
         {
           const auto equal = pair.find('=');
           if (equal == std::string::npos)
             throw InputError(file,
                              entry,
-                             "expected 'name=value' pairs, got '" + pair +
-                               "'");
-          const std::string name = Utilities::trim(pair.substr(0, equal));
+                             "expected 'name=value' pairs, got '" + pair + "'");
+          const std::string name  = Utilities::trim(pair.substr(0, equal));
           const std::string value = Utilities::trim(pair.substr(equal + 1));
           if (!std::regex_match(name, identifier))
             throw InputError(file,
@@ -297,8 +295,8 @@ namespace thinlayer
                                "another parameter name");
           try
             {
-              std::size_t used   = 0;
-              result[name]       = std::stod(value, &used);
+              std::size_t used = 0;
+              result[name]     = std::stod(value, &used);
               if (used != value.size())
                 throw std::invalid_argument(value);
             }
@@ -342,8 +340,8 @@ namespace thinlayer
             {
               throw InputError(file,
                                entry,
-                               "expected a number or 'n*number', got '" +
-                                 item + "'");
+                               "expected a number or 'n*number', got '" + item +
+                                 "'");
             }
         }
       if (result.empty())
@@ -433,9 +431,10 @@ namespace thinlayer
         throw InputError("command line",
                          override_text,
                          "expected -s \"Section/Entry=value\"");
-      const std::string path  = Utilities::trim(override_text.substr(0, equal));
-      const std::string value = Utilities::trim(override_text.substr(equal + 1));
-      const auto        parts = Utilities::split_string_list(path, '/');
+      const std::string path = Utilities::trim(override_text.substr(0, equal));
+      const std::string value =
+        Utilities::trim(override_text.substr(equal + 1));
+      const auto parts = Utilities::split_string_list(path, '/');
       if (parts.size() < 2)
         throw InputError("command line",
                          path,
@@ -469,15 +468,16 @@ namespace thinlayer
       const std::string mesh = prm.get("File");
       if (mesh.empty())
         throw InputError(file, "Mesh/File", "expected a .geo or .msh file");
-      p.mesh_file = (mesh.front() == '/') ? mesh : directory_of(file) + "/" +
-                                                     mesh;
+      p.mesh_file =
+        (mesh.front() == '/') ? mesh : directory_of(file) + "/" + mesh;
       p.geometry_parameters =
         parse_geometry_parameters(prm.get("Geometry parameters"), file);
       prm.leave_subsection();
 
       prm.enter_subsection("Discretisation");
-      p.serendipity                = (prm.get("Element") == "Q8");
-      p.gauss_points_per_direction = prm.get_integer("Gauss points per direction");
+      p.serendipity = (prm.get("Element") == "Q8");
+      p.gauss_points_per_direction =
+        prm.get_integer("Gauss points per direction");
       prm.leave_subsection();
 
       if (material_ids.empty())
@@ -507,11 +507,11 @@ namespace thinlayer
           const std::string section = "Boundary " + std::to_string(id);
           prm.enter_subsection(section);
           BoundaryParameters b;
-          b.name                   = prm.get("Name");
-          b.constrained_components = parse_components(
-            prm.get("Constrained components"),
-            file,
-            section + "/Constrained components");
+          b.name = prm.get("Name");
+          b.constrained_components =
+            parse_components(prm.get("Constrained components"),
+                             file,
+                             section + "/Constrained components");
           b.displacement = prm.get("Displacement");
           b.traction     = prm.get("Traction");
           b.pressure     = prm.get("Pressure");
@@ -537,9 +537,9 @@ namespace thinlayer
       prm.leave_subsection();
 
       prm.enter_subsection("Monitors");
-      p.load_measure = (prm.get("Load measure") == "reaction") ?
-                         LoadMeasure::reaction :
-                         LoadMeasure::load_factor;
+      p.load_measure             = (prm.get("Load measure") == "reaction")
+                                     ? LoadMeasure::reaction
+                                     : LoadMeasure::load_factor;
       p.load_scale               = prm.get_double("Load scale");
       p.load_boundary_id         = prm.get_integer("Load boundary id");
       p.load_component           = (prm.get("Load component") == "x") ? 0 : 1;
@@ -586,7 +586,6 @@ namespace thinlayer
   } // namespace
 
 
-
   Parameters
   ParameterReader::read(const std::string              &file,
                         const std::vector<std::string> &overrides) const
@@ -598,7 +597,6 @@ namespace thinlayer
     text << in.rdbuf();
     return read_from_string(text.str(), file, overrides);
   }
-
 
 
   Parameters
@@ -633,7 +631,6 @@ namespace thinlayer
   }
 
 
-
   void
   ParameterReader::print_parameters(std::ostream &out) const
   {
@@ -641,8 +638,9 @@ namespace thinlayer
     declare_fixed_sections(prm);
     declare_material(prm, 1);
     declare_boundary(prm, 1);
-    out << "# thinlayer parameters. 'Material <id>' and 'Boundary <id>' may be\n"
-        << "# repeated for every physical surface and curve id of the mesh.\n";
+    out
+      << "# thinlayer parameters. 'Material <id>' and 'Boundary <id>' may be\n"
+      << "# repeated for every physical surface and curve id of the mesh.\n";
     prm.print_parameters(out, ParameterHandler::PRM);
   }
 } // namespace thinlayer

@@ -40,7 +40,6 @@ namespace thinlayer
   } // namespace
 
 
-
   JsonObject
   run_scene(const Parameters &p, std::ostream &out)
   {
@@ -66,9 +65,8 @@ namespace thinlayer
     out << "thinlayer: " << file_name(p.parameter_file) << '\n'
         << "  mesh " << file_name(p.mesh_file) << ": "
         << scene.triangulation().n_active_cells() << " cells, "
-        << (p.serendipity ? "Q8" : "Q9") << ", "
-        << p.gauss_points_per_direction << 'x'
-        << p.gauss_points_per_direction << " Gauss points, "
+        << (p.serendipity ? "Q8" : "Q9") << ", " << p.gauss_points_per_direction
+        << 'x' << p.gauss_points_per_direction << " Gauss points, "
         << analysis.n_dofs() << " DoFs (" << analysis.n_equations()
         << " equations)\n";
 

@@ -26,7 +26,7 @@ namespace thinlayer
     std::string
     read_file(const std::string &file)
     {
-      std::ifstream in(file);
+      std::ifstream      in(file);
       std::ostringstream text;
       text << in.rdbuf();
       return text.str();
@@ -81,8 +81,8 @@ namespace thinlayer
                          "",
                          "gmsh could not mesh this geometry:" +
                            (errors.empty() ? std::string(" exit status ") +
-                                               std::to_string(status) :
-                                             errors));
+                                               std::to_string(status)
+                                           : errors));
       return msh;
     }
 
@@ -96,7 +96,6 @@ namespace thinlayer
       return text.empty() ? "none" : text;
     }
   } // namespace
-
 
 
   Scene::Scene(const Parameters &p)
@@ -148,7 +147,6 @@ namespace thinlayer
   }
 
 
-
   const Triangulation<2> &
   Scene::triangulation() const
   {
@@ -156,13 +154,11 @@ namespace thinlayer
   }
 
 
-
   const std::string &
   Scene::mesh_text() const
   {
     return msh;
   }
-
 
 
   template <int dim>
@@ -192,9 +188,8 @@ namespace thinlayer
         throw InputError(p.parameter_file,
                          "Material " + std::to_string(id),
                          "the mesh has no physical surface " +
-                           std::to_string(id) +
-                           " (its material ids: " + describe(mesh_materials) +
-                           ")");
+                           std::to_string(id) + " (its material ids: " +
+                           describe(mesh_materials) + ")");
     for (const auto &[id, boundary] : p.boundaries)
       if (mesh_boundaries.count(id) == 0)
         throw InputError(p.parameter_file,
@@ -208,18 +203,17 @@ namespace thinlayer
                        "Monitors/Displacement boundary id",
                        "the mesh has no boundary id " +
                          std::to_string(p.displacement_boundary_id) +
-                         " (its boundary ids: " + describe(mesh_boundaries, true) +
-                         ")");
+                         " (its boundary ids: " +
+                         describe(mesh_boundaries, true) + ")");
     if (p.load_measure == LoadMeasure::reaction &&
         mesh_boundaries.count(p.load_boundary_id) == 0)
       throw InputError(p.parameter_file,
                        "Monitors/Load boundary id",
                        "the mesh has no boundary id " +
                          std::to_string(p.load_boundary_id) +
-                         " (its boundary ids: " + describe(mesh_boundaries, true) +
-                         ")");
+                         " (its boundary ids: " +
+                         describe(mesh_boundaries, true) + ")");
   }
-
 
 
   template void

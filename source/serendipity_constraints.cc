@@ -1,5 +1,4 @@
 #include <deal.II/base/geometry_info.h>
-
 #include <deal.II/fe/fe.h>
 
 #include <thinlayer/serendipity_constraints.h>
@@ -17,8 +16,9 @@ namespace thinlayer
     template <int dim>
     struct Q2Layout
     {
-      static constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
-      static constexpr unsigned int n_lines    = GeometryInfo<dim>::lines_per_cell;
+      static constexpr unsigned int n_vertices =
+        GeometryInfo<dim>::vertices_per_cell;
+      static constexpr unsigned int n_lines = GeometryInfo<dim>::lines_per_cell;
 
       static unsigned int
       vertex(const unsigned int v)
@@ -63,13 +63,12 @@ namespace thinlayer
   } // namespace
 
 
-
   template <int dim>
   void
   make_serendipity_constraints(const DoFHandler<dim>     &dof_handler,
                                AffineConstraints<double> &constraints)
   {
-    using Layout = Q2Layout<dim>;
+    using Layout                 = Q2Layout<dim>;
     const FiniteElement<dim> &fe = dof_handler.get_fe();
     check_element(fe);
 
@@ -88,8 +87,9 @@ namespace thinlayer
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
 
     const auto constrain =
-      [&](const types::global_dof_index                                  centre,
-          const std::vector<std::pair<types::global_dof_index, double>> &terms) {
+      [&](
+        const types::global_dof_index                                  centre,
+        const std::vector<std::pair<types::global_dof_index, double>> &terms) {
         if (constraints.is_constrained(centre))
           return;
         constraints.add_line(centre);
@@ -106,16 +106,19 @@ namespace thinlayer
             const auto &local = local_of[c];
             // Each quad (the cell in 2D, each face in 3D): centre from its
             // four corners and four mid-sides.
-            const unsigned int n_quads = (dim == 2) ? 1 : GeometryInfo<dim>::faces_per_cell;
+            const unsigned int n_quads =
+              (dim == 2) ? 1 : GeometryInfo<dim>::faces_per_cell;
             for (unsigned int q = 0; q < n_quads; ++q)
               {
                 std::vector<std::pair<types::global_dof_index, double>> terms;
                 for (unsigned int k = 0; k < 4; ++k)
                   {
                     const unsigned int v =
-                      (dim == 2) ? k : GeometryInfo<3>::face_to_cell_vertices(q, k);
+                      (dim == 2) ? k
+                                 : GeometryInfo<3>::face_to_cell_vertices(q, k);
                     const unsigned int l =
-                      (dim == 2) ? k : GeometryInfo<3>::face_to_cell_lines(q, k);
+                      (dim == 2) ? k
+                                 : GeometryInfo<3>::face_to_cell_lines(q, k);
                     terms.emplace_back(dofs[local[Layout::vertex(v)]], -0.25);
                     terms.emplace_back(dofs[local[Layout::line(l)]], 0.5);
                   }
@@ -137,9 +140,10 @@ namespace thinlayer
   }
 
 
-
   template void
-  make_serendipity_constraints(const DoFHandler<2> &, AffineConstraints<double> &);
+  make_serendipity_constraints(const DoFHandler<2> &,
+                               AffineConstraints<double> &);
   template void
-  make_serendipity_constraints(const DoFHandler<3> &, AffineConstraints<double> &);
+  make_serendipity_constraints(const DoFHandler<3> &,
+                               AffineConstraints<double> &);
 } // namespace thinlayer

@@ -52,16 +52,15 @@ Physical Curve("bottom", 1) = {1}; Physical Curve("top", 2) = {6};
   }
 
   void
-  check(const std::string              &what,
-        const std::vector<std::string> &arguments)
+  check(const std::string &what, const std::vector<std::string> &arguments)
   {
     std::filesystem::remove_all("results");
     std::ostringstream out, err;
     const int status = thinlayer::run_command_line(arguments, out, err);
     std::cout << "* " << what << "\n  exit status " << status
               << ", results written: "
-              << (std::filesystem::exists("results") ? "yes" : "no")
-              << "\n  " << err.str() << '\n';
+              << (std::filesystem::exists("results") ? "yes" : "no") << "\n  "
+              << err.str() << '\n';
   }
 } // namespace
 
@@ -85,8 +84,8 @@ main()
     const int status = thinlayer::run_command_line({"good.prm"}, out, err);
     std::cout << "* the valid scene: exit status " << status
               << ", summary written: "
-              << (std::filesystem::exists("results/summary.json") ? "yes" :
-                                                                    "no")
+              << (std::filesystem::exists("results/summary.json") ? "yes"
+                                                                  : "no")
               << "\n\n";
   }
 
@@ -95,7 +94,8 @@ main()
   write("unknown-entry.prm", scene("good.geo", "  set Youngs modulus = 10\n"));
   check("an unknown entry", {"unknown-entry.prm"});
 
-  write("unknown-section.prm", scene("good.geo", "", "subsection Solver\nend\n"));
+  write("unknown-section.prm",
+        scene("good.geo", "", "subsection Solver\nend\n"));
   check("an unknown subsection", {"unknown-section.prm"});
 
   write("malformed.prm",

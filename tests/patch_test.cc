@@ -20,10 +20,10 @@ main()
 {
   // u = 1e-3 (x + 0.5 y, 0.3 x - 0.2 y): eps_xx = 1e-3, eps_yy = -2e-4,
   // eps_xy = 4e-4.
-  const double E = 1000, nu = 0.25;
-  const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
-  const double mu     = E / (2 * (1 + nu));
-  const double exx = 1e-3, eyy = -2e-4, exy = 4e-4;
+  const double          E = 1000, nu = 0.25;
+  const double          lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
+  const double          mu     = E / (2 * (1 + nu));
+  const double          exx = 1e-3, eyy = -2e-4, exy = 4e-4;
   SymmetricTensor<2, 3> exact;
   exact[0][0] = lambda * (exx + eyy) + 2 * mu * exx;
   exact[1][1] = lambda * (exx + eyy) + 2 * mu * eyy;
@@ -43,8 +43,12 @@ main()
           "  set File = " SOURCE_DIR "/../meshes/patch-test.geo\n"
           "end\n"
           "subsection Discretisation\n"
-          "  set Element = " + element + "\n"
-          "  set Gauss points per direction = " + gauss + "\n"
+          "  set Element = " +
+          element +
+          "\n"
+          "  set Gauss points per direction = " +
+          gauss +
+          "\n"
           "end\n"
           "subsection Material 1\n"
           "  set Young's modulus = 1000\n"
@@ -62,8 +66,8 @@ main()
           "end\n";
         const thinlayer::Parameters p =
           thinlayer::ParameterReader().read_from_string(prm, "patch.prm");
-        const thinlayer::Scene        scene(p);
-        thinlayer::Analysis<2>        analysis(p, scene.triangulation());
+        const thinlayer::Scene scene(p);
+        thinlayer::Analysis<2> analysis(p, scene.triangulation());
         analysis.setup();
         analysis.solve(1.0);
 
@@ -82,8 +86,8 @@ main()
                     gauss.c_str(),
                     scene.triangulation().n_active_cells(),
                     relative < 1e-12 ? "yes" : "NO",
-                    std::abs(analysis.load()) / exact.norm() < 1e-12 ? "yes" :
-                                                                       "NO");
+                    std::abs(analysis.load()) / exact.norm() < 1e-12 ? "yes"
+                                                                     : "NO");
         if (relative >= 1e-12)
           std::printf("  max relative stress error %.3e\n", relative);
       }

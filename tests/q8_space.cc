@@ -6,19 +6,14 @@
 // picks up an eta^3 term in reference coordinates and is exact for neither.
 #include <deal.II/base/function_lib.h>
 #include <deal.II/base/quadrature_lib.h>
-
 #include <deal.II/dofs/dof_handler.h>
-
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/mapping_q.h>
-
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria.h>
-
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/vector.h>
-
 #include <deal.II/numerics/vector_tools.h>
 
 #include <thinlayer/serendipity_constraints.h>
@@ -98,15 +93,14 @@ report(const std::string        &mesh,
       const double e = interpolation_error(tria, serendipity, f);
       // Exact means round-off; otherwise the error is printed (it is
       // deterministic) so that a change of space shows.
-      std::printf("%-14s %-4s %-11s %s\n",
-                  mesh.c_str(),
-                  serendipity ? (dim == 2 ? "Q8" : "Q20") :
-                                (dim == 2 ? "Q9" : "Q27"),
-                  name.c_str(),
-                  e < 1e-12 ? "exact" :
-                              ("relative L2 error " +
-                               std::to_string(e).substr(0, 7))
-                                .c_str());
+      std::printf(
+        "%-14s %-4s %-11s %s\n",
+        mesh.c_str(),
+        serendipity ? (dim == 2 ? "Q8" : "Q20") : (dim == 2 ? "Q9" : "Q27"),
+        name.c_str(),
+        e < 1e-12
+          ? "exact"
+          : ("relative L2 error " + std::to_string(e).substr(0, 7)).c_str());
     }
 }
 
@@ -124,7 +118,8 @@ main()
     parallelogram.copy_triangulation(rectangle);
     GridTools::transform(
       [](const Point<2> &p) {
-        return Point<2>(0.2 + 1.1 * p[0] + 0.6 * p[1], -0.3 + 0.3 * p[0] + 0.9 * p[1]);
+        return Point<2>(0.2 + 1.1 * p[0] + 0.6 * p[1],
+                        -0.3 + 0.3 * p[0] + 0.9 * p[1]);
       },
       parallelogram);
 
@@ -132,10 +127,8 @@ main()
       return 1 + p[0] - 2 * p[1] + 3 * p[0] * p[0] - p[0] * p[1] +
              0.5 * p[1] * p[1];
     });
-    const Monomial<2> x2y(
-      [](const Point<2> &p) { return p[0] * p[0] * p[1]; });
-    const Monomial<2> xy2(
-      [](const Point<2> &p) { return p[0] * p[1] * p[1]; });
+    const Monomial<2> x2y([](const Point<2> &p) { return p[0] * p[0] * p[1]; });
+    const Monomial<2> xy2([](const Point<2> &p) { return p[0] * p[1] * p[1]; });
     const Monomial<2> x2y2(
       [](const Point<2> &p) { return p[0] * p[0] * p[1] * p[1]; });
 

@@ -12,11 +12,9 @@
 #include <deal.II/base/convergence_table.h>
 #include <deal.II/base/function.h>
 #include <deal.II/base/quadrature_lib.h>
-
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/manifold_lib.h>
 #include <deal.II/grid/tria.h>
-
 #include <deal.II/numerics/vector_tools.h>
 
 #include <thinlayer/analysis.h>
@@ -45,13 +43,14 @@ public:
     u[1] = ur * x[1] / r;
   }
   void
-  vector_gradient(const Point<2> &x, std::vector<Tensor<1, 2>> &g) const override
+  vector_gradient(const Point<2>            &x,
+                  std::vector<Tensor<1, 2>> &g) const override
   {
     // u = f(r) x / r with f/r = A (1 - 2nu) + A b^2 / r^2, A the prefactor.
     const double A  = (1 + nu) / E * a * a * pressure / (b * b - a * a);
     const double r2 = x.norm_square();
     const double g0 = A * ((1 - 2 * nu) + b * b / r2); // u_i = g0 x_i
-    const double dg = -2 * A * b * b / (r2 * r2);       // dg0/dx_j = dg x_j
+    const double dg = -2 * A * b * b / (r2 * r2);      // dg0/dx_j = dg x_j
     for (unsigned int i = 0; i < 2; ++i)
       for (unsigned int j = 0; j < 2; ++j)
         g[i][j] = g0 * (i == j) + dg * x[i] * x[j];
@@ -93,8 +92,12 @@ convergence(const std::string &element, const std::string &gauss)
       const std::string prm =
         "subsection Mesh\n  set File = made-in-code\nend\n"
         "subsection Discretisation\n"
-        "  set Element = " + element + "\n"
-        "  set Gauss points per direction = " + gauss + "\n"
+        "  set Element = " +
+        element +
+        "\n"
+        "  set Gauss points per direction = " +
+        gauss +
+        "\n"
         "end\n"
         "subsection Material 0\n"
         "  set Young's modulus = 1\n  set Poisson's ratio = 0.3\n"
@@ -126,10 +129,8 @@ convergence(const std::string &element, const std::string &gauss)
                                             errors,
                                             quadrature,
                                             norm);
-          table.add_value(name,
-                          VectorTools::compute_global_error(tria,
-                                                            errors,
-                                                            norm));
+          table.add_value(
+            name, VectorTools::compute_global_error(tria, errors, norm));
         }
     }
   for (const auto &column : {"L2", "H1"})

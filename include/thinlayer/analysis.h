@@ -4,12 +4,9 @@
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/symmetric_tensor.h>
-
 #include <deal.II/dofs/dof_handler.h>
-
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q.h>
-
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
@@ -136,7 +133,7 @@ namespace thinlayer
 
     std::map<types::material_id, SymmetricTensor<4, 3>> elasticity;
 
-    SparsityPattern      sparsity;
+    SparsityPattern sparsity;
     /// Unconstrained stiffness, to lift prescribed displacements.
     SparseMatrix<double> stiffness;
     /// Condensed stiffness, factorised once.

@@ -2,11 +2,8 @@
 #define thinlayer_boundary_data_h
 
 #include <deal.II/base/function_parser.h>
-
 #include <deal.II/dofs/dof_handler.h>
-
 #include <deal.II/fe/mapping.h>
-
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/vector.h>
 
@@ -44,7 +41,8 @@ namespace thinlayer
      * The prescribed displacement at unit load factor, DoF by DoF.
      */
     std::map<types::global_dof_index, double>
-    prescribed_values(const Mapping<dim> &mapping, const DoFHandler<dim> &dof_handler) const;
+    prescribed_values(const Mapping<dim>    &mapping,
+                      const DoFHandler<dim> &dof_handler) const;
 
     /**
      * The external load vector of tractions and pressures at unit load
@@ -62,11 +60,11 @@ namespace thinlayer
   private:
     struct Condition
     {
-      ComponentMask                     constrained;
+      ComponentMask                        constrained;
       std::unique_ptr<FunctionParser<dim>> displacement;
       std::unique_ptr<FunctionParser<dim>> traction;
       std::unique_ptr<FunctionParser<dim>> pressure;
-      bool                              loaded;
+      bool                                 loaded;
     };
     std::map<types::boundary_id, Condition> conditions;
   };

@@ -70,10 +70,10 @@ namespace thinlayer
 
     template <int dim>
     void
-    write_fields(const unsigned int    step,
-                 const double          load_factor,
-                 const Analysis<dim>  &analysis,
-                 const Parameters     &parameters);
+    write_fields(const unsigned int   step,
+                 const double         load_factor,
+                 const Analysis<dim> &analysis,
+                 const Parameters    &parameters);
 
     void
     write_summary(const JsonObject &summary);
@@ -86,8 +86,8 @@ namespace thinlayer
     get_directory() const;
 
   private:
-    std::string                                directory;
-    std::ofstream                              history;
+    std::string                                 directory;
+    std::ofstream                               history;
     std::vector<std::pair<double, std::string>> pvd_records;
   };
 } // namespace thinlayer

@@ -2,7 +2,6 @@
 #define thinlayer_serendipity_constraints_h
 
 #include <deal.II/dofs/dof_handler.h>
-
 #include <deal.II/lac/affine_constraints.h>
 
 namespace thinlayer
