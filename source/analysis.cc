@@ -4,7 +4,6 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <thinlayer/analysis.h>
-#include <thinlayer/elasticity.h>
 #include <thinlayer/input_error.h>
 #include <thinlayer/kinematics.h>
 #include <thinlayer/serendipity_constraints.h>
@@ -14,6 +13,20 @@
 
 namespace thinlayer
 {
+  namespace
+  {
+    /// max_i |v_i| of a vector after condensation onto the free DoFs.
+    double
+    condensed_max(const Vector<double>            &v,
+                  const AffineConstraints<double> &constraints)
+    {
+      Vector<double> condensed(v);
+      constraints.condense(condensed);
+      return condensed.linfty_norm();
+    }
+  } // namespace
+
+
   template <int dim>
   Analysis<dim>::Analysis(const Parameters         &parameters,
                           const Triangulation<dim> &tria)
@@ -24,6 +37,7 @@ namespace thinlayer
     , quadrature(parameters.gauss_points_per_direction)
     , dof_handler(tria)
     , boundary_data(parameters)
+    , time_step(std::numeric_limits<double>::infinity())
     , load_factor(0)
   {
     static_assert(dim == 2, "Only plane strain is implemented so far.");
@@ -63,7 +77,12 @@ namespace thinlayer
     condensed_stiffness.reinit(sparsity);
 
     for (const auto &[id, m] : parameters.materials)
-      elasticity[id] = isotropic_elasticity(m.youngs_modulus, m.poissons_ratio);
+      {
+        laws[id]  = create_material_law(m);
+        time_step = std::min(time_step, laws[id]->viscoplastic_time_step());
+      }
+
+    build_point_cache();
 
     // Prescribed displacements at unit load factor; the centre nodes of
     // cells touching them follow through the serendipity lines.
@@ -78,9 +97,9 @@ namespace thinlayer
 
     assemble_stiffness();
 
-    unit_lift.reinit(dof_handler.n_dofs());
-    stiffness.vmult(unit_lift, unit_prescribed_displacement);
-    unit_lift *= -1;
+    unit_rhs.reinit(dof_handler.n_dofs());
+    stiffness.vmult(unit_rhs, unit_prescribed_displacement);
+    unit_rhs.sadd(-1, 1, unit_load);
 
     try
       {
@@ -112,8 +131,50 @@ namespace thinlayer
 
     solution.reinit(dof_handler.n_dofs());
     internal_forces.reinit(dof_handler.n_dofs());
-    stresses.assign(tria.n_active_cells() * quadrature.size(),
-                    SymmetricTensor<2, 3>());
+  }
+
+
+  template <int dim>
+  void
+  Analysis<dim>::build_point_cache()
+  {
+    const unsigned int n_cells = tria.n_active_cells();
+    const unsigned int n_q     = quadrature.size();
+    const unsigned int n       = fe.n_dofs_per_cell();
+
+    cell_law.resize(n_cells);
+    cell_dofs.resize(n_cells * n);
+    point_JxW.resize(n_cells * n_q);
+    shape_strains.resize(n_cells * n_q * n);
+
+    history_storage.initialize(tria.begin_active(), tria.end(), n_q);
+    history.resize(n_cells * n_q);
+
+    FEValues<dim>                        fe_values(mapping,
+                            fe,
+                            quadrature,
+                            update_gradients | update_JxW_values);
+    const FEValuesExtractors::Vector     displacement(0);
+    std::vector<types::global_dof_index> dofs(n);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        const unsigned int c = cell->active_cell_index();
+        fe_values.reinit(cell);
+        cell_law[c] = laws.at(cell->material_id()).get();
+        cell->get_dof_indices(dofs);
+        std::copy(dofs.begin(), dofs.end(), cell_dofs.begin() + c * n);
+
+        const auto points = history_storage.get_data(cell);
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            point_JxW[c * n_q + q] = fe_values.JxW(q);
+            for (const unsigned int i : fe_values.dof_indices())
+              shape_strains[(c * n_q + q) * n + i] =
+                plane_strain(fe_values[displacement].symmetric_gradient(i, q));
+            history[c * n_q + q] = points[q].get();
+            history[c * n_q + q]->stations.assign(1, PointState());
+          }
+      }
   }
 
 
@@ -121,35 +182,29 @@ namespace thinlayer
   void
   Analysis<dim>::assemble_stiffness()
   {
-    FEValues<dim>                        fe_values(mapping,
-                            fe,
-                            quadrature,
-                            update_gradients | update_JxW_values);
-    const FEValuesExtractors::Vector     displacement(0);
-    const unsigned int                   n = fe.n_dofs_per_cell();
+    const unsigned int                   n   = fe.n_dofs_per_cell();
+    const unsigned int                   n_q = quadrature.size();
     FullMatrix<double>                   cell_matrix(n, n);
     std::vector<types::global_dof_index> dofs(n);
-    std::vector<SymmetricTensor<2, 3>>   strain(n), stress(n);
+    std::vector<SymmetricTensor<2, 3>>   stress(n);
 
-    for (const auto &cell : dof_handler.active_cell_iterators())
+    for (unsigned int c = 0; c < tria.n_active_cells(); ++c)
       {
-        fe_values.reinit(cell);
         cell_matrix                    = 0;
-        const SymmetricTensor<4, 3> &C = elasticity.at(cell->material_id());
-        for (const unsigned int q : fe_values.quadrature_point_indices())
+        const SymmetricTensor<4, 3> &D = cell_law[c]->elasticity();
+        for (unsigned int q = 0; q < n_q; ++q)
           {
-            for (const unsigned int i : fe_values.dof_indices())
-              {
-                strain[i] = plane_strain(
-                  fe_values[displacement].symmetric_gradient(i, q));
-                stress[i] = C * strain[i];
-              }
-            const double JxW = fe_values.JxW(q);
-            for (const unsigned int i : fe_values.dof_indices())
-              for (const unsigned int j : fe_values.dof_indices())
-                cell_matrix(i, j) += (strain[i] * stress[j]) * JxW;
+            const SymmetricTensor<2, 3> *B = &shape_strains[(c * n_q + q) * n];
+            for (unsigned int i = 0; i < n; ++i)
+              stress[i] = D * B[i];
+            const double JxW = point_JxW[c * n_q + q];
+            for (unsigned int i = 0; i < n; ++i)
+              for (unsigned int j = 0; j < n; ++j)
+                cell_matrix(i, j) += (B[i] * stress[j]) * JxW;
           }
-        cell->get_dof_indices(dofs);
+        std::copy(cell_dofs.begin() + c * n,
+                  cell_dofs.begin() + (c + 1) * n,
+                  dofs.begin());
         stiffness.add(dofs, cell_matrix);
         constraints.distribute_local_to_global(cell_matrix,
                                                dofs,
@@ -159,63 +214,149 @@ namespace thinlayer
 
 
   template <int dim>
-  StepResult
-  Analysis<dim>::solve(const double new_load_factor)
+  void
+  Analysis<dim>::solve_increment(const double          dlambda,
+                                 const Vector<double> &body_loads,
+                                 Vector<double>       &increment) const
   {
-    load_factor = new_load_factor;
+    increment = body_loads;
+    increment.add(dlambda, unit_rhs);
+    constraints.condense(increment);
+    factorisation.solve(increment);
+    constraints.distribute(increment);
+    increment.add(dlambda, unit_prescribed_displacement);
+  }
 
-    Vector<double> rhs(unit_load);
-    rhs.sadd(load_factor, load_factor, unit_lift);
-    constraints.condense(rhs);
-    factorisation.solve(rhs);
-    constraints.distribute(rhs);
 
-    solution = rhs;
-    solution.add(load_factor, unit_prescribed_displacement);
+  template <int dim>
+  unsigned int
+  Analysis<dim>::update_stresses(const Vector<double> &increment,
+                                 Vector<double>       &body_load_change)
+  {
+    const unsigned int  n          = fe.n_dofs_per_cell();
+    const unsigned int  n_q        = quadrature.size();
+    unsigned int        n_yielding = 0;
+    std::vector<double> du(n);
 
-    update_stresses_and_internal_forces();
-    return {1, true, std::numeric_limits<double>::quiet_NaN(), 0};
+    for (unsigned int c = 0; c < tria.n_active_cells(); ++c)
+      {
+        const MaterialLaw             &law  = *cell_law[c];
+        const SymmetricTensor<4, 3>   &D    = law.elasticity();
+        const types::global_dof_index *dofs = &cell_dofs[c * n];
+        for (unsigned int i = 0; i < n; ++i)
+          du[i] = increment[dofs[i]];
+
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            const SymmetricTensor<2, 3> *B = &shape_strains[(c * n_q + q) * n];
+            PointState &state              = history[c * n_q + q]->stations[0];
+
+            SymmetricTensor<2, 3> strain;
+            for (unsigned int i = 0; i < n; ++i)
+              strain += du[i] * B[i];
+            state.stress =
+              state.converged_stress + D * (strain - state.step_plastic_strain);
+
+            state.yielding = false;
+            if (!law.can_yield())
+              continue;
+            const double F = law.yield_function(state.stress);
+            if (F <= 0)
+              continue;
+
+            state.yielding = true;
+            ++n_yielding;
+            const SymmetricTensor<2, 3> viscoplastic_strain =
+              (time_step * F) * law.flow_direction(state.stress);
+            state.step_plastic_strain += viscoplastic_strain;
+            const SymmetricTensor<2, 3> stress_change =
+              (D * viscoplastic_strain) * point_JxW[c * n_q + q];
+            for (unsigned int i = 0; i < n; ++i)
+              body_load_change[dofs[i]] += B[i] * stress_change;
+          }
+      }
+    return n_yielding;
   }
 
 
   template <int dim>
   void
-  Analysis<dim>::update_stresses_and_internal_forces()
+  Analysis<dim>::update_internal_forces()
   {
-    FEValues<dim>                        fe_values(mapping,
-                            fe,
-                            quadrature,
-                            update_gradients | update_JxW_values);
-    const FEValuesExtractors::Vector     displacement(0);
-    const unsigned int                   n = fe.n_dofs_per_cell();
-    std::vector<types::global_dof_index> dofs(n);
-    std::vector<SymmetricTensor<2, dim>> strains(quadrature.size());
-    Vector<double>                       cell_forces(n);
+    const unsigned int n   = fe.n_dofs_per_cell();
+    const unsigned int n_q = quadrature.size();
+    internal_forces        = 0;
+    for (unsigned int c = 0; c < tria.n_active_cells(); ++c)
+      for (unsigned int q = 0; q < n_q; ++q)
+        {
+          const SymmetricTensor<2, 3> *B = &shape_strains[(c * n_q + q) * n];
+          const SymmetricTensor<2, 3>  sigma_JxW =
+            history[c * n_q + q]->stations[0].stress * point_JxW[c * n_q + q];
+          for (unsigned int i = 0; i < n; ++i)
+            internal_forces[cell_dofs[c * n + i]] += B[i] * sigma_JxW;
+        }
+  }
 
-    internal_forces = 0;
-    for (const auto &cell : dof_handler.active_cell_iterators())
+
+  template <int dim>
+  StepResult
+  Analysis<dim>::solve(const double new_load_factor)
+  {
+    const double dlambda = new_load_factor - load_factor;
+
+    for (PointHistory *point : history)
+      point->stations[0].step_plastic_strain = 0;
+
+    Vector<double> body_loads(dof_handler.n_dofs());
+    Vector<double> body_load_change(dof_handler.n_dofs());
+    Vector<double> increment(dof_handler.n_dofs());
+    Vector<double> previous_increment(dof_handler.n_dofs());
+
+    StepResult result{0, false, 0, 0};
+    while (result.iterations < parameters.max_iterations && !result.converged)
       {
-        fe_values.reinit(cell);
-        fe_values[displacement].get_function_symmetric_gradients(solution,
-                                                                 strains);
-        const SymmetricTensor<4, 3> &C = elasticity.at(cell->material_id());
-        cell_forces                    = 0;
-        for (const unsigned int q : fe_values.quadrature_point_indices())
+        ++result.iterations;
+        previous_increment.swap(increment);
+        solve_increment(dlambda, body_loads, increment);
+
+        body_load_change      = 0;
+        result.plastic_points = update_stresses(increment, body_load_change);
+        body_loads += body_load_change;
+
+        if (result.plastic_points == 0)
+          result.converged = true; // elastic: nothing will change
+        else if (parameters.convergence_criterion ==
+                 ConvergenceCriterion::body_loads)
+          result.converged =
+            condensed_max(body_load_change, constraints) <=
+            parameters.tolerance * condensed_max(body_loads, constraints);
+        else if (result.iterations > 1)
           {
-            SymmetricTensor<2, 3> &sigma =
-              stresses[cell->active_cell_index() * quadrature.size() + q];
-            sigma = C * plane_strain(strains[q]);
-            for (const unsigned int i : fe_values.dof_indices())
-              cell_forces[i] +=
-                (plane_strain(
-                   fe_values[displacement].symmetric_gradient(i, q)) *
-                 sigma) *
-                fe_values.JxW(q);
+            previous_increment -= increment;
+            result.converged = previous_increment.linfty_norm() <=
+                               parameters.tolerance * increment.linfty_norm();
           }
-        cell->get_dof_indices(dofs);
-        for (unsigned int i = 0; i < n; ++i)
-          internal_forces[dofs[i]] += cell_forces[i];
       }
+
+    // The step's state is kept even if it failed, so that the mechanism at
+    // failure can be seen.
+    solution += increment;
+    load_factor            = new_load_factor;
+    result.max_yield_ratio = std::numeric_limits<double>::quiet_NaN();
+    for (unsigned int p = 0; p < history.size(); ++p)
+      {
+        PointState &state      = history[p]->stations[0];
+        state.converged_stress = state.stress;
+        state.plastic_strain += state.step_plastic_strain;
+        const MaterialLaw &law = *cell_law[p / quadrature.size()];
+        if (law.can_yield())
+          result.max_yield_ratio =
+            std::isnan(result.max_yield_ratio)
+              ? law.yield_ratio(state.stress)
+              : std::max(result.max_yield_ratio, law.yield_ratio(state.stress));
+      }
+    update_internal_forces();
+    return result;
   }
 
 
@@ -304,10 +445,27 @@ namespace thinlayer
 
 
   template <int dim>
+  const PointState &
+  Analysis<dim>::point_state(const unsigned int cell,
+                             const unsigned int q) const
+  {
+    return history[cell * quadrature.size() + q]->stations[0];
+  }
+
+
+  template <int dim>
   const SymmetricTensor<2, 3> &
   Analysis<dim>::stress(const unsigned int cell, const unsigned int q) const
   {
-    return stresses[cell * quadrature.size() + q];
+    return point_state(cell, q).stress;
+  }
+
+
+  template <int dim>
+  const MaterialLaw &
+  Analysis<dim>::material_law(const unsigned int cell) const
+  {
+    return *cell_law[cell];
   }
 
 
@@ -332,6 +490,14 @@ namespace thinlayer
   Analysis<dim>::n_equations() const
   {
     return dof_handler.n_dofs() - constraints.n_constraints();
+  }
+
+
+  template <int dim>
+  double
+  Analysis<dim>::viscoplastic_time_step() const
+  {
+    return time_step;
   }
 
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace thinlayer
@@ -139,22 +140,36 @@ namespace thinlayer
     const unsigned int n_q         = analysis.n_quadrature_points();
 
     // Cell averages of the point stresses: the stresses live at Gauss
-    // points (later with plastic history), not at nodes.
+    // points with their plastic history, not at nodes. The yield ratio is
+    // the cell's maximum, to show where drift into illegal stress space is.
     const char *names[] = {"stress_xx", "stress_yy", "stress_zz", "stress_xy"};
     const unsigned int components[][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}};
-    std::vector<Vector<double>> stress(4,
-                                       Vector<double>(tria.n_active_cells()));
-    Vector<double>              equivalent(tria.n_active_cells());
-    Vector<double>              material(tria.n_active_cells());
+    const unsigned int n_cells         = tria.n_active_cells();
+    std::vector<Vector<double>> stress(4, Vector<double>(n_cells));
+    Vector<double>              equivalent(n_cells), plastic_strain(n_cells),
+      yield_ratio(n_cells), material(n_cells);
     for (const auto &cell : tria.active_cell_iterators())
       {
-        const unsigned int c = cell->active_cell_index();
+        const unsigned int c   = cell->active_cell_index();
+        const MaterialLaw &law = analysis.material_law(c);
+        yield_ratio[c]         = law.can_yield()
+                                   ? std::numeric_limits<double>::lowest()
+                                   : std::numeric_limits<double>::quiet_NaN();
         for (unsigned int q = 0; q < n_q; ++q)
           {
-            const auto &sigma = analysis.stress(c, q);
+            const PointState &state = analysis.point_state(c, q);
             for (unsigned int k = 0; k < 4; ++k)
-              stress[k][c] += sigma[components[k][0]][components[k][1]] / n_q;
-            equivalent[c] += equivalent_stress(sigma) / n_q;
+              stress[k][c] +=
+                state.stress[components[k][0]][components[k][1]] / n_q;
+            equivalent[c] += equivalent_stress(state.stress) / n_q;
+            // Equivalent plastic strain sqrt(2/3 e:e).
+            plastic_strain[c] +=
+              std::sqrt(2. / 3. *
+                        (state.plastic_strain * state.plastic_strain)) /
+              n_q;
+            if (law.can_yield())
+              yield_ratio[c] =
+                std::max(yield_ratio[c], law.yield_ratio(state.stress));
           }
         material[c] = cell->material_id();
       }
@@ -172,6 +187,8 @@ namespace thinlayer
     for (unsigned int k = 0; k < 4; ++k)
       data_out.add_data_vector(stress[k], names[k]);
     data_out.add_data_vector(equivalent, "equivalent_stress");
+    data_out.add_data_vector(plastic_strain, "plastic_strain");
+    data_out.add_data_vector(yield_ratio, "yield_ratio");
     data_out.add_data_vector(material, "material_id");
     data_out.build_patches(analysis.get_mapping(),
                            parameters.vtu_subdivisions,

@@ -110,6 +110,28 @@ namespace thinlayer
                         "0.3",
                         Patterns::Double(),
                         "Poisson's ratio nu, in (-1, 0.5).");
+      prm.declare_entry("Yield criterion",
+                        "elastic",
+                        Patterns::Selection(
+                          "elastic|tresca|von mises|mohr-coulomb"),
+                        "elastic: never yields; tresca: (sigma_1 - sigma_3)/2 "
+                        "= c; von mises: sqrt(3 J2) = sqrt(3) c (matched to "
+                        "Tresca in plane strain); mohr-coulomb: c, friction "
+                        "and dilation angles. Perfectly plastic.");
+      prm.declare_entry("Cohesion",
+                        "0",
+                        Patterns::Double(0),
+                        "Shear strength c: the adhesion C_w of an interface, "
+                        "the undrained strength c_u of a Tresca soil.");
+      prm.declare_entry("Friction angle",
+                        "0",
+                        Patterns::Double(0, 89),
+                        "Mohr-Coulomb friction angle phi in degrees.");
+      prm.declare_entry("Dilation angle",
+                        "0",
+                        Patterns::Double(0, 89),
+                        "Mohr-Coulomb dilation angle psi in degrees, at most "
+                        "phi (psi = phi is associated flow).");
       prm.leave_subsection();
     }
 
@@ -192,6 +214,32 @@ namespace thinlayer
         "'n*d' repeats the increment d n times (e.g. '0.5, 10*0.05'). All "
         "tractions, pressures and prescribed displacements scale with the "
         "load factor.");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Solver");
+      prm.declare_entry("Convergence criterion",
+                        "body loads",
+                        Patterns::Selection("body loads|displacements"),
+                        "body loads: the paper's test, no body load "
+                        "(divided by the largest) changes by more than the "
+                        "tolerance between two iterations; displacements: "
+                        "the same test on the step's displacement "
+                        "increment.");
+      prm.declare_entry("Tolerance",
+                        "1e-4",
+                        Patterns::Double(0),
+                        "TOL of the convergence criterion. Thin interfaces "
+                        "need tight values (the paper's main finding).");
+      prm.declare_entry("Maximum iterations",
+                        "250",
+                        Patterns::Integer(1),
+                        "Iterations per load step; a step that reaches the "
+                        "limit has failed (collapse).");
+      prm.declare_entry("Continue after failure",
+                        "false",
+                        Patterns::Bool(),
+                        "Go on with the next load step after a failed one "
+                        "(true), or stop the analysis there (false).");
       prm.leave_subsection();
 
       prm.enter_subsection("Monitors");
@@ -498,6 +546,35 @@ namespace thinlayer
                              section + "/Poisson's ratio",
                              "expected a value in (-1, 0.5), got " +
                                prm.get("Poisson's ratio"));
+          const std::string criterion = prm.get("Yield criterion");
+          m.yield_criterion =
+            (criterion == "tresca")         ? YieldCriterion::tresca
+            : (criterion == "von mises")    ? YieldCriterion::von_mises
+            : (criterion == "mohr-coulomb") ? YieldCriterion::mohr_coulomb
+                                            : YieldCriterion::elastic;
+          m.cohesion       = prm.get_double("Cohesion");
+          m.friction_angle = prm.get_double("Friction angle");
+          m.dilation_angle = prm.get_double("Dilation angle");
+          if ((m.yield_criterion == YieldCriterion::tresca ||
+               m.yield_criterion == YieldCriterion::von_mises) &&
+              !(m.cohesion > 0))
+            throw InputError(file,
+                             section + "/Cohesion",
+                             "expected a value > 0 for the " + criterion +
+                               " criterion, got " + prm.get("Cohesion"));
+          if (m.yield_criterion == YieldCriterion::mohr_coulomb &&
+              !(m.cohesion > 0 || m.friction_angle > 0))
+            throw InputError(file,
+                             section + "/Friction angle",
+                             "expected a friction angle > 0 where the "
+                             "cohesion is 0 (the material would have no "
+                             "strength)");
+          if (m.dilation_angle > m.friction_angle)
+            throw InputError(file,
+                             section + "/Dilation angle",
+                             "expected at most the friction angle (" +
+                               prm.get("Friction angle") + "), got " +
+                               prm.get("Dilation angle"));
           prm.leave_subsection();
           p.materials[id] = m;
         }
@@ -534,6 +611,16 @@ namespace thinlayer
 
       prm.enter_subsection("Loading");
       p.load_increments = parse_increments(prm.get("Load increments"), file);
+      prm.leave_subsection();
+
+      prm.enter_subsection("Solver");
+      p.convergence_criterion =
+        (prm.get("Convergence criterion") == "displacements")
+          ? ConvergenceCriterion::displacements
+          : ConvergenceCriterion::body_loads;
+      p.tolerance              = positive(prm, "Tolerance", file, "Solver");
+      p.max_iterations         = prm.get_integer("Maximum iterations");
+      p.continue_after_failure = prm.get_bool("Continue after failure");
       prm.leave_subsection();
 
       prm.enter_subsection("Monitors");

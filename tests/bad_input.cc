@@ -95,7 +95,7 @@ main()
   check("an unknown entry", {"unknown-entry.prm"});
 
   write("unknown-section.prm",
-        scene("good.geo", "", "subsection Solver\nend\n"));
+        scene("good.geo", "", "subsection Solvers\nend\n"));
   check("an unknown subsection", {"unknown-section.prm"});
 
   write("malformed.prm",

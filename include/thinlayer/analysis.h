@@ -3,6 +3,7 @@
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/quadrature_point_data.h>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
@@ -14,9 +15,12 @@
 #include <deal.II/lac/vector.h>
 
 #include <thinlayer/boundary_data.h>
+#include <thinlayer/material_law.h>
 #include <thinlayer/parameters.h>
+#include <thinlayer/point_history.h>
 
 #include <map>
+#include <memory>
 #include <vector>
 
 namespace thinlayer
@@ -30,8 +34,10 @@ namespace thinlayer
   {
     unsigned int iterations;
     bool         converged;
-    /// Max over points of F / strength: NaN where no material can yield.
-    double       max_yield_ratio;
+    /// Max over points of F / strength after the step: NaN where no
+    /// material can yield.
+    double max_yield_ratio;
+    /// Points (and stations) with F > 0 at the end of the step.
     unsigned int plastic_points;
   };
 
@@ -47,11 +53,21 @@ namespace thinlayer
   };
 
   /**
-   * A plane-strain analysis of one scene with constant stiffness: the
-   * stiffness matrix is assembled and factorised once, and every load
-   * factor is a forward/backward substitution. Loads and prescribed
-   * displacements are linear in the load factor, so their unit vectors are
-   * built once too.
+   * A plane-strain elasto-plastic analysis of one scene with the paper's
+   * constant-stiffness viscoplastic iterations: the elastic stiffness is
+   * assembled and factorised once; each iteration is one forward/backward
+   * substitution and one pass over the Gauss points, whose
+   * strain-displacement data are computed once and cached (the mesh does
+   * not move).
+   *
+   * A load step from load factor lambda_0 to lambda solves, with body
+   * loads b = 0 at its start,
+   *   K du = (lambda - lambda_0) f + b,
+   * then at every point d eps = B du - eps_vp, sigma = sigma_0 + D d eps; where
+   * F(sigma) > 0 it adds the viscoplastic strain dt F dQ/dsigma to eps_vp
+   * and int B^T D (that strain) to b, until b (or du) stops changing to
+   * within the tolerance. A step that reaches the iteration limit has
+   * failed: that is how collapse shows.
    *
    * Discretisation: FE_Q(2) per component, reduced to the 8-node
    * serendipity element by make_serendipity_constraints() (or kept as Q9),
@@ -66,14 +82,15 @@ namespace thinlayer
     Analysis(const Parameters &parameters, const Triangulation<dim> &tria);
 
     /**
-     * Distribute DoFs, build constraints and loads, assemble and factorise
-     * the stiffness. Throws InputError if the body is not restrained.
+     * Distribute DoFs, build constraints, loads and the point cache,
+     * assemble and factorise the stiffness. Throws InputError if the body
+     * is not restrained.
      */
     void
     setup();
 
     /**
-     * Solve for the total load factor @p load_factor.
+     * One load step, to the total load factor @p load_factor.
      */
     StepResult
     solve(const double load_factor);
@@ -95,9 +112,17 @@ namespace thinlayer
     const Vector<double> &
     get_solution() const;
 
+    /// The state at Gauss point @p q of active cell @p cell (station 0).
+    const PointState &
+    point_state(const unsigned int cell, const unsigned int q) const;
+
     /// Stress (3D, tension positive) at point @p q of active cell @p cell.
     const SymmetricTensor<2, 3> &
     stress(const unsigned int cell, const unsigned int q) const;
+
+    /// The material law of active cell @p cell.
+    const MaterialLaw &
+    material_law(const unsigned int cell) const;
 
     unsigned int
     n_quadrature_points() const;
@@ -111,12 +136,37 @@ namespace thinlayer
     types::global_dof_index
     n_equations() const;
 
+    /// The pseudo time step of the viscoplastic iterations.
+    double
+    viscoplastic_time_step() const;
+
   private:
+    void
+    build_point_cache();
+
     void
     assemble_stiffness();
 
+    /**
+     * Solve K du = rhs for the step's displacement increment, with the
+     * prescribed displacements of a load-factor increment @p dlambda.
+     */
     void
-    update_stresses_and_internal_forces();
+    solve_increment(const double          dlambda,
+                    const Vector<double> &body_loads,
+                    Vector<double>       &increment) const;
+
+    /**
+     * Stresses for the displacement increment @p increment; adds the new
+     * viscoplastic body loads of yielding points to @p body_load_change.
+     * Returns the number of yielding points.
+     */
+    unsigned int
+    update_stresses(const Vector<double> &increment,
+                    Vector<double>       &body_load_change);
+
+    void
+    update_internal_forces();
 
     const Parameters         &parameters;
     const Triangulation<dim> &tria;
@@ -131,7 +181,22 @@ namespace thinlayer
     /// Serendipity plus homogeneous Dirichlet lines: the solve's space.
     AffineConstraints<double> constraints;
 
-    std::map<types::material_id, SymmetricTensor<4, 3>> elasticity;
+    std::map<types::material_id, std::unique_ptr<MaterialLaw>> laws;
+    double                                                     time_step;
+
+    /**
+     * Per active cell: its law and DoFs; per Gauss point: JxW and the 3D
+     * strain of every shape function (B). Flat arrays, indexed by active
+     * cell index, so the point loop touches no FEValues and no map.
+     */
+    std::vector<const MaterialLaw *>     cell_law;
+    std::vector<types::global_dof_index> cell_dofs;
+    std::vector<double>                  point_JxW;
+    std::vector<SymmetricTensor<2, 3>>   shape_strains;
+
+    CellDataStorage<typename Triangulation<dim>::cell_iterator, PointHistory>
+                                history_storage;
+    std::vector<PointHistory *> history;
 
     SparsityPattern sparsity;
     /// Unconstrained stiffness, to lift prescribed displacements.
@@ -143,13 +208,13 @@ namespace thinlayer
     /// Prescribed displacement and external load at unit load factor.
     Vector<double> unit_prescribed_displacement;
     Vector<double> unit_load;
-    /// -K times unit_prescribed_displacement.
-    Vector<double> unit_lift;
+    /// f - K times unit_prescribed_displacement: the right-hand side of a
+    /// unit load factor.
+    Vector<double> unit_rhs;
 
-    double                             load_factor;
-    Vector<double>                     solution;
-    Vector<double>                     internal_forces;
-    std::vector<SymmetricTensor<2, 3>> stresses;
+    double         load_factor;
+    Vector<double> solution;
+    Vector<double> internal_forces;
 
     IndexSet reaction_dofs;
     IndexSet monitored_dofs;

@@ -13,14 +13,41 @@ namespace thinlayer
 {
   using namespace dealii;
 
+  enum class YieldCriterion
+  {
+    elastic,
+    tresca,
+    von_mises,
+    mohr_coulomb
+  };
+
   /**
-   * Elastic properties of one material id (a gmsh physical surface).
+   * One material id (a gmsh physical surface): isotropic elasticity and an
+   * elastic-perfectly plastic yield criterion.
    */
   struct MaterialParameters
   {
-    std::string name;
-    double      youngs_modulus;
-    double      poissons_ratio;
+    std::string    name;
+    double         youngs_modulus;
+    double         poissons_ratio;
+    YieldCriterion yield_criterion;
+    /// c: adhesion C_w of an interface, undrained strength c_u of a soil.
+    double cohesion;
+    /// phi and psi, in degrees.
+    double friction_angle;
+    double dilation_angle;
+  };
+
+  /**
+   * When an iteration of the constant-stiffness method has converged.
+   */
+  enum class ConvergenceCriterion
+  {
+    /// The paper's: no body load, divided by the largest, changed by more
+    /// than the tolerance between two iterations.
+    body_loads,
+    /// The same test on the displacement increment of the step.
+    displacements
   };
 
   /**
@@ -78,6 +105,12 @@ namespace thinlayer
 
     // Loading: increments of the load factor, one per load step.
     std::vector<double> load_increments;
+
+    // Solver
+    ConvergenceCriterion convergence_criterion;
+    double               tolerance;
+    unsigned int         max_iterations;
+    bool                 continue_after_failure;
 
     // Monitors
     LoadMeasure        load_measure;

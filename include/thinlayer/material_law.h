@@ -1,0 +1,95 @@
+#ifndef thinlayer_material_law_h
+#define thinlayer_material_law_h
+
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <thinlayer/parameters.h>
+
+#include <memory>
+
+namespace thinlayer
+{
+  using namespace dealii;
+
+  /**
+   * The stress invariants the yield criteria are written in (tension
+   * positive): mean stress sigma_m = I1/3, equivalent stress
+   * sigma_bar = sqrt(3 J2), and the Lode angle
+   * theta = 1/3 asin(-3 sqrt(3)/2 J3 / J2^(3/2)) in [-30, 30] degrees, which
+   * is +30 degrees in triaxial compression (sigma_1 = sigma_2 > sigma_3) and
+   * -30 degrees in triaxial extension.
+   */
+  struct StressInvariants
+  {
+    explicit StressInvariants(const SymmetricTensor<2, 3> &stress);
+
+    SymmetricTensor<2, 3> deviator;
+    double                mean;
+    double                J2;
+    double                J3;
+    double                equivalent;
+    double                lode_angle;
+  };
+
+  /**
+   * An elastic-perfectly plastic material at a point: isotropic elasticity,
+   * and, for laws that can yield, a yield function F (F <= 0 is admissible,
+   * in stress units), the direction of plastic flow dQ/dsigma, and the
+   * stable pseudo time step of viscoplastic iterations.
+   *
+   * To add a law: derive from this class in a new file and add one line to
+   * create_material_law().
+   */
+  class MaterialLaw
+  {
+  public:
+    MaterialLaw(const double youngs_modulus, const double poissons_ratio);
+
+    virtual ~MaterialLaw() = default;
+
+    const SymmetricTensor<4, 3> &
+    elasticity() const;
+
+    /// Whether the law has a yield surface at all.
+    virtual bool
+    can_yield() const;
+
+    /// F(sigma); <= 0 inside the yield surface.
+    virtual double
+    yield_function(const SymmetricTensor<2, 3> &stress) const;
+
+    /// dQ/dsigma, the direction of plastic strain rate.
+    virtual SymmetricTensor<2, 3>
+    flow_direction(const SymmetricTensor<2, 3> &stress) const;
+
+    /**
+     * F divided by the strength available at this stress (c for Tresca,
+     * sqrt(3) c for von Mises, c cos(phi) - sigma_m sin(phi) for
+     * Mohr-Coulomb): 0 on the surface, > 0 outside. Its maximum after an
+     * iteration has converged measures drift into illegal stress space.
+     */
+    virtual double
+    yield_ratio(const SymmetricTensor<2, 3> &stress) const;
+
+    /**
+     * The largest pseudo time step for which viscoplastic strain
+     * iterations are stable with this law (infinite if it cannot yield).
+     */
+    virtual double
+    viscoplastic_time_step() const;
+
+  protected:
+    const double                youngs_modulus;
+    const double                poissons_ratio;
+    const SymmetricTensor<4, 3> stiffness;
+  };
+
+  /**
+   * The law a material section asks for: elastic, tresca, von mises or
+   * mohr-coulomb.
+   */
+  std::unique_ptr<MaterialLaw>
+  create_material_law(const MaterialParameters &parameters);
+} // namespace thinlayer
+
+#endif
