@@ -2,6 +2,7 @@
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/numerics/vector_tools.h>
 
 #include <thinlayer/analysis.h>
 #include <thinlayer/input_error.h>
@@ -367,6 +368,22 @@ namespace thinlayer
     if (parameters.load_measure == LoadMeasure::load_factor)
       return parameters.load_scale * load_factor;
 
+    if (parameters.load_measure == LoadMeasure::stress_average)
+      {
+        const auto [i, j]           = parameters.load_stress_component;
+        const unsigned int n_q      = quadrature.size();
+        double             integral = 0, area = 0;
+        for (const auto &cell : tria.active_cell_iterators())
+          if (cell->material_id() == parameters.load_material_id)
+            for (unsigned int q = 0; q < n_q; ++q)
+              {
+                const unsigned int p = cell->active_cell_index() * n_q + q;
+                integral += history[p]->stations[0].stress[i][j] * point_JxW[p];
+                area += point_JxW[p];
+              }
+        return parameters.load_scale * integral / area;
+      }
+
     // Reactions: the residual f_int - f_ext at the supported DoFs, after
     // the residuals of eliminated centre nodes are handed to their masters.
     Vector<double> residual(internal_forces);
@@ -383,6 +400,18 @@ namespace thinlayer
   DisplacementMeasure
   Analysis<dim>::displacement() const
   {
+    const double       s = parameters.displacement_scale;
+    const unsigned int c = parameters.displacement_component;
+    if (parameters.displacement_measure == DisplacementMeasureType::point)
+      {
+        Point<dim> x;
+        for (unsigned int d = 0; d < dim; ++d)
+          x[d] = parameters.displacement_point[d];
+        Vector<double> value(dim);
+        VectorTools::point_value(mapping, dof_handler, solution, x, value);
+        return {s * value[c], s * value[c], s * value[c]};
+      }
+
     const QGauss<dim - 1>       face_quadrature(3);
     FEFaceValues<dim>           fe_face(mapping,
                               fe,
@@ -390,7 +419,6 @@ namespace thinlayer
                               update_values | update_JxW_values);
     std::vector<Vector<double>> values(face_quadrature.size(),
                                        Vector<double>(dim));
-    const unsigned int          c        = parameters.displacement_component;
     double                      integral = 0, length = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (const auto f : cell->face_indices())
@@ -413,7 +441,6 @@ namespace thinlayer
         min = std::min(min, solution[dof]);
         max = std::max(max, solution[dof]);
       }
-    const double s = parameters.displacement_scale;
     return {s * integral / length,
             std::min(s * min, s * max),
             std::max(s * min, s * max)};

@@ -4,6 +4,7 @@
 #include <thinlayer/input_error.h>
 #include <thinlayer/parameters.h>
 #include <thinlayer/run.h>
+#include <thinlayer/sweep.h>
 
 namespace thinlayer
 {
@@ -80,7 +81,10 @@ namespace thinlayer
     try
       {
         const Parameters parameters = ParameterReader().read(file, overrides);
-        run_scene(parameters, out);
+        if (parameters.sweep.empty())
+          run_scene(parameters, out);
+        else
+          run_sweep(file, overrides, parameters, out);
         return 0;
       }
     catch (const InputError &e)

@@ -245,11 +245,13 @@ namespace thinlayer
       prm.enter_subsection("Monitors");
       prm.declare_entry("Load measure",
                         "load factor",
-                        Patterns::Selection("load factor|reaction"),
-                        "What the 'load' column reports: the load factor, or "
+                        Patterns::Selection(
+                          "load factor|reaction|stress average"),
+                        "What the 'load' column reports: the load factor; "
                         "the sum of reactions on 'Load boundary id' in "
-                        "'Load component'. Either is multiplied by "
-                        "'Load scale'.");
+                        "'Load component'; or the average of 'Load stress "
+                        "component' over 'Load material id'. Each is "
+                        "multiplied by 'Load scale' (e.g. a length).");
       prm.declare_entry("Load scale",
                         "1",
                         Patterns::Double(),
@@ -263,6 +265,24 @@ namespace thinlayer
                         "y",
                         Patterns::Selection("x|y"),
                         "Direction of the summed reactions.");
+      prm.declare_entry("Load material id",
+                        "0",
+                        Patterns::Integer(0),
+                        "Material id over which a stress is averaged.");
+      prm.declare_entry("Load stress component",
+                        "xx",
+                        Patterns::Selection("xx|yy|zz|xy"),
+                        "The averaged stress component (tension positive).");
+      prm.declare_entry("Displacement measure",
+                        "boundary average",
+                        Patterns::Selection("boundary average|point"),
+                        "What the 'displacement' column reports: the "
+                        "average over 'Displacement boundary id', or the "
+                        "value at 'Displacement point'.");
+      prm.declare_entry("Displacement point",
+                        "0, 0",
+                        Patterns::List(Patterns::Double(), 2, 2),
+                        "The point x, y for the point measure.");
       prm.declare_entry("Displacement boundary id",
                         "0",
                         Patterns::Integer(0),
@@ -288,6 +308,19 @@ namespace thinlayer
         "Closed-form value the final load is compared with, as an "
         "expression of the geometry parameters (e.g. "
         "'1/(sin(alpha*pi/180)*cos(alpha*pi/180))'); empty for none.");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Sweep");
+      prm.declare_entry(
+        "Values",
+        "",
+        Patterns::Anything(),
+        "Rerun the scene for every combination of values: "
+        "'name = v1, v2, ...; name = ...'. A name with a '/' is an entry "
+        "('Solver/Tolerance = 1e-3, 1e-6'), any other a geometry parameter "
+        "('alpha = 10, 20, 30'). Each run writes into run-NNN of the output "
+        "directory, and sweep.csv there gets one row per run. Empty: one "
+        "run.");
       prm.leave_subsection();
 
       prm.enter_subsection("Output");
@@ -395,6 +428,51 @@ namespace thinlayer
       if (result.empty())
         throw InputError(file, entry, "expected at least one increment");
       return result;
+    }
+
+    /// Parse 'name = v1, v2; name = w1, w2'.
+    std::vector<std::pair<std::string, std::vector<std::string>>>
+    parse_sweep(const std::string &text, const std::string &file)
+    {
+      std::vector<std::pair<std::string, std::vector<std::string>>> sweep;
+      const std::regex name("[A-Za-z_][A-Za-z0-9_]*|[^/=]+(/[^/=]+)+");
+      for (const auto &item : Utilities::split_string_list(text, ';'))
+        {
+          const auto        equal = item.find('=');
+          const std::string key =
+            Utilities::trim(item.substr(0, std::min(equal, item.size())));
+          if (equal == std::string::npos || !std::regex_match(key, name))
+            throw InputError(file,
+                             "Sweep/Values",
+                             "expected 'name = v1, v2, ...' (a geometry "
+                             "parameter or Section/Entry), got '" +
+                               item + "'");
+          const auto values =
+            Utilities::split_string_list(item.substr(equal + 1), ',');
+          if (values.empty())
+            throw InputError(file,
+                             "Sweep/Values",
+                             "expected at least one value for '" + key + "'");
+          if (key.find('/') == std::string::npos)
+            for (const auto &v : values)
+              {
+                std::size_t used = 0;
+                try
+                  {
+                    std::stod(v, &used);
+                  }
+                catch (const std::exception &)
+                  {}
+                if (used == 0 || used != v.size())
+                  throw InputError(file,
+                                   "Sweep/Values",
+                                   "expected numbers for the geometry "
+                                   "parameter '" +
+                                     key + "', got '" + v + "'");
+              }
+          sweep.emplace_back(key, values);
+        }
+      return sweep;
     }
 
     std::vector<bool>
@@ -624,9 +702,25 @@ namespace thinlayer
       prm.leave_subsection();
 
       prm.enter_subsection("Monitors");
-      p.load_measure             = (prm.get("Load measure") == "reaction")
-                                     ? LoadMeasure::reaction
-                                     : LoadMeasure::load_factor;
+      const std::string measure = prm.get("Load measure");
+      p.load_measure     = (measure == "reaction") ? LoadMeasure::reaction
+                           : (measure == "stress average")
+                             ? LoadMeasure::stress_average
+                             : LoadMeasure::load_factor;
+      p.load_material_id = prm.get_integer("Load material id");
+      const std::string component = prm.get("Load stress component");
+      p.load_stress_component     = {component[0] == 'x' ? 0u : 1u,
+                                 component[1] == 'x'   ? 0u
+                                     : component[1] == 'y' ? 1u
+                                                           : 2u};
+      if (component == "zz")
+        p.load_stress_component = {2u, 2u};
+      p.displacement_measure = (prm.get("Displacement measure") == "point")
+                                 ? DisplacementMeasureType::point
+                                 : DisplacementMeasureType::boundary_average;
+      for (const auto &x :
+           Utilities::split_string_list(prm.get("Displacement point")))
+        p.displacement_point.push_back(std::stod(x));
       p.load_scale               = prm.get_double("Load scale");
       p.load_boundary_id         = prm.get_integer("Load boundary id");
       p.load_component           = (prm.get("Load component") == "x") ? 0 : 1;
@@ -657,6 +751,10 @@ namespace thinlayer
                              "expected a finite, non-zero value, got " +
                                std::to_string(p.reference_load));
         }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Sweep");
+      p.sweep = parse_sweep(prm.get("Values"), file);
       prm.leave_subsection();
 
       prm.enter_subsection("Output");

@@ -40,7 +40,7 @@ namespace thinlayer
   } // namespace
 
 
-  JsonObject
+  RunSummary
   run_scene(const Parameters &p, std::ostream &out)
   {
     Timer       wall_clock;
@@ -73,6 +73,7 @@ namespace thinlayer
     double       load_factor = 0, last_converged_load = 0;
     double       first_failed_load = std::numeric_limits<double>::quiet_NaN();
     unsigned int total_iterations  = 0;
+    unsigned int steps_run         = 0;
     bool         converged         = true;
     DisplacementMeasure displacement{0, 0, 0};
 
@@ -86,6 +87,7 @@ namespace thinlayer
         displacement            = analysis.displacement();
         timer.leave_subsection();
         total_iterations += result.iterations;
+        ++steps_run;
 
         timer.enter_subsection("output");
         writer.write_history_row(
@@ -101,18 +103,25 @@ namespace thinlayer
             << format("%4.0f", result.iterations) << "  "
             << (result.converged ? "converged" : "FAILED") << '\n';
 
-        if (!result.converged)
+        if (result.converged)
+          last_converged_load = load;
+        else
           {
-            converged         = false;
-            first_failed_load = load;
-            break;
+            // Non-convergence is a result (collapse), not an error.
+            if (converged)
+              first_failed_load = load;
+            converged = false;
+            if (!p.continue_after_failure)
+              break;
           }
-        last_converged_load = load;
       }
 
     const double relative_error =
       (last_converged_load - p.reference_load) / p.reference_load;
-    out << "  displacement on boundary " << p.displacement_boundary_id
+    out << "  displacement "
+        << (p.displacement_measure == DisplacementMeasureType::point
+              ? std::string("at the monitored point")
+              : "on boundary " + std::to_string(p.displacement_boundary_id))
         << ": mean " << format("%.5e", displacement.mean) << ", min "
         << format("%.5e", displacement.min) << ", max "
         << format("%.5e", displacement.max) << ", spread (max-min)/|mean| "
@@ -151,7 +160,7 @@ namespace thinlayer
       .add("final_displacement", displacement.mean)
       .add("final_displacement_min", displacement.min)
       .add("final_displacement_max", displacement.max)
-      .add_integer("load_steps", p.load_increments.size())
+      .add_integer("load_steps", steps_run)
       .add_integer("total_iterations", total_iterations)
       .add("wall_seconds", wall_clock.wall_time())
       .add("timing", timing);
@@ -164,6 +173,16 @@ namespace thinlayer
         timer.print_summary();
       }
     out << "  results in " << writer.get_directory() << '\n';
-    return summary;
+    return {converged,
+            last_converged_load,
+            first_failed_load,
+            p.reference_load,
+            relative_error,
+            scene.triangulation().n_active_cells(),
+            static_cast<unsigned int>(analysis.n_dofs()),
+            static_cast<unsigned int>(analysis.n_equations()),
+            steps_run,
+            total_iterations,
+            wall_clock.wall_time()};
   }
 } // namespace thinlayer

@@ -198,13 +198,22 @@ namespace thinlayer
                            std::to_string(id) +
                            " on its boundary (its boundary ids: " +
                            describe(mesh_boundaries, true) + ")");
-    if (mesh_boundaries.count(p.displacement_boundary_id) == 0)
+    if (p.displacement_measure == DisplacementMeasureType::boundary_average &&
+        mesh_boundaries.count(p.displacement_boundary_id) == 0)
       throw InputError(p.parameter_file,
                        "Monitors/Displacement boundary id",
                        "the mesh has no boundary id " +
                          std::to_string(p.displacement_boundary_id) +
                          " (its boundary ids: " +
                          describe(mesh_boundaries, true) + ")");
+    if (p.load_measure == LoadMeasure::stress_average &&
+        mesh_materials.count(p.load_material_id) == 0)
+      throw InputError(p.parameter_file,
+                       "Monitors/Load material id",
+                       "the mesh has no material id " +
+                         std::to_string(p.load_material_id) +
+                         " (its material ids: " + describe(mesh_materials) +
+                         ")");
     if (p.load_measure == LoadMeasure::reaction &&
         mesh_boundaries.count(p.load_boundary_id) == 0)
       throw InputError(p.parameter_file,

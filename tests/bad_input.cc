@@ -176,6 +176,28 @@ main()
         "subsection Output\n  set Directory = results\nend\n");
   check("a body with no support", {"unrestrained.prm"});
 
+  write("sweep.prm",
+        scene("good.geo",
+              "",
+              "subsection Sweep\n  set Values = height = 1, tall\nend\n"));
+  check("a sweep of a geometry parameter over a non-number", {"sweep.prm"});
+
+  write("sweep-entry.prm",
+        scene("good.geo",
+              "",
+              "subsection Sweep\n  set Values = Material 1/Poisson's ratio "
+              "= 0.2, 0.5\nend\n"));
+  check("a sweep with one invalid run", {"sweep-entry.prm"});
+
+  write("cohesion.prm", scene("good.geo", "  set Yield criterion = tresca\n"));
+  check("a Tresca material without cohesion", {"cohesion.prm"});
+
+  write("dilation.prm",
+        scene("good.geo",
+              "  set Yield criterion = mohr-coulomb\n  set Friction angle = "
+              "20\n  set Dilation angle = 25\n"));
+  check("a dilation angle above the friction angle", {"dilation.prm"});
+
   check("an override of an entry that does not exist",
         {"good.prm", "-s", "Material 1/Stiffness=3"});
   check("an override with a value out of its pattern",

@@ -75,7 +75,7 @@ namespace
           g[i][j] = (law.yield_function(plus) - law.yield_function(minus)) /
                     (2 * h) / (i == j ? 1 : 2);
         }
-      return g;
+    return g;
   }
 
   const char *
@@ -109,28 +109,28 @@ main()
     }
 
   const double c = 2.0, phi = 30 * degree, psi = 10 * degree;
-  const auto   tresca = create_material_law(material(YieldCriterion::tresca, c));
-  const auto   mises =
+  const auto tresca = create_material_law(material(YieldCriterion::tresca, c));
+  const auto mises =
     create_material_law(material(YieldCriterion::von_mises, c));
-  const auto mohr_coulomb = create_material_law(
-    material(YieldCriterion::mohr_coulomb, c, 30, 10));
+  const auto mohr_coulomb =
+    create_material_law(material(YieldCriterion::mohr_coulomb, c, 30, 10));
   // F of this one is the plastic potential Q of mohr_coulomb.
-  const auto mohr_coulomb_potential = create_material_law(
-    material(YieldCriterion::mohr_coulomb, c, 10, 10));
-  const auto associated = create_material_law(
-    material(YieldCriterion::mohr_coulomb, c, 30, 30));
+  const auto mohr_coulomb_potential =
+    create_material_law(material(YieldCriterion::mohr_coulomb, c, 10, 10));
+  const auto associated =
+    create_material_law(material(YieldCriterion::mohr_coulomb, c, 30, 30));
 
   std::printf("\nYield functions against principal-stress formulas "
               "(1000 random states):\n");
   double tresca_error = 0, mises_error = 0, mc_error = 0;
   for (unsigned int k = 0; k < 1000; ++k)
     {
-      const SymmetricTensor<2, 3> s  = random_stress(5);
-      const auto                  p  = principal(s);
-      const double                j2 = ((p[0] - p[1]) * (p[0] - p[1]) +
-                         (p[1] - p[2]) * (p[1] - p[2]) +
-                         (p[2] - p[0]) * (p[2] - p[0])) /
-                        6;
+      const SymmetricTensor<2, 3> s = random_stress(5);
+      const auto                  p = principal(s);
+      const double                j2 =
+        ((p[0] - p[1]) * (p[0] - p[1]) + (p[1] - p[2]) * (p[1] - p[2]) +
+         (p[2] - p[0]) * (p[2] - p[0])) /
+        6;
       tresca_error =
         std::max(tresca_error,
                  std::abs(tresca->yield_function(s) - ((p[0] - p[2]) / 2 - c)));
@@ -163,9 +163,9 @@ main()
                           compression)})
       std::printf("  %-36s F = %.2e, yield ratio 1%% outside = %.4f\n",
                   name,
-                  std::abs(law->yield_function(s)) < 1e-12 ?
-                    0. :
-                    law->yield_function(s),
+                  std::abs(law->yield_function(s)) < 1e-12
+                    ? 0.
+                    : law->yield_function(s),
                   law->yield_ratio(1.01 * s));
   }
 
@@ -220,7 +220,7 @@ main()
         }
       else // s1 = b > s2 = s3 = a: faces (1,2) and (1,3)
         {
-          average[2][2]                 = (1 + sp) / 2;
+          average[2][2] = (1 + sp) / 2;
           average[0][0] = average[1][1] = (-1 + sp) / 4;
         }
       const SymmetricTensor<2, 3> computed = mohr_coulomb->flow_direction(s);

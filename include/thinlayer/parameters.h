@@ -75,7 +75,20 @@ namespace thinlayer
     /// The load factor times a scale (e.g. a traction times an area).
     load_factor,
     /// The sum of reactions on a boundary id in one direction.
-    reaction
+    reaction,
+    /// The average of a stress component over a material id.
+    stress_average
+  };
+
+  /**
+   * How the "displacement" column of history.csv is measured.
+   */
+  enum class DisplacementMeasureType
+  {
+    /// Length-weighted average over a boundary id.
+    boundary_average,
+    /// The value at a point.
+    point
   };
 
   /**
@@ -117,13 +130,25 @@ namespace thinlayer
     double             load_scale;
     types::boundary_id load_boundary_id;
     unsigned int       load_component;
-    types::boundary_id displacement_boundary_id;
-    unsigned int       displacement_component;
-    double             displacement_scale;
+    types::material_id load_material_id;
+    /// (i, j) of the averaged stress component.
+    std::pair<unsigned int, unsigned int> load_stress_component;
+    DisplacementMeasureType               displacement_measure;
+    std::vector<double>                   displacement_point;
+    types::boundary_id                    displacement_boundary_id;
+    unsigned int                          displacement_component;
+    double                                displacement_scale;
 
     // Reference: the analytic value of the load the run is compared with,
     // evaluated from the geometry parameters; NaN where none is declared.
     double reference_load;
+
+    /**
+     * Sweep: the runs are the cartesian product of these value lists. A
+     * name with a '/' is an entry ("Solver/Tolerance"), any other name a
+     * geometry parameter. Empty: a single run.
+     */
+    std::vector<std::pair<std::string, std::vector<std::string>>> sweep;
 
     // Output
     std::string  output_directory;

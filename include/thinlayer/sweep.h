@@ -1,0 +1,30 @@
+#ifndef thinlayer_sweep_h
+#define thinlayer_sweep_h
+
+#include <thinlayer/parameters.h>
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace thinlayer
+{
+  /**
+   * Run the scene of @p file once for every combination of the value lists
+   * in its Sweep section (a cartesian product), each run in run-NNN of the
+   * output directory, and write sweep.csv there: one row per run with the
+   * swept values and the main figures of its summary. Every combination's
+   * parameters are checked before the first run; a run that fails (no
+   * convergence, or a geometry gmsh cannot mesh) is a row, not an abort.
+   *
+   * @param overrides the command line's overrides, applied to every run.
+   * @param base      the parameters as read without the sweep.
+   */
+  void
+  run_sweep(const std::string              &file,
+            const std::vector<std::string> &overrides,
+            const Parameters               &base,
+            std::ostream                   &out);
+} // namespace thinlayer
+
+#endif
