@@ -1,0 +1,168 @@
+#!/usr/bin/python3
+"""Tables and figures of Griffiths' Case 1 from thinlayer sweeps.
+
+Run with Debian's python3 (it has python3-matplotlib):
+
+    /usr/bin/python3 scripts/plot_case1.py table1     output/case1-table1
+    /usr/bin/python3 scripts/plot_case1.py figure3    output/case1-figure3
+    /usr/bin/python3 scripts/plot_case1.py frictional output/case1-figure4
+    /usr/bin/python3 scripts/plot_case1.py frictional output/case1-figure5
+
+Each reads DIR/sweep.csv and the runs' history.csv files and writes PNG
+(and for table1 a Markdown and a CSV table) into DIR.
+"""
+import csv
+import math
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def read_csv(path):
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def history(directory, run):
+    return read_csv(os.path.join(directory, "run-%03d" % int(run), "history.csv"))
+
+
+def number(text):
+    return float(text) if text not in ("", None) else math.nan
+
+
+def table1(directory):
+    """Computed collapse loads against P_ult/C_w = 1/(sin a cos a)."""
+    rows = read_csv(os.path.join(directory, "sweep.csv"))
+    alphas = sorted({float(r["alpha"]) for r in rows})
+    ratios = sorted({r["aspect_ratio"] for r in rows}, key=float)
+    tolerances = sorted({r["Solver/Tolerance"] for r in rows}, key=float, reverse=True)
+
+    def find(alpha, ratio, tol):
+        return next(r for r in rows if float(r["alpha"]) == alpha
+                    and r["aspect_ratio"] == ratio and r["Solver/Tolerance"] == tol)
+
+    lines = ["# Table 1: P_ult / C_w, computed against 1/(sin a cos a)", ""]
+    flat = [["alpha", "analytic", "aspect_ratio", "tolerance", "computed",
+             "relative_error", "collapse_detected", "total_iterations"]]
+    for tol in tolerances:
+        lines += ["TOL = %s (computed value, error; '>' where no step failed, so"
+                  " collapse was not detected within the load programme)" % tol, ""]
+        lines += ["| alpha | analytic | " + " | ".join("AR %s" % a for a in ratios) + " |",
+                  "|---|---|" + "---|" * len(ratios)]
+        for alpha in alphas:
+            cells = []
+            for ratio in ratios:
+                r = find(alpha, ratio, tol)
+                detected = r["converged"] == "0"
+                cells.append("%s%.2f (%+.0f%%)" % ("" if detected else ">",
+                                                  number(r["last_converged_load"]),
+                                                  100 * number(r["relative_error"])))
+                flat.append([alpha, r["reference_load"], ratio, tol, r["last_converged_load"],
+                             r["relative_error"], int(detected), r["total_iterations"]])
+            lines.append("| %g | %.2f | %s |" % (alpha, number(find(alpha, ratios[0], tol)["reference_load"]),
+                                                 " | ".join(cells)))
+        lines.append("")
+    with open(os.path.join(directory, "table1.md"), "w") as f:
+        f.write("\n".join(lines))
+    with open(os.path.join(directory, "table1.csv"), "w", newline="") as f:
+        csv.writer(f).writerows(flat)
+    print("\n".join(lines))
+
+    fig, axes = plt.subplots(1, len(tolerances), figsize=(5 * len(tolerances), 4), sharey=True)
+    axes = axes if len(tolerances) > 1 else [axes]
+    fine = [10 + 0.5 * i for i in range(141)]
+    for ax, tol in zip(axes, tolerances):
+        ax.plot(fine, [1 / (math.sin(math.radians(a)) * math.cos(math.radians(a))) for a in fine],
+                "k-", label="analytic")
+        for ratio, marker in zip(ratios, "os^"):
+            pts = [find(a, ratio, tol) for a in alphas]
+            detected = [r["converged"] == "0" for r in pts]
+            ax.plot([a for a, d in zip(alphas, detected) if d],
+                    [number(r["last_converged_load"]) for r, d in zip(pts, detected) if d],
+                    marker, label="aspect ratio %s" % ratio)
+            ax.plot([a for a, d in zip(alphas, detected) if not d],
+                    [number(r["last_converged_load"]) for r, d in zip(pts, detected) if not d],
+                    marker, mfc="none", color=ax.lines[-1].get_color())
+        ax.set_title("TOL = %s (open: collapse not detected)" % tol)
+        ax.set_xlabel("interface inclination alpha (degrees)")
+        ax.grid(alpha=0.3)
+    axes[0].set_ylabel("P_ult / C_w")
+    axes[0].legend()
+    fig.tight_layout()
+    fig.savefig(os.path.join(directory, "table1.png"), dpi=120)
+
+
+def figure3(directory):
+    """Load against displacement for each inclination and aspect ratio."""
+    rows = read_csv(os.path.join(directory, "sweep.csv"))
+    alphas = sorted({r["alpha"] for r in rows}, key=float)
+    fig, axes = plt.subplots(2, len(alphas), figsize=(4.5 * len(alphas), 7),
+                             gridspec_kw={"height_ratios": [2, 1]})
+    for column, alpha in enumerate(alphas):
+        ax, ax_it = axes[0][column], axes[1][column]
+        for r in (r for r in rows if r["alpha"] == alpha):
+            h = history(directory, r["run"])
+            u = [number(s["displacement"]) for s in h]
+            p = [number(s["load"]) for s in h]
+            ok = [s["converged"] == "1" for s in h]
+            line, = ax.plot(u, p, "-", label="aspect ratio %s" % r["aspect_ratio"])
+            ax.plot([x for x, c in zip(u, ok) if not c], [y for y, c in zip(p, ok) if not c],
+                    "o", mfc="none", color=line.get_color())
+            ax_it.plot([number(s["load"]) / number(r["reference_load"]) for s in h],
+                       [int(s["iterations"]) for s in h], ".-", color=line.get_color())
+        a = math.radians(float(alpha))
+        ax.axhline(1 / (math.sin(a) * math.cos(a)), color="k", ls="--", label="analytic")
+        ax.set_title("alpha = %s degrees (open: step failed)" % alpha)
+        ax.set_xlabel("E u / C_w (axial, top)")
+        ax.grid(alpha=0.3)
+        ax_it.set_xlabel("P / P_ult")
+        ax_it.set_yscale("log")
+        ax_it.grid(alpha=0.3)
+    axes[0][0].set_ylabel("P / C_w")
+    axes[1][0].set_ylabel("iterations per step")
+    axes[0][0].legend()
+    fig.tight_layout()
+    fig.savefig(os.path.join(directory, "figure3.png"), dpi=120)
+    print("wrote", os.path.join(directory, "figure3.png"))
+
+
+def frictional(directory):
+    """Slip of the top against inclination, one series per other swept entry."""
+    rows = read_csv(os.path.join(directory, "sweep.csv"))
+    swept = list(rows[0].keys())[1:list(rows[0].keys()).index("converged")]
+    series_key = next(k for k in swept if k != "alpha")
+    fig, ax = plt.subplots(figsize=(6.5, 4.5))
+    for value in sorted({r[series_key] for r in rows}, key=float, reverse=True):
+        pts = sorted((r for r in rows if r[series_key] == value), key=lambda r: float(r["alpha"]))
+        alpha = [float(r["alpha"]) for r in pts]
+        slip = [abs(number(history(directory, r["run"])[-1]["displacement"])) for r in pts]
+        slid = [r["converged"] == "0" for r in pts]
+        line, = ax.plot(alpha, slip, "-", label="%s = %s" % (series_key.split("/")[-1], value))
+        ax.plot([a for a, s in zip(alpha, slid) if s], [u for u, s in zip(slip, slid) if s],
+                "o", mfc="none", color=line.get_color())
+        ax.plot([a for a, s in zip(alpha, slid) if not s], [u for u, s in zip(slip, slid) if not s],
+                "o", color=line.get_color())
+    ax.axvline(30, color="k", ls="--", label="alpha = phi = 30")
+    ax.axvline(math.degrees(math.atan(0.5)), color="grey", ls=":",
+               label="phi* = 26.6 (Davis, psi = 0)")
+    ax.set_yscale("log")
+    ax.set_xlabel("interface inclination alpha (degrees)")
+    ax.set_ylabel("|horizontal displacement of the top| x E / P")
+    ax.set_title("open: a load step failed (slip)")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    name = os.path.basename(os.path.normpath(directory)) + ".png"
+    fig.savefig(os.path.join(directory, name), dpi=120)
+    print("wrote", os.path.join(directory, name))
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 3 or sys.argv[1] not in ("table1", "figure3", "frictional"):
+        sys.exit(__doc__)
+    {"table1": table1, "figure3": figure3, "frictional": frictional}[sys.argv[1]](sys.argv[2])
