@@ -131,6 +131,7 @@ namespace thinlayer
                                       {parameters.displacement_boundary_id});
 
     solution.reinit(dof_handler.n_dofs());
+    step_increment.reinit(dof_handler.n_dofs());
     internal_forces.reinit(dof_handler.n_dofs());
   }
 
@@ -342,6 +343,7 @@ namespace thinlayer
     // The step's state is kept even if it failed, so that the mechanism at
     // failure can be seen.
     solution += increment;
+    step_increment.swap(increment);
     load_factor            = new_load_factor;
     result.max_yield_ratio = std::numeric_limits<double>::quiet_NaN();
     for (unsigned int p = 0; p < history.size(); ++p)
@@ -469,6 +471,15 @@ namespace thinlayer
   {
     return solution;
   }
+
+
+  template <int dim>
+  const Vector<double> &
+  Analysis<dim>::get_step_increment() const
+  {
+    return step_increment;
+  }
+
 
 
   template <int dim>

@@ -205,6 +205,32 @@ namespace thinlayer
   }
 
 
+  template <int dim>
+  void
+  OutputWriter::write_displacements(const Analysis<dim> &analysis) const
+  {
+    const auto            &dof_handler = analysis.get_dof_handler();
+    const Vector<double>  &u           = analysis.get_solution();
+    const Vector<double>  &du          = analysis.get_step_increment();
+    std::vector<bool>      written(dof_handler.get_triangulation().n_vertices());
+    std::ostringstream     csv;
+    csv << std::setprecision(10) << "x,y,u_x,u_y,du_x,du_y\n";
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const unsigned int v : cell->vertex_indices())
+        if (!written[cell->vertex_index(v)])
+          {
+            written[cell->vertex_index(v)] = true;
+            csv << cell->vertex(v)[0] << ',' << cell->vertex(v)[1] << ','
+                << u[cell->vertex_dof_index(v, 0)] << ','
+                << u[cell->vertex_dof_index(v, 1)] << ','
+                << du[cell->vertex_dof_index(v, 0)] << ','
+                << du[cell->vertex_dof_index(v, 1)] << '\n';
+          }
+    write_file("displacements.csv", csv.str());
+  }
+
+
+
   void
   OutputWriter::write_summary(const JsonObject &summary)
   {
@@ -232,6 +258,9 @@ namespace thinlayer
     return directory;
   }
 
+
+  template void
+  OutputWriter::write_displacements(const Analysis<2> &) const;
 
   template void
   OutputWriter::write_fields(const unsigned int,

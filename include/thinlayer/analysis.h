@@ -112,6 +112,11 @@ namespace thinlayer
     const Vector<double> &
     get_solution() const;
 
+    /// The displacement increment of the last load step: at a failed step,
+    /// the incipient mechanism.
+    const Vector<double> &
+    get_step_increment() const;
+
     /// The state at Gauss point @p q of active cell @p cell (station 0).
     const PointState &
     point_state(const unsigned int cell, const unsigned int q) const;
@@ -214,6 +219,7 @@ namespace thinlayer
 
     double         load_factor;
     Vector<double> solution;
+    Vector<double> step_increment;
     Vector<double> internal_forces;
 
     IndexSet reaction_dofs;

@@ -75,6 +75,16 @@ namespace thinlayer
                  const Analysis<dim> &analysis,
                  const Parameters    &parameters);
 
+    /**
+     * Vertex positions, displacements and the last step's displacement
+     * increments as displacements.csv (x, y, u_x, u_y, du_x, du_y),
+     * overwritten every step so that it holds the last one: at a failed
+     * step the increment is the mechanism at failure, for plots.
+     */
+    template <int dim>
+    void
+    write_displacements(const Analysis<dim> &analysis) const;
+
     void
     write_summary(const JsonObject &summary);
 
