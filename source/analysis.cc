@@ -481,7 +481,6 @@ namespace thinlayer
   }
 
 
-
   template <int dim>
   const PointState &
   Analysis<dim>::point_state(const unsigned int cell,

@@ -80,11 +80,17 @@ namespace thinlayer
   BoundaryData<dim>::prescribed_values(const Mapping<dim>    &mapping,
                                        const DoFHandler<dim> &dof_handler) const
   {
+    // Later ids overwrite earlier ones at shared nodes: going from the
+    // highest id down makes the lowest id win, the documented rule.
     std::map<types::global_dof_index, double> values;
-    for (const auto &[id, c] : conditions)
-      if (c.constrained.n_selected_components(dim) > 0)
-        VectorTools::interpolate_boundary_values(
-          mapping, dof_handler, id, *c.displacement, values, c.constrained);
+    for (auto c = conditions.rbegin(); c != conditions.rend(); ++c)
+      if (c->second.constrained.n_selected_components(dim) > 0)
+        VectorTools::interpolate_boundary_values(mapping,
+                                                 dof_handler,
+                                                 c->first,
+                                                 *c->second.displacement,
+                                                 values,
+                                                 c->second.constrained);
     return values;
   }
 

@@ -209,11 +209,11 @@ namespace thinlayer
   void
   OutputWriter::write_displacements(const Analysis<dim> &analysis) const
   {
-    const auto            &dof_handler = analysis.get_dof_handler();
-    const Vector<double>  &u           = analysis.get_solution();
-    const Vector<double>  &du          = analysis.get_step_increment();
-    std::vector<bool>      written(dof_handler.get_triangulation().n_vertices());
-    std::ostringstream     csv;
+    const auto           &dof_handler = analysis.get_dof_handler();
+    const Vector<double> &u           = analysis.get_solution();
+    const Vector<double> &du          = analysis.get_step_increment();
+    std::vector<bool>     written(dof_handler.get_triangulation().n_vertices());
+    std::ostringstream    csv;
     csv << std::setprecision(10) << "x,y,u_x,u_y,du_x,du_y\n";
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (const unsigned int v : cell->vertex_indices())
@@ -228,7 +228,6 @@ namespace thinlayer
           }
     write_file("displacements.csv", csv.str());
   }
-
 
 
   void

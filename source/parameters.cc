@@ -157,7 +157,8 @@ namespace thinlayer
         "Prescribed displacement per unit load factor of the constrained "
         "components: one function expression of x, y (and the geometry "
         "parameters) per component, separated by ';', or one expression "
-        "for all components.");
+        "for all components. Where boundary ids share a node, the lowest "
+        "id's value wins.");
       prm.declare_entry("Traction",
                         "0",
                         Patterns::Anything(),

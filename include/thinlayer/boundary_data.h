@@ -38,7 +38,8 @@ namespace thinlayer
                           AffineConstraints<double> &constraints) const;
 
     /**
-     * The prescribed displacement at unit load factor, DoF by DoF.
+     * The prescribed displacement at unit load factor, DoF by DoF. Where
+     * boundary ids share a node (a corner), the lowest id's value wins.
      */
     std::map<types::global_dof_index, double>
     prescribed_values(const Mapping<dim>    &mapping,
