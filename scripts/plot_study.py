@@ -1,13 +1,14 @@
 #!/usr/bin/python3
 """Error against the analytic value, and cost, over a thinlayer sweep.
 
-    /usr/bin/python3 scripts/plot_study.py OUTPUT_DIR X_NAME [SERIES_NAME]
+    /usr/bin/python3 scripts/plot_study.py OUTPUT_DIR X_NAME
 
-Reads OUTPUT_DIR/sweep.csv (X_NAME and SERIES_NAME are swept names, e.g.
-aspect_ratio and refinement) and writes study.png (relative error of the
-collapse load, and wall time, against X_NAME, a line per SERIES_NAME value;
-open markers where no step failed, i.e. collapse was not detected) and
-study.md (the same as a table, with iterations and DoFs).
+Reads OUTPUT_DIR/sweep.csv (X_NAME is one of the swept names, e.g.
+aspect_ratio; every combination of the other swept names is a series) and
+writes study.png (relative error of the collapse load, and wall time,
+against X_NAME; open markers where no step failed, i.e. collapse was not
+detected within the load programme) and study.md (the same as a table, with
+iterations and DoFs).
 """
 import csv
 import math
@@ -27,21 +28,27 @@ def value(text):
         return math.nan
 
 
-def main(directory, x_name, series_name=None):
+def main(directory, x_name):
     with open(os.path.join(directory, "sweep.csv"), newline="") as f:
         rows = list(csv.DictReader(f))
-    series = sorted({r[series_name] for r in rows}, key=value) if series_name else [None]
+    columns = list(rows[0].keys())
+    swept = columns[1:columns.index("converged")]
+    others = [n for n in swept if n != x_name]
+
+    def key(r):
+        return tuple(r[n] for n in others)
+
+    series = sorted({key(r) for r in rows}, key=lambda k: [value(v) for v in k])
     fig, (ax_err, ax_time) = plt.subplots(1, 2, figsize=(11, 4))
-    lines = ["| %s | %s | collapse detected | last converged load | relative error | "
-             "iterations | DoFs | wall s |" % (x_name, series_name or ""),
-             "|---|---|---|---|---|---|---|---|"]
+    lines = ["| " + " | ".join(others + [x_name]) + " | collapse detected | "
+             "last converged load | relative error | iterations | DoFs | wall s |",
+             "|" + "---|" * (len(others) + 7)]
     for s in series:
-        pts = sorted((r for r in rows if series_name is None or r[series_name] == s),
-                     key=lambda r: value(r[x_name]))
+        pts = sorted((r for r in rows if key(r) == s), key=lambda r: value(r[x_name]))
         xs = [value(r[x_name]) for r in pts]
         err = [100 * value(r["relative_error"]) for r in pts]
         detected = [r["converged"] == "0" for r in pts]
-        label = "%s = %s" % (series_name, s) if series_name else None
+        label = ", ".join("%s = %s" % (n, v) for n, v in zip(others, s)) or None
         line, = ax_err.plot(xs, err, "-", label=label)
         ax_err.plot([a for a, d in zip(xs, detected) if d], [e for e, d in zip(err, detected) if d],
                     "o", color=line.get_color())
@@ -50,23 +57,24 @@ def main(directory, x_name, series_name=None):
                     color=line.get_color())
         ax_time.plot(xs, [value(r["wall_seconds"]) for r in pts], "o-", label=label)
         for r, d in zip(pts, detected):
-            lines.append("| %s | %s | %s | %s | %+.1f%% | %s | %s | %.2f |" % (
-                r[x_name], s if s is not None else "", "yes" if d else "no",
-                r["last_converged_load"], 100 * value(r["relative_error"]),
-                r["total_iterations"], r["dofs"], value(r["wall_seconds"])))
+            lines.append("| " + " | ".join(r[n] for n in others + [x_name]) +
+                         " | %s | %s | %+.1f%% | %s | %s | %.2f |" % (
+                             "yes" if d else "no", r["last_converged_load"],
+                             100 * value(r["relative_error"]), r["total_iterations"],
+                             r["dofs"], value(r["wall_seconds"])))
+    xs_all = [value(r[x_name]) for r in rows]
     for ax in (ax_err, ax_time):
         ax.set_xlabel(x_name)
         ax.grid(alpha=0.3)
-        if all(value(r[x_name]) > 0 for r in rows) and \
-                max(value(r[x_name]) for r in rows) / min(value(r[x_name]) for r in rows) > 20:
+        if min(xs_all) > 0 and max(xs_all) / min(xs_all) > 20:
             ax.set_xscale("log")
     ax_err.axhline(0, color="k", lw=0.8)
     ax_err.set_ylabel("collapse load error against analytic (%)")
-    ax_err.set_title("open: no step failed (collapse not detected)")
+    ax_err.set_title("open: no step failed (collapse not detected)", fontsize=10)
     ax_time.set_ylabel("wall time (s)")
     ax_time.set_yscale("log")
-    if series_name:
-        ax_err.legend()
+    if others:
+        ax_err.legend(fontsize=7)
     fig.tight_layout()
     fig.savefig(os.path.join(directory, "study.png"), dpi=120)
     with open(os.path.join(directory, "study.md"), "w") as f:
@@ -75,6 +83,6 @@ def main(directory, x_name, series_name=None):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) not in (3, 4):
+    if len(sys.argv) != 3:
         sys.exit(__doc__)
     main(*sys.argv[1:])

@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# The paper's studies with their tables and figures, into output/.
+#
+#   scripts/run_studies.sh [case1|case2|case4|all]     (default: all)
+#
+# Times on the 2-core machine: case1 about 40 s, case2 about 2 min,
+# case4 about 3 min.
+set -euo pipefail
+top="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$top"
+thinlayer="$top/build/thinlayer"
+plot="/usr/bin/python3"
+[ -x "$thinlayer" ] || { echo "build first: scripts/setup.sh run" >&2; exit 1; }
+which="${1:-all}"
+
+if [ "$which" = case1 ] || [ "$which" = all ]; then
+  "$thinlayer" prm/case1-table1.prm
+  $plot scripts/plot_case1.py table1 output/case1-table1
+  "$thinlayer" prm/case1-figure3.prm
+  $plot scripts/plot_case1.py figure3 output/case1-figure3
+  for figure in figure4 figure5; do
+    "$thinlayer" prm/case1-$figure.prm
+    $plot scripts/plot_case1.py frictional output/case1-$figure
+  done
+  "$thinlayer" prm/prandtl-strip-footing.prm
+  $plot scripts/plot_scene.py output/prandtl-strip-footing "(2 + pi) c"
+fi
+
+if [ "$which" = case2 ] || [ "$which" = all ]; then
+  for scene in case2-strip-footing case2-strip-footing-better-mesh; do
+    "$thinlayer" prm/$scene.prm
+    $plot scripts/plot_scene.py output/$scene "L C_w"
+  done
+  "$thinlayer" prm/case2-study.prm
+  $plot scripts/plot_study.py output/case2-study aspect_ratio
+fi
+
+if [ "$which" = case4 ] || [ "$which" = all ]; then
+  "$thinlayer" prm/case4-smooth-wall.prm
+  "$thinlayer" prm/case4-rough-wall.prm
+  "$thinlayer" prm/case4-figure12.prm
+  $plot scripts/plot_case4.py output/case4-smooth-wall output/case4-figure12
+  "$thinlayer" prm/case4-study.prm
+  $plot scripts/plot_study.py output/case4-study aspect_ratio
+fi
+echo "studies done: tables (*.md) and figures (*.png) are in output/*/"
