@@ -6,7 +6,6 @@
 
 #include <thinlayer/analysis.h>
 #include <thinlayer/input_error.h>
-#include <thinlayer/kinematics.h>
 #include <thinlayer/serendipity_constraints.h>
 
 #include <algorithm>
@@ -25,6 +24,15 @@ namespace thinlayer
       constraints.condense(condensed);
       return condensed.linfty_norm();
     }
+
+    Kinematics
+    make_kinematics(const Parameters &p)
+    {
+      return p.fourier ? Kinematics::make_fourier(p.harmonics,
+                                                  p.station_angles,
+                                                  p.antisymmetric)
+                       : Kinematics::make_plane_strain();
+    }
   } // namespace
 
 
@@ -33,15 +41,19 @@ namespace thinlayer
                           const Triangulation<dim> &tria)
     : parameters(parameters)
     , tria(tria)
-    , fe(FE_Q<dim>(2), dim)
+    , kinematics(make_kinematics(parameters))
+    , fe(FE_Q<dim>(2), kinematics.n_components())
     , mapping(2)
     , quadrature(parameters.gauss_points_per_direction)
     , dof_handler(tria)
-    , boundary_data(parameters)
+    , boundary_data(parameters, kinematics)
+    , n_parts(kinematics.is_fourier() ? 2 : 1)
     , time_step(std::numeric_limits<double>::infinity())
     , load_factor(0)
   {
-    static_assert(dim == 2, "Only plane strain is implemented so far.");
+    static_assert(dim == 2,
+                  "The kinematics so far are plane strain and Fourier, both "
+                  "on 2D meshes.");
   }
 
 
@@ -57,82 +69,185 @@ namespace thinlayer
                        "motion");
 
     dof_handler.distribute_dofs(fe);
+    dof_component.resize(dof_handler.n_dofs());
+    for (unsigned int c = 0; c < kinematics.n_components(); ++c)
+      {
+        std::vector<bool> mask(kinematics.n_components(), false);
+        mask[c] = true;
+        for (const auto dof :
+             DoFTools::extract_dofs(dof_handler, ComponentMask(mask)))
+          dof_component[dof] = c;
+      }
 
     element_constraints.clear();
     if (parameters.serendipity)
       make_serendipity_constraints(dof_handler, element_constraints);
     element_constraints.close();
 
-    constraints.clear();
-    constraints.merge(element_constraints);
-    boundary_data.make_zero_constraints(dof_handler, constraints);
-    constraints.close();
-
+    modes.clear();
     DynamicSparsityPattern dsp(dof_handler.n_dofs());
-    DoFTools::make_sparsity_pattern(dof_handler,
-                                    dsp,
-                                    constraints,
-                                    /*keep_constrained_dofs=*/true);
-    sparsity.copy_from(dsp);
-    stiffness.reinit(sparsity);
-    condensed_stiffness.reinit(sparsity);
-
-    for (const auto &[id, m] : parameters.materials)
+    for (unsigned int m = 0; m < kinematics.n_modes(); ++m)
       {
-        laws[id]  = create_material_law(m);
+        modes.push_back(std::make_unique<Mode>());
+        make_mode_constraints(m);
+        DoFTools::make_sparsity_pattern(dof_handler,
+                                        dsp,
+                                        modes[m]->constraints,
+                                        /*keep_constrained_dofs=*/true);
+      }
+    sparsity.copy_from(dsp);
+
+    for (const auto &[id, material] : parameters.materials)
+      {
+        laws[id]  = create_material_law(material);
         time_step = std::min(time_step, laws[id]->viscoplastic_time_step());
       }
 
     build_point_cache();
 
-    // Prescribed displacements at unit load factor; the centre nodes of
-    // cells touching them follow through the serendipity lines.
-    unit_prescribed_displacement.reinit(dof_handler.n_dofs());
-    for (const auto &[dof, value] :
-         boundary_data.prescribed_values(mapping, dof_handler))
-      unit_prescribed_displacement[dof] = value;
-    element_constraints.distribute(unit_prescribed_displacement);
+    const unsigned int n = dof_handler.n_dofs();
+    for (unsigned int m = 0; m < kinematics.n_modes(); ++m)
+      {
+        Mode &mode = *modes[m];
+        mode.stiffness.reinit(sparsity);
+        mode.condensed_stiffness.reinit(sparsity);
 
-    unit_load.reinit(dof_handler.n_dofs());
-    boundary_data.assemble_load_vector(mapping, dof_handler, unit_load);
+        // Prescribed displacements at unit load factor; the nodes tied to
+        // them (centre nodes, the axis) follow through the structural lines.
+        mode.unit_prescribed_displacement.reinit(n);
+        for (const auto &[dof, value] :
+             boundary_data.prescribed_values(mapping, dof_handler, m))
+          mode.unit_prescribed_displacement[dof] = value;
+        mode.structural_constraints.distribute(
+          mode.unit_prescribed_displacement);
+
+        mode.unit_load.reinit(n);
+        boundary_data.assemble_load_vector(mapping,
+                                           dof_handler,
+                                           m,
+                                           mode.unit_load);
+        for (Vector<double> *v : {&mode.unit_rhs,
+                                  &mode.solution,
+                                  &mode.step_increment,
+                                  &mode.internal_forces,
+                                  &mode.body_loads,
+                                  &mode.body_load_change,
+                                  &mode.previous_increment})
+          v->reinit(n);
+      }
 
     assemble_stiffness();
 
-    unit_rhs.reinit(dof_handler.n_dofs());
-    stiffness.vmult(unit_rhs, unit_prescribed_displacement);
-    unit_rhs.sadd(-1, 1, unit_load);
-
-    try
+    for (unsigned int m = 0; m < kinematics.n_modes(); ++m)
       {
-        factorisation.factorize(condensed_stiffness);
-      }
-    catch (const ExceptionBase &)
-      {
-        throw InputError(parameters.parameter_file,
-                         "Boundary <id>/Constrained components",
-                         "the stiffness matrix is singular: constrain enough "
-                         "displacement components to prevent rigid-body "
-                         "motion");
+        Mode &mode = *modes[m];
+        mode.stiffness.vmult(mode.unit_rhs, mode.unit_prescribed_displacement);
+        mode.unit_rhs.sadd(-1, 1, mode.unit_load);
+        try
+          {
+            mode.factorisation.factorize(mode.condensed_stiffness);
+          }
+        catch (const ExceptionBase &)
+          {
+            throw InputError(parameters.parameter_file,
+                             "Boundary <id>/Constrained components",
+                             "the stiffness matrix" +
+                               (kinematics.is_fourier()
+                                  ? " of harmonic " +
+                                      std::to_string(kinematics.harmonic(m))
+                                  : std::string()) +
+                               " is singular: constrain enough displacement "
+                               "components to prevent rigid-body motion");
+          }
       }
 
-    const auto component_mask = [](const unsigned int c) {
-      std::vector<bool> mask(dim, false);
-      mask[c] = true;
-      return ComponentMask(mask);
-    };
+    std::vector<bool> mask(kinematics.n_components(), false);
+    mask[parameters.load_component] = true;
     reaction_dofs =
       DoFTools::extract_boundary_dofs(dof_handler,
-                                      component_mask(parameters.load_component),
+                                      ComponentMask(mask),
                                       {parameters.load_boundary_id});
-    monitored_dofs =
-      DoFTools::extract_boundary_dofs(dof_handler,
-                                      component_mask(
-                                        parameters.displacement_component),
-                                      {parameters.displacement_boundary_id});
+  }
 
-    solution.reinit(dof_handler.n_dofs());
-    step_increment.reinit(dof_handler.n_dofs());
-    internal_forces.reinit(dof_handler.n_dofs());
+
+  template <int dim>
+  void
+  Analysis<dim>::make_mode_constraints(const unsigned int m)
+  {
+    AffineConstraints<double> &structural = modes[m]->structural_constraints;
+    structural.clear();
+    structural.merge(element_constraints);
+
+    // Components that play no part in this mode (u_theta for n = 0).
+    for (unsigned int c = 0; c < kinematics.n_components(); ++c)
+      if (kinematics.is_dead_component(m, c))
+        {
+          std::vector<bool> mask(kinematics.n_components(), false);
+          mask[c] = true;
+          for (const auto dof :
+               DoFTools::extract_dofs(dof_handler, ComponentMask(mask)))
+            if (!structural.is_constrained(dof))
+              structural.add_line(dof);
+        }
+
+    // On the axis r = 0 the field must be single-valued: harmonic 0 has no
+    // radial (symmetric) or circumferential (antisymmetric) movement there,
+    // harmonic 1 moves sideways rigidly (u_z = 0, u_theta = -+ u_r) and
+    // higher harmonics not at all.
+    if (kinematics.is_fourier() && parameters.axis_boundary_id >= 0)
+      {
+        const unsigned int n    = kinematics.harmonic(m);
+        const double       sign = kinematics.is_antisymmetric() ? 1. : -1.;
+        std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
+        const auto zero = [&](const types::global_dof_index dof) {
+          if (!structural.is_constrained(dof))
+            structural.add_line(dof);
+        };
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          for (const auto f : cell->face_indices())
+            if (cell->face(f)->at_boundary() &&
+                cell->face(f)->boundary_id() ==
+                  static_cast<types::boundary_id>(parameters.axis_boundary_id))
+              {
+                cell->face(f)->get_dof_indices(face_dofs);
+                // node[b][c]: the DoF of component c at the face's node b.
+                std::map<unsigned int, std::array<types::global_dof_index, 3>>
+                  node;
+                for (unsigned int k = 0; k < face_dofs.size(); ++k)
+                  {
+                    const auto c_b = fe.face_system_to_component_index(k);
+                    node[c_b.second][c_b.first] = face_dofs[k];
+                  }
+                for (const auto &[b, d] : node)
+                  {
+                    const auto r = d[0], z = d[1], theta = d[2];
+                    if (n == 0)
+                      zero(kinematics.is_antisymmetric() ? theta : r);
+                    else if (n == 1)
+                      {
+                        zero(z);
+                        if (!structural.is_constrained(theta))
+                          {
+                            structural.add_line(theta);
+                            structural.add_entry(theta, r, sign);
+                          }
+                      }
+                    else
+                      {
+                        zero(r);
+                        zero(z);
+                        zero(theta);
+                      }
+                  }
+              }
+      }
+    structural.close();
+
+    AffineConstraints<double> &constraints = modes[m]->constraints;
+    constraints.clear();
+    constraints.merge(structural);
+    boundary_data.make_zero_constraints(dof_handler, constraints);
+    constraints.close();
   }
 
 
@@ -143,11 +258,12 @@ namespace thinlayer
     const unsigned int n_cells = tria.n_active_cells();
     const unsigned int n_q     = quadrature.size();
     const unsigned int n       = fe.n_dofs_per_cell();
+    const unsigned int n_modes = kinematics.n_modes();
 
     cell_law.resize(n_cells);
     cell_dofs.resize(n_cells * n);
-    point_JxW.resize(n_cells * n_q);
-    shape_strains.resize(n_cells * n_q * n);
+    point_weight.resize(n_cells * n_q);
+    shape_strains.resize(n_cells * n_q * n_modes * n * n_parts);
 
     history_storage.initialize(tria.begin_active(), tria.end(), n_q);
     history.resize(n_cells * n_q);
@@ -155,8 +271,8 @@ namespace thinlayer
     FEValues<dim>                        fe_values(mapping,
                             fe,
                             quadrature,
-                            update_gradients | update_JxW_values);
-    const FEValuesExtractors::Vector     displacement(0);
+                            update_values | update_gradients |
+                              update_quadrature_points | update_JxW_values);
     std::vector<types::global_dof_index> dofs(n);
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
@@ -169,14 +285,46 @@ namespace thinlayer
         const auto points = history_storage.get_data(cell);
         for (const unsigned int q : fe_values.quadrature_point_indices())
           {
-            point_JxW[c * n_q + q] = fe_values.JxW(q);
-            for (const unsigned int i : fe_values.dof_indices())
-              shape_strains[(c * n_q + q) * n + i] =
-                plane_strain(fe_values[displacement].symmetric_gradient(i, q));
-            history[c * n_q + q] = points[q].get();
-            history[c * n_q + q]->stations.assign(1, PointState());
+            const unsigned int p = c * n_q + q;
+            const Point<dim>  &x = fe_values.quadrature_point(q);
+            point_weight[p]      = kinematics.area_factor(x) * fe_values.JxW(q);
+            for (unsigned int m = 0; m < n_modes; ++m)
+              for (const unsigned int i : fe_values.dof_indices())
+                {
+                  const unsigned int component =
+                    fe.system_to_component_index(i).first;
+                  SymmetricTensor<2, 3> part1, part2;
+                  kinematics.shape_strain(
+                    m,
+                    component,
+                    fe_values.shape_value_component(i, q, component),
+                    fe_values.shape_grad_component(i, q, component),
+                    x[0],
+                    part1,
+                    part2);
+                  shape_strains[((p * n_modes + m) * n + i) * n_parts] = part1;
+                  if (n_parts == 2)
+                    shape_strains[((p * n_modes + m) * n + i) * n_parts + 1] =
+                      part2;
+                }
+            history[p] = points[q].get();
+            history[p]->stations.assign(kinematics.n_stations(), PointState());
           }
       }
+  }
+
+
+  template <int dim>
+  const SymmetricTensor<2, 3> &
+  Analysis<dim>::B(const unsigned int point,
+                   const unsigned int m,
+                   const unsigned int i,
+                   const unsigned int part) const
+  {
+    const unsigned int n = fe.n_dofs_per_cell();
+    return shape_strains[((point * kinematics.n_modes() + m) * n + i) *
+                           n_parts +
+                         part];
   }
 
 
@@ -190,91 +338,136 @@ namespace thinlayer
     std::vector<types::global_dof_index> dofs(n);
     std::vector<SymmetricTensor<2, 3>>   stress(n);
 
-    for (unsigned int c = 0; c < tria.n_active_cells(); ++c)
-      {
-        cell_matrix                    = 0;
-        const SymmetricTensor<4, 3> &D = cell_law[c]->elasticity();
-        for (unsigned int q = 0; q < n_q; ++q)
-          {
-            const SymmetricTensor<2, 3> *B = &shape_strains[(c * n_q + q) * n];
-            for (unsigned int i = 0; i < n; ++i)
-              stress[i] = D * B[i];
-            const double JxW = point_JxW[c * n_q + q];
-            for (unsigned int i = 0; i < n; ++i)
-              for (unsigned int j = 0; j < n; ++j)
-                cell_matrix(i, j) += (B[i] * stress[j]) * JxW;
-          }
-        std::copy(cell_dofs.begin() + c * n,
-                  cell_dofs.begin() + (c + 1) * n,
-                  dofs.begin());
-        stiffness.add(dofs, cell_matrix);
-        constraints.distribute_local_to_global(cell_matrix,
-                                               dofs,
-                                               condensed_stiffness);
-      }
+    for (unsigned int m = 0; m < kinematics.n_modes(); ++m)
+      for (unsigned int c = 0; c < tria.n_active_cells(); ++c)
+        {
+          cell_matrix                    = 0;
+          const SymmetricTensor<4, 3> &D = cell_law[c]->elasticity();
+          for (unsigned int q = 0; q < n_q; ++q)
+            {
+              const unsigned int p = c * n_q + q;
+              // K_m = int (c1 B1^T D B1 + c2 B2^T D B2) dA_r: the exact
+              // integral over the circle, with which the harmonics
+              // decouple.
+              for (unsigned int part = 0; part < n_parts; ++part)
+                {
+                  const double weight =
+                    (part == 0 ? kinematics.c1(m) : kinematics.c2(m)) *
+                    point_weight[p];
+                  if (weight == 0)
+                    continue;
+                  for (unsigned int i = 0; i < n; ++i)
+                    stress[i] = D * B(p, m, i, part);
+                  for (unsigned int i = 0; i < n; ++i)
+                    for (unsigned int j = 0; j < n; ++j)
+                      cell_matrix(i, j) +=
+                        (B(p, m, i, part) * stress[j]) * weight;
+                }
+            }
+          std::copy(cell_dofs.begin() + c * n,
+                    cell_dofs.begin() + (c + 1) * n,
+                    dofs.begin());
+          modes[m]->stiffness.add(dofs, cell_matrix);
+          modes[m]->constraints.distribute_local_to_global(
+            cell_matrix, dofs, modes[m]->condensed_stiffness);
+        }
   }
 
 
   template <int dim>
   void
-  Analysis<dim>::solve_increment(const double          dlambda,
-                                 const Vector<double> &body_loads,
-                                 Vector<double>       &increment) const
+  Analysis<dim>::solve_increment(const unsigned int m, const double dlambda)
   {
-    increment = body_loads;
-    increment.add(dlambda, unit_rhs);
-    constraints.condense(increment);
-    factorisation.solve(increment);
-    constraints.distribute(increment);
-    increment.add(dlambda, unit_prescribed_displacement);
+    Mode           &mode      = *modes[m];
+    Vector<double> &increment = mode.step_increment;
+    increment                 = mode.body_loads;
+    increment.add(dlambda, mode.unit_rhs);
+    mode.constraints.condense(increment);
+    mode.factorisation.solve(increment);
+    mode.constraints.distribute(increment);
+    increment.add(dlambda, mode.unit_prescribed_displacement);
   }
 
 
   template <int dim>
   unsigned int
-  Analysis<dim>::update_stresses(const Vector<double> &increment,
-                                 Vector<double>       &body_load_change)
+  Analysis<dim>::update_stresses()
   {
-    const unsigned int  n          = fe.n_dofs_per_cell();
-    const unsigned int  n_q        = quadrature.size();
-    unsigned int        n_yielding = 0;
-    std::vector<double> du(n);
+    const unsigned int                 n          = fe.n_dofs_per_cell();
+    const unsigned int                 n_q        = quadrature.size();
+    const unsigned int                 n_modes    = kinematics.n_modes();
+    const unsigned int                 n_stations = kinematics.n_stations();
+    unsigned int                       n_yielding = 0;
+    std::vector<double>                du(n_modes * n);
+    std::vector<SymmetricTensor<2, 3>> mode_strain(n_modes * n_parts);
 
     for (unsigned int c = 0; c < tria.n_active_cells(); ++c)
       {
         const MaterialLaw             &law  = *cell_law[c];
         const SymmetricTensor<4, 3>   &D    = law.elasticity();
         const types::global_dof_index *dofs = &cell_dofs[c * n];
-        for (unsigned int i = 0; i < n; ++i)
-          du[i] = increment[dofs[i]];
+        for (unsigned int m = 0; m < n_modes; ++m)
+          for (unsigned int i = 0; i < n; ++i)
+            du[m * n + i] = modes[m]->step_increment[dofs[i]];
 
         for (unsigned int q = 0; q < n_q; ++q)
           {
-            const SymmetricTensor<2, 3> *B = &shape_strains[(c * n_q + q) * n];
-            PointState &state              = history[c * n_q + q]->stations[0];
+            const unsigned int p = c * n_q + q;
+            // The strain parts of each mode at this point.
+            for (unsigned int m = 0; m < n_modes; ++m)
+              for (unsigned int part = 0; part < n_parts; ++part)
+                {
+                  SymmetricTensor<2, 3> &e = mode_strain[m * n_parts + part];
+                  e                        = 0;
+                  for (unsigned int i = 0; i < n; ++i)
+                    e += du[m * n + i] * B(p, m, i, part);
+                }
 
-            SymmetricTensor<2, 3> strain;
-            for (unsigned int i = 0; i < n; ++i)
-              strain += du[i] * B[i];
-            state.stress =
-              state.converged_stress + D * (strain - state.step_plastic_strain);
+            for (unsigned int s = 0; s < n_stations; ++s)
+              {
+                PointState           &state = history[p]->stations[s];
+                SymmetricTensor<2, 3> strain;
+                for (unsigned int m = 0; m < n_modes; ++m)
+                  {
+                    strain += kinematics.T1(m, s) * mode_strain[m * n_parts];
+                    if (n_parts == 2)
+                      strain +=
+                        kinematics.T2(m, s) * mode_strain[m * n_parts + 1];
+                  }
+                state.stress = state.converged_stress +
+                               D * (strain - state.step_plastic_strain);
 
-            state.yielding = false;
-            if (!law.can_yield())
-              continue;
-            const double F = law.yield_function(state.stress);
-            if (F <= 0)
-              continue;
+                state.yielding = false;
+                if (!law.can_yield())
+                  continue;
+                const double F = law.yield_function(state.stress);
+                if (F <= 0)
+                  continue;
 
-            state.yielding = true;
-            ++n_yielding;
-            const SymmetricTensor<2, 3> viscoplastic_strain =
-              (time_step * F) * law.flow_direction(state.stress);
-            state.step_plastic_strain += viscoplastic_strain;
-            const SymmetricTensor<2, 3> stress_change =
-              (D * viscoplastic_strain) * point_JxW[c * n_q + q];
-            for (unsigned int i = 0; i < n; ++i)
-              body_load_change[dofs[i]] += B[i] * stress_change;
+                state.yielding = true;
+                ++n_yielding;
+                const SymmetricTensor<2, 3> viscoplastic_strain =
+                  (time_step * F) * law.flow_direction(state.stress);
+                state.step_plastic_strain += viscoplastic_strain;
+
+                // Project D (that strain) back onto every mode.
+                const SymmetricTensor<2, 3> stress_change =
+                  (D * viscoplastic_strain) *
+                  (kinematics.station_weight(s) * point_weight[p]);
+                for (unsigned int m = 0; m < n_modes; ++m)
+                  {
+                    Vector<double> &b  = modes[m]->body_load_change;
+                    const double    t1 = kinematics.T1(m, s);
+                    const double    t2 = kinematics.T2(m, s);
+                    for (unsigned int i = 0; i < n; ++i)
+                      {
+                        double value = t1 * (B(p, m, i, 0) * stress_change);
+                        if (n_parts == 2)
+                          value += t2 * (B(p, m, i, 1) * stress_change);
+                        b[dofs[i]] += value;
+                      }
+                  }
+              }
           }
       }
     return n_yielding;
@@ -287,15 +480,27 @@ namespace thinlayer
   {
     const unsigned int n   = fe.n_dofs_per_cell();
     const unsigned int n_q = quadrature.size();
-    internal_forces        = 0;
+    for (auto &mode : modes)
+      mode->internal_forces = 0;
     for (unsigned int c = 0; c < tria.n_active_cells(); ++c)
       for (unsigned int q = 0; q < n_q; ++q)
         {
-          const SymmetricTensor<2, 3> *B = &shape_strains[(c * n_q + q) * n];
-          const SymmetricTensor<2, 3>  sigma_JxW =
-            history[c * n_q + q]->stations[0].stress * point_JxW[c * n_q + q];
-          for (unsigned int i = 0; i < n; ++i)
-            internal_forces[cell_dofs[c * n + i]] += B[i] * sigma_JxW;
+          const unsigned int p = c * n_q + q;
+          for (unsigned int s = 0; s < kinematics.n_stations(); ++s)
+            {
+              const SymmetricTensor<2, 3> sigma =
+                history[p]->stations[s].stress *
+                (kinematics.station_weight(s) * point_weight[p]);
+              for (unsigned int m = 0; m < kinematics.n_modes(); ++m)
+                for (unsigned int i = 0; i < n; ++i)
+                  {
+                    double value =
+                      kinematics.T1(m, s) * (B(p, m, i, 0) * sigma);
+                    if (n_parts == 2)
+                      value += kinematics.T2(m, s) * (B(p, m, i, 1) * sigma);
+                    modes[m]->internal_forces[cell_dofs[c * n + i]] += value;
+                  }
+            }
         }
   }
 
@@ -307,56 +512,80 @@ namespace thinlayer
     const double dlambda = new_load_factor - load_factor;
 
     for (PointHistory *point : history)
-      point->stations[0].step_plastic_strain = 0;
-
-    Vector<double> body_loads(dof_handler.n_dofs());
-    Vector<double> body_load_change(dof_handler.n_dofs());
-    Vector<double> increment(dof_handler.n_dofs());
-    Vector<double> previous_increment(dof_handler.n_dofs());
+      for (PointState &state : point->stations)
+        state.step_plastic_strain = 0;
+    for (auto &mode : modes)
+      {
+        mode->body_loads         = 0;
+        mode->step_increment     = 0;
+        mode->previous_increment = 0;
+      }
 
     StepResult result{0, false, 0, 0};
     while (result.iterations < parameters.max_iterations && !result.converged)
       {
         ++result.iterations;
-        previous_increment.swap(increment);
-        solve_increment(dlambda, body_loads, increment);
+        for (unsigned int m = 0; m < modes.size(); ++m)
+          {
+            modes[m]->previous_increment = modes[m]->step_increment;
+            solve_increment(m, dlambda);
+            modes[m]->body_load_change = 0;
+          }
 
-        body_load_change      = 0;
-        result.plastic_points = update_stresses(increment, body_load_change);
-        body_loads += body_load_change;
+        result.plastic_points = update_stresses();
 
+        // The criteria take the largest entry over all modes.
+        double change = 0, size = 0;
+        for (unsigned int m = 0; m < modes.size(); ++m)
+          {
+            Mode &mode = *modes[m];
+            mode.body_loads += mode.body_load_change;
+            if (parameters.convergence_criterion ==
+                ConvergenceCriterion::body_loads)
+              {
+                change = std::max(change,
+                                  condensed_max(mode.body_load_change,
+                                                mode.constraints));
+                size =
+                  std::max(size,
+                           condensed_max(mode.body_loads, mode.constraints));
+              }
+            else
+              {
+                mode.previous_increment -= mode.step_increment;
+                change =
+                  std::max(change, mode.previous_increment.linfty_norm());
+                size = std::max(size, mode.step_increment.linfty_norm());
+              }
+          }
         if (result.plastic_points == 0)
           result.converged = true; // elastic: nothing will change
         else if (parameters.convergence_criterion ==
-                 ConvergenceCriterion::body_loads)
-          result.converged =
-            condensed_max(body_load_change, constraints) <=
-            parameters.tolerance * condensed_max(body_loads, constraints);
-        else if (result.iterations > 1)
-          {
-            previous_increment -= increment;
-            result.converged = previous_increment.linfty_norm() <=
-                               parameters.tolerance * increment.linfty_norm();
-          }
+                   ConvergenceCriterion::body_loads ||
+                 result.iterations > 1)
+          result.converged = (change <= parameters.tolerance * size);
       }
 
     // The step's state is kept even if it failed, so that the mechanism at
     // failure can be seen.
-    solution += increment;
-    step_increment.swap(increment);
+    for (auto &mode : modes)
+      mode->solution += mode->step_increment;
     load_factor            = new_load_factor;
     result.max_yield_ratio = std::numeric_limits<double>::quiet_NaN();
     for (unsigned int p = 0; p < history.size(); ++p)
       {
-        PointState &state      = history[p]->stations[0];
-        state.converged_stress = state.stress;
-        state.plastic_strain += state.step_plastic_strain;
         const MaterialLaw &law = *cell_law[p / quadrature.size()];
-        if (law.can_yield())
-          result.max_yield_ratio =
-            std::isnan(result.max_yield_ratio)
-              ? law.yield_ratio(state.stress)
-              : std::max(result.max_yield_ratio, law.yield_ratio(state.stress));
+        for (PointState &state : history[p]->stations)
+          {
+            state.converged_stress = state.stress;
+            state.plastic_strain += state.step_plastic_strain;
+            if (law.can_yield())
+              result.max_yield_ratio =
+                std::isnan(result.max_yield_ratio)
+                  ? law.yield_ratio(state.stress)
+                  : std::max(result.max_yield_ratio,
+                             law.yield_ratio(state.stress));
+          }
       }
     update_internal_forces();
     return result;
@@ -370,6 +599,7 @@ namespace thinlayer
     if (parameters.load_measure == LoadMeasure::load_factor)
       return parameters.load_scale * load_factor;
 
+    // The other measures are plane-strain ones (checked when reading).
     if (parameters.load_measure == LoadMeasure::stress_average)
       {
         const auto [i, j]           = parameters.load_stress_component;
@@ -380,16 +610,17 @@ namespace thinlayer
             for (unsigned int q = 0; q < n_q; ++q)
               {
                 const unsigned int p = cell->active_cell_index() * n_q + q;
-                integral += history[p]->stations[0].stress[i][j] * point_JxW[p];
-                area += point_JxW[p];
+                integral +=
+                  history[p]->stations[0].stress[i][j] * point_weight[p];
+                area += point_weight[p];
               }
         return parameters.load_scale * integral / area;
       }
 
     // Reactions: the residual f_int - f_ext at the supported DoFs, after
     // the residuals of eliminated centre nodes are handed to their masters.
-    Vector<double> residual(internal_forces);
-    residual.add(-load_factor, unit_load);
+    Vector<double> residual(modes[0]->internal_forces);
+    residual.add(-load_factor, modes[0]->unit_load);
     element_constraints.condense(residual);
     double sum = 0;
     for (const auto dof : reaction_dofs)
@@ -399,19 +630,51 @@ namespace thinlayer
 
 
   template <int dim>
+  Vector<double>
+  Analysis<dim>::displacement_at(const double theta, const bool increment) const
+  {
+    Vector<double> u(dof_handler.n_dofs());
+    for (unsigned int m = 0; m < modes.size(); ++m)
+      {
+        const Vector<double> &v =
+          increment ? modes[m]->step_increment : modes[m]->solution;
+        const double t1 = kinematics.T1_at(m, theta);
+        const double t2 = kinematics.T2_at(m, theta);
+        for (unsigned int i = 0; i < u.size(); ++i)
+          u[i] += (dof_component[i] < 2 ? t1 : t2) * v[i];
+      }
+    return u;
+  }
+
+
+  template <int dim>
   DisplacementMeasure
   Analysis<dim>::displacement() const
   {
-    const double       s = parameters.displacement_scale;
-    const unsigned int c = parameters.displacement_component;
+    const double         s     = parameters.displacement_scale;
+    const double         theta = parameters.displacement_angle;
+    const Vector<double> u     = displacement_at(theta);
+    // The monitored Cartesian component from the nodal components: for
+    // Fourier x = u_r cos(theta) - u_theta sin(theta), y = u_z.
+    const auto component =
+      [&](const double r_or_x, const double z_or_y, const double u_theta) {
+        if (parameters.displacement_component == 1)
+          return z_or_y;
+        return kinematics.is_fourier()
+                 ? r_or_x * std::cos(theta) - u_theta * std::sin(theta)
+                 : r_or_x;
+      };
+
     if (parameters.displacement_measure == DisplacementMeasureType::point)
       {
         Point<dim> x;
         for (unsigned int d = 0; d < dim; ++d)
           x[d] = parameters.displacement_point[d];
-        Vector<double> value(dim);
-        VectorTools::point_value(mapping, dof_handler, solution, x, value);
-        return {s * value[c], s * value[c], s * value[c]};
+        Vector<double> value(kinematics.n_components());
+        VectorTools::point_value(mapping, dof_handler, u, x, value);
+        const double v =
+          component(value[0], value[1], value.size() > 2 ? value[2] : 0.);
+        return {s * v, s * v, s * v};
       }
 
     const QGauss<dim - 1>       face_quadrature(3);
@@ -419,33 +682,55 @@ namespace thinlayer
                               fe,
                               face_quadrature,
                               update_values | update_JxW_values);
-    std::vector<Vector<double>> values(face_quadrature.size(),
-                                       Vector<double>(dim));
-    double                      integral = 0, length = 0;
+    std::vector<Vector<double>> values(
+      face_quadrature.size(), Vector<double>(kinematics.n_components()));
+    std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
+    double                               integral = 0, length = 0;
+    double min = std::numeric_limits<double>::max();
+    double max = std::numeric_limits<double>::lowest();
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (const auto f : cell->face_indices())
         if (cell->face(f)->at_boundary() &&
             cell->face(f)->boundary_id() == parameters.displacement_boundary_id)
           {
             fe_face.reinit(cell, f);
-            fe_face.get_function_values(solution, values);
+            fe_face.get_function_values(u, values);
             for (const unsigned int q : fe_face.quadrature_point_indices())
               {
-                integral += values[q][c] * fe_face.JxW(q);
+                const Vector<double> &v = values[q];
+                integral += component(v[0], v[1], v.size() > 2 ? v[2] : 0.) *
+                            fe_face.JxW(q);
                 length += fe_face.JxW(q);
               }
+            // Extremes over the face's nodes.
+            cell->face(f)->get_dof_indices(face_dofs);
+            std::map<unsigned int, std::array<double, 3>> node;
+            for (unsigned int k = 0; k < face_dofs.size(); ++k)
+              {
+                const auto c_b = fe.face_system_to_component_index(k);
+                node[c_b.second][c_b.first] = u[face_dofs[k]];
+              }
+            for (const auto &[b, v] : node)
+              {
+                const double value =
+                  component(v[0],
+                            v[1],
+                            kinematics.n_components() > 2 ? v[2] : 0.);
+                min = std::min(min, value);
+                max = std::max(max, value);
+              }
           }
-
-    double min = std::numeric_limits<double>::max();
-    double max = std::numeric_limits<double>::lowest();
-    for (const auto dof : monitored_dofs)
-      {
-        min = std::min(min, solution[dof]);
-        max = std::max(max, solution[dof]);
-      }
     return {s * integral / length,
             std::min(s * min, s * max),
             std::max(s * min, s * max)};
+  }
+
+
+  template <int dim>
+  const Kinematics &
+  Analysis<dim>::get_kinematics() const
+  {
+    return kinematics;
   }
 
 
@@ -467,26 +752,19 @@ namespace thinlayer
 
   template <int dim>
   const Vector<double> &
-  Analysis<dim>::get_solution() const
+  Analysis<dim>::get_solution(const unsigned int mode) const
   {
-    return solution;
-  }
-
-
-  template <int dim>
-  const Vector<double> &
-  Analysis<dim>::get_step_increment() const
-  {
-    return step_increment;
+    return modes[mode]->solution;
   }
 
 
   template <int dim>
   const PointState &
   Analysis<dim>::point_state(const unsigned int cell,
-                             const unsigned int q) const
+                             const unsigned int q,
+                             const unsigned int station) const
   {
-    return history[cell * quadrature.size() + q]->stations[0];
+    return history[cell * quadrature.size() + q]->stations[station];
   }
 
 
@@ -526,7 +804,10 @@ namespace thinlayer
   types::global_dof_index
   Analysis<dim>::n_equations() const
   {
-    return dof_handler.n_dofs() - constraints.n_constraints();
+    types::global_dof_index n = 0;
+    for (const auto &mode : modes)
+      n += dof_handler.n_dofs() - mode->constraints.n_constraints();
+    return n;
   }
 
 

@@ -10,13 +10,19 @@ namespace thinlayer
   namespace
   {
     /**
+     * Points of the trapezoidal rule over the circle: exact for the
+     * trigonometric polynomials of the harmonics in use (degree < 64).
+     */
+    constexpr unsigned int n_circle_points = 64;
+
+    /**
      * A vector-valued FunctionParser from ';'-separated expressions; a
      * single expression stands for every component.
      */
-    template <int dim>
-    std::unique_ptr<FunctionParser<dim>>
+    std::unique_ptr<FunctionParser<3>>
     make_function(const std::string                   &expressions,
                   const unsigned int                   n_components,
+                  const bool                           fourier,
                   const std::map<std::string, double> &geometry_parameters)
     {
       auto parts = Utilities::split_string_list(expressions, ';');
@@ -24,8 +30,8 @@ namespace thinlayer
         parts.assign(n_components, parts[0]);
       auto constants  = geometry_parameters;
       constants["pi"] = numbers::PI;
-      auto f          = std::make_unique<FunctionParser<dim>>(n_components);
-      f->initialize((dim == 2) ? "x,y" : "x,y,z", parts, constants);
+      auto f          = std::make_unique<FunctionParser<3>>(n_components);
+      f->initialize(fourier ? "r,z,theta" : "x,y,unused_z", parts, constants);
       return f;
     }
 
@@ -37,81 +43,162 @@ namespace thinlayer
           return false;
       return true;
     }
+
+    /**
+     * The amplitudes of a mode of the prescribed displacement, as a
+     * function on the mesh (for interpolate_boundary_values).
+     */
+    class ModeAmplitude : public Function<2>
+    {
+    public:
+      ModeAmplitude(const std::function<Tensor<1, 3>(const Point<2> &)> &f)
+        : Function<2>(3)
+        , f(f)
+      {}
+
+      double
+      value(const Point<2> &x, const unsigned int c) const override
+      {
+        return f(x)[c];
+      }
+
+    private:
+      std::function<Tensor<1, 3>(const Point<2> &)> f;
+    };
   } // namespace
 
 
-  template <int dim>
-  BoundaryData<dim>::BoundaryData(const Parameters &p)
+  BoundaryData::BoundaryData(const Parameters &p, const Kinematics &kinematics)
+    : kinematics(kinematics)
   {
+    const unsigned int n = kinematics.n_components();
     for (const auto &[id, b] : p.boundaries)
       {
         Condition        &c = conditions[id];
         std::vector<bool> mask(b.constrained_components);
-        mask.resize(dim, false);
+        mask.resize(n, false);
         c.constrained = ComponentMask(mask);
         c.displacement =
-          make_function<dim>(b.displacement, dim, p.geometry_parameters);
-        c.traction = make_function<dim>(b.traction, dim, p.geometry_parameters);
-        c.pressure = make_function<dim>(b.pressure, 1, p.geometry_parameters);
-        c.loaded   = !(is_zero(b.traction) && is_zero(b.pressure));
+          make_function(b.displacement, n, p.fourier, p.geometry_parameters);
+        c.traction =
+          make_function(b.traction, n, p.fourier, p.geometry_parameters);
+        c.pressure =
+          make_function(b.pressure, 1, p.fourier, p.geometry_parameters);
+        c.loaded = !(is_zero(b.traction) && is_zero(b.pressure));
       }
   }
 
 
-  template <int dim>
+  Tensor<1, 3>
+  BoundaryData::evaluate(const FunctionParser<3> &f,
+                         const Point<2>          &x,
+                         const double             theta) const
+  {
+    Vector<double> v(f.n_components);
+    f.vector_value(Point<3>(x[0], x[1], theta), v);
+    Tensor<1, 3> result;
+    if (!kinematics.is_fourier())
+      {
+        for (unsigned int c = 0; c < v.size(); ++c)
+          result[c] = v[c];
+        return result;
+      }
+    // Cartesian (x, y, z) to cylindrical (r, z, theta).
+    const double cos_t = std::cos(theta), sin_t = std::sin(theta);
+    result[0] = v[0] * cos_t + v[1] * sin_t;
+    result[1] = v[2];
+    result[2] = -v[0] * sin_t + v[1] * cos_t;
+    return result;
+  }
+
+
   void
-  BoundaryData<dim>::make_zero_constraints(
-    const DoFHandler<dim>     &dof_handler,
+  BoundaryData::make_zero_constraints(
+    const DoFHandler<2>       &dof_handler,
     AffineConstraints<double> &constraints) const
   {
+    const unsigned int n = kinematics.n_components();
     for (const auto &[id, c] : conditions)
-      if (c.constrained.n_selected_components(dim) > 0)
+      if (c.constrained.n_selected_components(n) > 0)
         VectorTools::interpolate_boundary_values(dof_handler,
                                                  id,
-                                                 Functions::ZeroFunction<dim>(
-                                                   dim),
+                                                 Functions::ZeroFunction<2>(n),
                                                  constraints,
                                                  c.constrained);
   }
 
 
-  template <int dim>
   std::map<types::global_dof_index, double>
-  BoundaryData<dim>::prescribed_values(const Mapping<dim>    &mapping,
-                                       const DoFHandler<dim> &dof_handler) const
+  BoundaryData::prescribed_values(const Mapping<2>    &mapping,
+                                  const DoFHandler<2> &dof_handler,
+                                  const unsigned int   m) const
   {
+    const unsigned int n = kinematics.n_components();
     // Later ids overwrite earlier ones at shared nodes: going from the
     // highest id down makes the lowest id win, the documented rule.
     std::map<types::global_dof_index, double> values;
     for (auto c = conditions.rbegin(); c != conditions.rend(); ++c)
-      if (c->second.constrained.n_selected_components(dim) > 0)
+      {
+        if (c->second.constrained.n_selected_components(n) == 0)
+          continue;
+        const FunctionParser<3> &u = *c->second.displacement;
+        const ModeAmplitude      amplitude([&](const Point<2> &x) {
+          if (!kinematics.is_fourier())
+            return evaluate(u, x, 0);
+          Tensor<1, 3> a;
+          const double d = 2 * numbers::PI / n_circle_points;
+          for (unsigned int j = 0; j < n_circle_points; ++j)
+            {
+              const double       theta = j * d;
+              const Tensor<1, 3> g     = evaluate(u, x, theta);
+              a[0] += g[0] * kinematics.T1_at(m, theta) * d;
+              a[1] += g[1] * kinematics.T1_at(m, theta) * d;
+              a[2] += g[2] * kinematics.T2_at(m, theta) * d;
+            }
+          const double c1 = kinematics.c1(m), c2 = kinematics.c2(m);
+          a[0] = (c1 > 0) ? a[0] / c1 : 0.;
+          a[1] = (c1 > 0) ? a[1] / c1 : 0.;
+          a[2] = (c2 > 0) ? a[2] / c2 : 0.;
+          return a;
+        });
         VectorTools::interpolate_boundary_values(mapping,
                                                  dof_handler,
                                                  c->first,
-                                                 *c->second.displacement,
+                                                 amplitude,
                                                  values,
                                                  c->second.constrained);
+      }
     return values;
   }
 
 
-  template <int dim>
   void
-  BoundaryData<dim>::assemble_load_vector(const Mapping<dim>    &mapping,
-                                          const DoFHandler<dim> &dof_handler,
-                                          Vector<double>        &load) const
+  BoundaryData::assemble_load_vector(const Mapping<2>    &mapping,
+                                     const DoFHandler<2> &dof_handler,
+                                     const unsigned int   m,
+                                     Vector<double>      &load) const
   {
     load                                    = 0;
-    const FiniteElement<dim>            &fe = dof_handler.get_fe();
-    const QGauss<dim - 1>                quadrature(fe.degree + 2);
-    FEFaceValues<dim>                    fe_face(mapping,
-                              fe,
-                              quadrature,
-                              update_values | update_normal_vectors |
-                                update_quadrature_points | update_JxW_values);
+    const FiniteElement<2>              &fe = dof_handler.get_fe();
+    const QGauss<1>                      quadrature(fe.degree + 2);
+    FEFaceValues<2>                      fe_face(mapping,
+                            fe,
+                            quadrature,
+                            update_values | update_normal_vectors |
+                              update_quadrature_points | update_JxW_values);
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     Vector<double>                       cell_load(fe.n_dofs_per_cell());
-    Vector<double>                       traction(dim);
+
+    // Angles and trigonometric weights of the circle integral (a single
+    // angle, weight 1, in plane strain).
+    std::vector<double> thetas = {0}, weights = {1};
+    if (kinematics.is_fourier())
+      {
+        thetas.resize(n_circle_points);
+        weights.assign(n_circle_points, 2 * numbers::PI / n_circle_points);
+        for (unsigned int j = 0; j < n_circle_points; ++j)
+          thetas[j] = j * 2 * numbers::PI / n_circle_points;
+      }
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (const auto f : cell->face_indices())
@@ -125,16 +212,25 @@ namespace thinlayer
           cell_load = 0;
           for (const unsigned int q : fe_face.quadrature_point_indices())
             {
-              const Point<dim> &x = fe_face.quadrature_point(q);
-              c->second.traction->vector_value(x, traction);
-              const double pressure = c->second.pressure->value(x);
+              const Point<2> &x  = fe_face.quadrature_point(q);
+              const double    dA = kinematics.area_factor(x) * fe_face.JxW(q);
+              // The mode's share of the traction, component by component.
+              Tensor<1, 3> t;
+              for (unsigned int j = 0; j < thetas.size(); ++j)
+                {
+                  Tensor<1, 3> g = evaluate(*c->second.traction, x, thetas[j]);
+                  const double p =
+                    c->second.pressure->value(Point<3>(x[0], x[1], thetas[j]));
+                  for (unsigned int d = 0; d < 2; ++d)
+                    g[d] -= p * fe_face.normal_vector(q)[d];
+                  t[0] += g[0] * kinematics.T1_at(m, thetas[j]) * weights[j];
+                  t[1] += g[1] * kinematics.T1_at(m, thetas[j]) * weights[j];
+                  t[2] += g[2] * kinematics.T2_at(m, thetas[j]) * weights[j];
+                }
               for (const unsigned int i : fe_face.dof_indices())
                 {
                   const unsigned int k = fe.system_to_component_index(i).first;
-                  const double       t =
-                    traction[k] - pressure * fe_face.normal_vector(q)[k];
-                  cell_load[i] +=
-                    t * fe_face.shape_value(i, q) * fe_face.JxW(q);
+                  cell_load[i] += t[k] * fe_face.shape_value(i, q) * dA;
                 }
             }
           cell->get_dof_indices(dofs);
@@ -144,16 +240,12 @@ namespace thinlayer
   }
 
 
-  template <int dim>
   bool
-  BoundaryData<dim>::has_constraints() const
+  BoundaryData::has_constraints() const
   {
     for (const auto &[id, c] : conditions)
-      if (c.constrained.n_selected_components(dim) > 0)
+      if (c.constrained.n_selected_components(kinematics.n_components()) > 0)
         return true;
     return false;
   }
-
-
-  template class BoundaryData<2>;
 } // namespace thinlayer

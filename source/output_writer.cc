@@ -137,58 +137,94 @@ namespace thinlayer
   {
     const auto        &dof_handler = analysis.get_dof_handler();
     const auto        &tria        = dof_handler.get_triangulation();
+    const Kinematics  &kinematics  = analysis.get_kinematics();
     const unsigned int n_q         = analysis.n_quadrature_points();
+    const unsigned int n_cells     = tria.n_active_cells();
+    const bool         fourier     = kinematics.is_fourier();
 
     // Cell averages of the point stresses: the stresses live at Gauss
     // points with their plastic history, not at nodes. The yield ratio is
     // the cell's maximum, to show where drift into illegal stress space is.
-    const char *names[] = {"stress_xx", "stress_yy", "stress_zz", "stress_xy"};
+    // Stress components at the first station; the plastic fields at every
+    // station (suffixed with its angle for Fourier kinematics).
+    const std::vector<std::string> names =
+      fourier ? std::vector<std::string>{"stress_rr",
+                                         "stress_zz",
+                                         "stress_tt",
+                                         "stress_rz"}
+              : std::vector<std::string>{"stress_xx",
+                                         "stress_yy",
+                                         "stress_zz",
+                                         "stress_xy"};
     const unsigned int components[][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}};
-    const unsigned int n_cells         = tria.n_active_cells();
     std::vector<Vector<double>> stress(4, Vector<double>(n_cells));
-    Vector<double>              equivalent(n_cells), plastic_strain(n_cells),
-      yield_ratio(n_cells), material(n_cells);
+    const unsigned int          n_s = kinematics.n_stations();
+    std::vector<Vector<double>> equivalent(n_s, Vector<double>(n_cells)),
+      plastic_strain(n_s, Vector<double>(n_cells)),
+      yield_ratio(n_s, Vector<double>(n_cells));
+    Vector<double> material(n_cells);
     for (const auto &cell : tria.active_cell_iterators())
       {
         const unsigned int c   = cell->active_cell_index();
         const MaterialLaw &law = analysis.material_law(c);
-        yield_ratio[c]         = law.can_yield()
-                                   ? std::numeric_limits<double>::lowest()
-                                   : std::numeric_limits<double>::quiet_NaN();
-        for (unsigned int q = 0; q < n_q; ++q)
+        for (unsigned int s = 0; s < n_s; ++s)
           {
-            const PointState &state = analysis.point_state(c, q);
-            for (unsigned int k = 0; k < 4; ++k)
-              stress[k][c] +=
-                state.stress[components[k][0]][components[k][1]] / n_q;
-            equivalent[c] += equivalent_stress(state.stress) / n_q;
-            // Equivalent plastic strain sqrt(2/3 e:e).
-            plastic_strain[c] +=
-              std::sqrt(2. / 3. *
-                        (state.plastic_strain * state.plastic_strain)) /
-              n_q;
-            if (law.can_yield())
-              yield_ratio[c] =
-                std::max(yield_ratio[c], law.yield_ratio(state.stress));
+            yield_ratio[s][c] = law.can_yield()
+                                  ? std::numeric_limits<double>::lowest()
+                                  : std::numeric_limits<double>::quiet_NaN();
+            for (unsigned int q = 0; q < n_q; ++q)
+              {
+                const PointState &state = analysis.point_state(c, q, s);
+                if (s == 0)
+                  for (unsigned int k = 0; k < 4; ++k)
+                    stress[k][c] +=
+                      state.stress[components[k][0]][components[k][1]] / n_q;
+                equivalent[s][c] += equivalent_stress(state.stress) / n_q;
+                // Equivalent plastic strain sqrt(2/3 e:e).
+                plastic_strain[s][c] +=
+                  std::sqrt(2. / 3. *
+                            (state.plastic_strain * state.plastic_strain)) /
+                  n_q;
+                if (law.can_yield())
+                  yield_ratio[s][c] =
+                    std::max(yield_ratio[s][c], law.yield_ratio(state.stress));
+              }
           }
         material[c] = cell->material_id();
       }
 
     DataOut<dim> data_out;
     data_out.attach_dof_handler(dof_handler);
-    const std::vector<std::string> displacement_names(dim, "displacement");
-    const std::vector<DataComponentInterpretation::DataComponentInterpretation>
+    // In-plane displacement as a vector; u_theta (Fourier) as a scalar. At
+    // the monitored angle, which for Fourier is where the field is cut.
+    const Vector<double> u =
+      analysis.displacement_at(parameters.displacement_angle);
+    std::vector<std::string> displacement_names(dim, "displacement");
+    std::vector<DataComponentInterpretation::DataComponentInterpretation>
       interpretation(dim,
                      DataComponentInterpretation::component_is_part_of_vector);
-    data_out.add_data_vector(analysis.get_solution(),
+    if (fourier)
+      {
+        displacement_names.push_back("displacement_theta");
+        interpretation.push_back(
+          DataComponentInterpretation::component_is_scalar);
+      }
+    data_out.add_data_vector(u,
                              displacement_names,
                              DataOut<dim>::type_dof_data,
                              interpretation);
     for (unsigned int k = 0; k < 4; ++k)
       data_out.add_data_vector(stress[k], names[k]);
-    data_out.add_data_vector(equivalent, "equivalent_stress");
-    data_out.add_data_vector(plastic_strain, "plastic_strain");
-    data_out.add_data_vector(yield_ratio, "yield_ratio");
+    for (unsigned int s = 0; s < n_s; ++s)
+      {
+        const std::string suffix =
+          fourier ? "_" + std::to_string(static_cast<int>(std::round(
+                            kinematics.station_angle(s) * 180 / numbers::PI)))
+                  : std::string();
+        data_out.add_data_vector(equivalent[s], "equivalent_stress" + suffix);
+        data_out.add_data_vector(plastic_strain[s], "plastic_strain" + suffix);
+        data_out.add_data_vector(yield_ratio[s], "yield_ratio" + suffix);
+      }
     data_out.add_data_vector(material, "material_id");
     data_out.build_patches(analysis.get_mapping(),
                            parameters.vtu_subdivisions,
@@ -207,24 +243,34 @@ namespace thinlayer
 
   template <int dim>
   void
-  OutputWriter::write_displacements(const Analysis<dim> &analysis) const
+  OutputWriter::write_displacements(const Analysis<dim> &analysis,
+                                    const double         theta) const
   {
-    const auto           &dof_handler = analysis.get_dof_handler();
-    const Vector<double> &u           = analysis.get_solution();
-    const Vector<double> &du          = analysis.get_step_increment();
-    std::vector<bool>     written(dof_handler.get_triangulation().n_vertices());
-    std::ostringstream    csv;
+    const auto          &dof_handler = analysis.get_dof_handler();
+    const bool           fourier     = analysis.get_kinematics().is_fourier();
+    const Vector<double> u           = analysis.displacement_at(theta);
+    const Vector<double> du          = analysis.displacement_at(theta, true);
+    // The Cartesian components in the cut at theta: x = u_r cos(theta) -
+    // u_theta sin(theta) for Fourier, and y along the axis.
+    const auto x_component = [&](const Vector<double>         &v,
+                                 const types::global_dof_index r,
+                                 const types::global_dof_index t) {
+      return fourier ? v[r] * std::cos(theta) - v[t] * std::sin(theta) : v[r];
+    };
+    std::vector<bool>  written(dof_handler.get_triangulation().n_vertices());
+    std::ostringstream csv;
     csv << std::setprecision(10) << "x,y,u_x,u_y,du_x,du_y\n";
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (const unsigned int v : cell->vertex_indices())
         if (!written[cell->vertex_index(v)])
           {
             written[cell->vertex_index(v)] = true;
+            const auto r                   = cell->vertex_dof_index(v, 0);
+            const auto z                   = cell->vertex_dof_index(v, 1);
+            const auto t = fourier ? cell->vertex_dof_index(v, 2) : r;
             csv << cell->vertex(v)[0] << ',' << cell->vertex(v)[1] << ','
-                << u[cell->vertex_dof_index(v, 0)] << ','
-                << u[cell->vertex_dof_index(v, 1)] << ','
-                << du[cell->vertex_dof_index(v, 0)] << ','
-                << du[cell->vertex_dof_index(v, 1)] << '\n';
+                << x_component(u, r, t) << ',' << u[z] << ','
+                << x_component(du, r, t) << ',' << du[z] << '\n';
           }
     write_file("displacements.csv", csv.str());
   }
@@ -259,7 +305,7 @@ namespace thinlayer
 
 
   template void
-  OutputWriter::write_displacements(const Analysis<2> &) const;
+  OutputWriter::write_displacements(const Analysis<2> &, const double) const;
 
   template void
   OutputWriter::write_fields(const unsigned int,

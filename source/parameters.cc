@@ -4,6 +4,7 @@
 #include <thinlayer/input_error.h>
 #include <thinlayer/parameters.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <fstream>
@@ -147,9 +148,10 @@ namespace thinlayer
       prm.declare_entry("Constrained components",
                         "",
                         Patterns::Anything(),
-                        "Comma-separated Cartesian components whose "
-                        "displacement is prescribed here: any of x, y; empty "
-                        "for none.");
+                        "Comma-separated components whose displacement is "
+                        "prescribed here: any of x, y in plane strain; of r, "
+                        "z, theta for Fourier kinematics (every harmonic); "
+                        "empty for none.");
       prm.declare_entry(
         "Displacement",
         "0",
@@ -157,18 +159,24 @@ namespace thinlayer
         "Prescribed displacement per unit load factor of the constrained "
         "components: one function expression of x, y (and the geometry "
         "parameters) per component, separated by ';', or one expression "
-        "for all components. Where boundary ids share a node, the lowest "
+        "for all components. For Fourier kinematics: the Cartesian "
+        "components x; y; z (z along the axis) as expressions of r, z, "
+        "theta, decomposed into the harmonics. Where boundary ids share a "
+        "node, the lowest "
         "id's value wins.");
       prm.declare_entry("Traction",
                         "0",
                         Patterns::Anything(),
                         "Cartesian traction per unit load factor: expressions "
-                        "as for the displacement.");
+                        "as for the displacement (for Fourier kinematics "
+                        "decomposed into the harmonics; a uniform horizontal "
+                        "traction on a disc loads harmonic 1 only).");
       prm.declare_entry("Pressure",
                         "0",
                         Patterns::Anything(),
                         "Normal pressure per unit load factor, positive into "
-                        "the body: one expression of x, y.");
+                        "the body: one expression of x, y (r, z, theta for "
+                        "Fourier kinematics).");
       prm.leave_subsection();
     }
 
@@ -190,6 +198,43 @@ namespace thinlayer
         "Values for the DefineConstant[] parameters of the .geo file, as "
         "'name=value, name=value'. They are also constants in every "
         "expression of this file.");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Kinematics");
+      prm.declare_entry("Type",
+                        "plane strain",
+                        Patterns::Selection("plane strain|fourier"),
+                        "plane strain: the mesh is a cross-section, "
+                        "components x, y. fourier: the mesh is the r-z plane "
+                        "of an axisymmetric body (x = r >= 0, y = z the "
+                        "axis) and the load need not be axisymmetric: the "
+                        "displacement is a sum of Fourier harmonics, "
+                        "components r, z, theta.");
+      prm.declare_entry("Harmonics",
+                        "1",
+                        Patterns::List(Patterns::Integer(0), 1),
+                        "Fourier: the harmonics n in the series (a lateral "
+                        "load on a disc is n = 1; 1, 3 as in the paper).");
+      prm.declare_entry("Series",
+                        "symmetric",
+                        Patterns::Selection("symmetric|antisymmetric"),
+                        "Fourier: symmetric about theta = 0 (u_r, u_z with "
+                        "cos n theta, u_theta with sin n theta), or "
+                        "antisymmetric (cos and sin swapped; n = 0 is "
+                        "torsion).");
+      prm.declare_entry("Stations",
+                        "0, 45, 90, 135, 180",
+                        Patterns::List(Patterns::Double(0, 180), 2),
+                        "Fourier: the angles (degrees, from 0 to 180, "
+                        "equally spaced for an exact projection) at which "
+                        "the material is evaluated.");
+      prm.declare_entry("Axis boundary id",
+                        "-1",
+                        Patterns::Integer(-1),
+                        "Fourier: the boundary id on the axis r = 0, where "
+                        "each harmonic gets the conditions that keep the "
+                        "field single-valued; -1 if the mesh does not reach "
+                        "the axis.");
       prm.leave_subsection();
 
       prm.enter_subsection("Discretisation");
@@ -280,6 +325,13 @@ namespace thinlayer
                         "What the 'displacement' column reports: the "
                         "average over 'Displacement boundary id', or the "
                         "value at 'Displacement point'.");
+      prm.declare_entry("Displacement angle",
+                        "0",
+                        Patterns::Double(0, 360),
+                        "Fourier: the angle (degrees) at which the "
+                        "displacement is monitored; x is then the Cartesian "
+                        "component in the direction theta = 0, y the one "
+                        "along the axis.");
       prm.declare_entry("Displacement point",
                         "0, 0",
                         Patterns::List(Patterns::Double(), 2, 2),
@@ -478,21 +530,24 @@ namespace thinlayer
 
     std::vector<bool>
     parse_components(const std::string &text,
+                     const bool         fourier,
                      const std::string &file,
                      const std::string &entry)
     {
-      std::vector<bool> result(2, false);
+      const std::vector<std::string> names =
+        fourier ? std::vector<std::string>{"r", "z", "theta"}
+                : std::vector<std::string>{"x", "y"};
+      std::vector<bool> result(names.size(), false);
       for (const auto &c : Utilities::split_string_list(text, ','))
         {
-          if (c == "x")
-            result[0] = true;
-          else if (c == "y")
-            result[1] = true;
-          else
-            throw InputError(file,
-                             entry,
-                             "expected a comma-separated list of x, y, got '" +
-                               c + "'");
+          const auto k = std::find(names.begin(), names.end(), c);
+          if (k == names.end())
+            throw InputError(
+              file,
+              entry,
+              std::string("expected a comma-separated list of ") +
+                (fourier ? "r, z, theta" : "x, y") + ", got '" + c + "'");
+          result[k - names.begin()] = true;
         }
       return result;
     }
@@ -501,6 +556,7 @@ namespace thinlayer
     void
     check_expressions(const std::string                   &expressions,
                       const unsigned int                   n_components,
+                      const bool                           fourier,
                       const std::map<std::string, double> &constants,
                       const std::string                   &file,
                       const std::string                   &entry)
@@ -516,23 +572,24 @@ namespace thinlayer
       const SilencedErrorStream silence;
       try
         {
-          FunctionParser<2> f(1);
+          FunctionParser<3> f(1);
           auto              all_constants = constants;
           all_constants["pi"]             = numbers::PI;
           for (const auto &p : parts)
             {
-              f.initialize("x,y", p, all_constants);
-              Point<2> origin;
-              (void)f.value(origin);
+              f.initialize(fourier ? "r,z,theta" : "x,y,unused_z",
+                           p,
+                           all_constants);
+              (void)f.value(Point<3>(1, 0, 0));
             }
         }
       catch (const ExceptionBase &e)
         {
           throw InputError(file,
                            entry,
-                           "expected function expressions of x, y and the "
-                           "geometry parameters: " +
-                             message_of(e));
+                           std::string("expected function expressions of ") +
+                             (fourier ? "r, z, theta" : "x, y") +
+                             " and the geometry parameters: " + message_of(e));
         }
     }
 
@@ -601,6 +658,42 @@ namespace thinlayer
         parse_geometry_parameters(prm.get("Geometry parameters"), file);
       prm.leave_subsection();
 
+      prm.enter_subsection("Kinematics");
+      p.fourier = (prm.get("Type") == "fourier");
+      for (const auto &n : Utilities::split_string_list(prm.get("Harmonics")))
+        {
+          const unsigned int h = std::stoul(n);
+          if (std::find(p.harmonics.begin(), p.harmonics.end(), h) !=
+              p.harmonics.end())
+            throw InputError(file,
+                             "Kinematics/Harmonics",
+                             "expected each harmonic once, got " + n +
+                               " twice");
+          p.harmonics.push_back(h);
+        }
+      p.antisymmetric = (prm.get("Series") == "antisymmetric");
+      for (const auto &a : Utilities::split_string_list(prm.get("Stations")))
+        p.station_angles.push_back(std::stod(a) * numbers::PI / 180);
+      for (unsigned int s = 1; s < p.station_angles.size(); ++s)
+        if (!(p.station_angles[s] > p.station_angles[s - 1]))
+          throw InputError(file,
+                           "Kinematics/Stations",
+                           "expected increasing angles, got " +
+                             prm.get("Stations"));
+      if (std::abs(p.station_angles.front()) > 1e-12 ||
+          std::abs(p.station_angles.back() - numbers::PI) > 1e-12)
+        throw InputError(file,
+                         "Kinematics/Stations",
+                         "expected angles from 0 to 180 degrees, got " +
+                           prm.get("Stations"));
+      p.axis_boundary_id = prm.get_integer("Axis boundary id");
+      if (!p.fourier)
+        {
+          p.harmonics      = {0};
+          p.station_angles = {0};
+        }
+      prm.leave_subsection();
+
       prm.enter_subsection("Discretisation");
       p.serendipity = (prm.get("Element") == "Q8");
       p.gauss_points_per_direction =
@@ -666,20 +759,31 @@ namespace thinlayer
           b.name = prm.get("Name");
           b.constrained_components =
             parse_components(prm.get("Constrained components"),
+                             p.fourier,
                              file,
                              section + "/Constrained components");
-          b.displacement = prm.get("Displacement");
-          b.traction     = prm.get("Traction");
-          b.pressure     = prm.get("Pressure");
+          b.displacement              = prm.get("Displacement");
+          b.traction                  = prm.get("Traction");
+          b.pressure                  = prm.get("Pressure");
+          const unsigned int n_vector = p.fourier ? 3 : 2;
           check_expressions(b.displacement,
-                            2,
+                            n_vector,
+                            p.fourier,
                             p.geometry_parameters,
                             file,
                             section + "/Displacement");
-          check_expressions(
-            b.traction, 2, p.geometry_parameters, file, section + "/Traction");
-          check_expressions(
-            b.pressure, 1, p.geometry_parameters, file, section + "/Pressure");
+          check_expressions(b.traction,
+                            n_vector,
+                            p.fourier,
+                            p.geometry_parameters,
+                            file,
+                            section + "/Traction");
+          check_expressions(b.pressure,
+                            1,
+                            p.fourier,
+                            p.geometry_parameters,
+                            file,
+                            section + "/Pressure");
           if (Utilities::split_string_list(b.pressure, ';').size() != 1)
             throw InputError(file,
                              section + "/Pressure",
@@ -716,6 +820,14 @@ namespace thinlayer
                                                            : 2u};
       if (component == "zz")
         p.load_stress_component = {2u, 2u};
+      p.displacement_angle =
+        prm.get_double("Displacement angle") * numbers::PI / 180;
+      if (p.fourier && p.load_measure != LoadMeasure::load_factor)
+        throw InputError(file,
+                         "Monitors/Load measure",
+                         "expected 'load factor' with Fourier kinematics "
+                         "(reactions and stress averages are plane-strain "
+                         "measures so far)");
       p.displacement_measure = (prm.get("Displacement measure") == "point")
                                  ? DisplacementMeasureType::point
                                  : DisplacementMeasureType::boundary_average;
@@ -738,6 +850,7 @@ namespace thinlayer
         {
           check_expressions(reference,
                             1,
+                            false,
                             p.geometry_parameters,
                             file,
                             "Reference/Analytic load");

@@ -94,7 +94,7 @@ namespace thinlayer
           {step, load_factor, load, displacement, result});
         if (p.write_vtu)
           writer.write_fields(step, load_factor, analysis, p);
-        writer.write_displacements(analysis);
+        writer.write_displacements(analysis, p.displacement_angle);
         timer.leave_subsection();
 
         out << "  step " << format("%4.0f", step) << "  load factor "

@@ -15,6 +15,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <thinlayer/boundary_data.h>
+#include <thinlayer/kinematics.h>
 #include <thinlayer/material_law.h>
 #include <thinlayer/parameters.h>
 #include <thinlayer/point_history.h>
@@ -34,8 +35,8 @@ namespace thinlayer
   {
     unsigned int iterations;
     bool         converged;
-    /// Max over points of F / strength after the step: NaN where no
-    /// material can yield.
+    /// Max over points (and stations) of F / strength after the step: NaN
+    /// where no material can yield.
     double max_yield_ratio;
     /// Points (and stations) with F > 0 at the end of the step.
     unsigned int plastic_points;
@@ -53,21 +54,28 @@ namespace thinlayer
   };
 
   /**
-   * A plane-strain elasto-plastic analysis of one scene with the paper's
-   * constant-stiffness viscoplastic iterations: the elastic stiffness is
-   * assembled and factorised once; each iteration is one forward/backward
-   * substitution and one pass over the Gauss points, whose
-   * strain-displacement data are computed once and cached (the mesh does
-   * not move).
+   * An elasto-plastic analysis of one scene with the paper's
+   * constant-stiffness viscoplastic iterations, for any Kinematics: plane
+   * strain (one mode, one station) or an axisymmetric body under
+   * non-axisymmetric load (one mode per Fourier harmonic, the material
+   * evaluated at circumferential stations).
+   *
+   * The elastic stiffness of every mode is assembled and factorised once;
+   * for isotropic elasticity the modes decouple, so each iteration is one
+   * forward/backward substitution per mode and one pass over the Gauss
+   * points and stations, whose strain-displacement data are computed once
+   * and cached (the mesh does not move).
    *
    * A load step from load factor lambda_0 to lambda solves, with body
-   * loads b = 0 at its start,
-   *   K du = (lambda - lambda_0) f + b,
-   * then at every point d eps = B du - eps_vp, sigma = sigma_0 + D d eps; where
-   * F(sigma) > 0 it adds the viscoplastic strain dt F dQ/dsigma to eps_vp
-   * and int B^T D (that strain) to b, until b (or du) stops changing to
-   * within the tolerance. A step that reaches the iteration limit has
-   * failed: that is how collapse shows.
+   * loads b_m = 0 at its start,
+   *   K_m du_m = (lambda - lambda_0) f_m + b_m     for every mode m,
+   * then at every point and station strain = sum_m B_m(theta_s) du_m,
+   * d eps = strain - eps_vp, sigma = sigma_0 + D d eps; where F(sigma) > 0 it
+   * adds the viscoplastic strain dt F dQ/dsigma to eps_vp and projects
+   * D (that strain) back onto every mode's body loads, until the body
+   * loads (or the displacement increments) stop changing to within the
+   * tolerance. A step that reaches the iteration limit has failed: that is
+   * how collapse shows.
    *
    * Discretisation: FE_Q(2) per component, reduced to the 8-node
    * serendipity element by make_serendipity_constraints() (or kept as Q9),
@@ -83,8 +91,8 @@ namespace thinlayer
 
     /**
      * Distribute DoFs, build constraints, loads and the point cache,
-     * assemble and factorise the stiffness. Throws InputError if the body
-     * is not restrained.
+     * assemble and factorise the stiffness of every mode. Throws
+     * InputError if the body is not restrained.
      */
     void
     setup();
@@ -103,25 +111,37 @@ namespace thinlayer
     DisplacementMeasure
     displacement() const;
 
+    const Kinematics &
+    get_kinematics() const;
+
     const DoFHandler<dim> &
     get_dof_handler() const;
 
     const Mapping<dim> &
     get_mapping() const;
 
+    /// The displacement amplitudes of mode @p mode.
     const Vector<double> &
-    get_solution() const;
+    get_solution(const unsigned int mode = 0) const;
 
-    /// The displacement increment of the last load step: at a failed step,
-    /// the incipient mechanism.
-    const Vector<double> &
-    get_step_increment() const;
+    /**
+     * The displacement at angle @p theta, summed over the modes, as a DoF
+     * vector: components (x, y) in plane strain, (r, z, theta) for Fourier.
+     * With @p increment, the last load step's increment instead (at a
+     * failed step, the incipient mechanism).
+     */
+    Vector<double>
+    displacement_at(const double theta, const bool increment = false) const;
 
-    /// The state at Gauss point @p q of active cell @p cell (station 0).
+    /// The state at Gauss point @p q of active cell @p cell and station
+    /// @p station.
     const PointState &
-    point_state(const unsigned int cell, const unsigned int q) const;
+    point_state(const unsigned int cell,
+                const unsigned int q,
+                const unsigned int station = 0) const;
 
-    /// Stress (3D, tension positive) at point @p q of active cell @p cell.
+    /// Stress (3D, tension positive) at point @p q of active cell @p cell,
+    /// station 0.
     const SymmetricTensor<2, 3> &
     stress(const unsigned int cell, const unsigned int q) const;
 
@@ -132,12 +152,12 @@ namespace thinlayer
     unsigned int
     n_quadrature_points() const;
 
-    /// Displacement DoFs of the element's nodes (for Q8 the eliminated
-    /// centre nodes are not counted; prescribed DoFs are).
+    /// Displacement DoFs of the element's nodes per mode (for Q8 the
+    /// eliminated centre nodes are not counted; prescribed DoFs are).
     types::global_dof_index
     n_dofs() const;
 
-    /// Unknowns of the factorised system (n_dofs() less prescribed ones).
+    /// Unknowns of the factorised systems, summed over the modes.
     types::global_dof_index
     n_equations() const;
 
@@ -146,84 +166,103 @@ namespace thinlayer
     viscoplastic_time_step() const;
 
   private:
+    /**
+     * Everything that exists once per mode: its constraints (the axis
+     * conditions depend on the harmonic), stiffness, factorisation, loads
+     * and displacements.
+     */
+    struct Mode
+    {
+      /// Serendipity, dead-component and axis lines.
+      AffineConstraints<double> structural_constraints;
+      /// The above plus homogeneous Dirichlet lines: the solve's space.
+      AffineConstraints<double> constraints;
+      SparseMatrix<double>      stiffness;
+      SparseMatrix<double>      condensed_stiffness;
+      SparseDirectUMFPACK       factorisation;
+      Vector<double>            unit_prescribed_displacement;
+      Vector<double>            unit_load;
+      /// f - K u_prescribed at unit load factor.
+      Vector<double> unit_rhs;
+      Vector<double> solution;
+      Vector<double> step_increment;
+      Vector<double> internal_forces;
+      // Work vectors of the iterations.
+      Vector<double> body_loads;
+      Vector<double> body_load_change;
+      Vector<double> previous_increment;
+    };
+
+    void
+    make_mode_constraints(const unsigned int m);
+
     void
     build_point_cache();
 
     void
     assemble_stiffness();
 
-    /**
-     * Solve K du = rhs for the step's displacement increment, with the
-     * prescribed displacements of a load-factor increment @p dlambda.
-     */
+    /// The strain-displacement part (1 or 2) of shape function @p i of
+    /// mode @p m at point @p point.
+    const SymmetricTensor<2, 3> &
+    B(const unsigned int point,
+      const unsigned int m,
+      const unsigned int i,
+      const unsigned int part) const;
+
     void
-    solve_increment(const double          dlambda,
-                    const Vector<double> &body_loads,
-                    Vector<double>       &increment) const;
+    solve_increment(const unsigned int m, const double dlambda);
 
     /**
-     * Stresses for the displacement increment @p increment; adds the new
-     * viscoplastic body loads of yielding points to @p body_load_change.
-     * Returns the number of yielding points.
+     * Stresses at every point and station for the modes' increments; adds
+     * the new viscoplastic body loads to each mode's body_load_change.
+     * Returns the number of yielding points and stations.
      */
     unsigned int
-    update_stresses(const Vector<double> &increment,
-                    Vector<double>       &body_load_change);
+    update_stresses();
 
     void
     update_internal_forces();
 
     const Parameters         &parameters;
     const Triangulation<dim> &tria;
+    const Kinematics          kinematics;
     const FESystem<dim>       fe;
     const MappingQ<dim>       mapping;
     const QGauss<dim>         quadrature;
     DoFHandler<dim>           dof_handler;
-    BoundaryData<dim>         boundary_data;
+    BoundaryData              boundary_data;
 
     /// The serendipity lines only (to condense residuals for reactions).
-    AffineConstraints<double> element_constraints;
-    /// Serendipity plus homogeneous Dirichlet lines: the solve's space.
-    AffineConstraints<double> constraints;
+    AffineConstraints<double>          element_constraints;
+    SparsityPattern                    sparsity;
+    std::vector<std::unique_ptr<Mode>> modes;
 
     std::map<types::material_id, std::unique_ptr<MaterialLaw>> laws;
     double                                                     time_step;
 
     /**
-     * Per active cell: its law and DoFs; per Gauss point: JxW and the 3D
-     * strain of every shape function (B). Flat arrays, indexed by active
-     * cell index, so the point loop touches no FEValues and no map.
+     * Per active cell: its law and DoFs; per Gauss point: its area weight
+     * (JxW, times r for Fourier) and the strain parts of every shape
+     * function in every mode. Flat arrays, indexed by active cell index, so
+     * the point loop touches no FEValues and no map.
      */
     std::vector<const MaterialLaw *>     cell_law;
     std::vector<types::global_dof_index> cell_dofs;
-    std::vector<double>                  point_JxW;
+    std::vector<double>                  point_weight;
     std::vector<SymmetricTensor<2, 3>>   shape_strains;
+    unsigned int                         n_parts;
 
     CellDataStorage<typename Triangulation<dim>::cell_iterator, PointHistory>
                                 history_storage;
     std::vector<PointHistory *> history;
 
-    SparsityPattern sparsity;
-    /// Unconstrained stiffness, to lift prescribed displacements.
-    SparseMatrix<double> stiffness;
-    /// Condensed stiffness, factorised once.
-    SparseMatrix<double> condensed_stiffness;
-    SparseDirectUMFPACK  factorisation;
+    /// The component of every DoF.
+    std::vector<unsigned int> dof_component;
 
-    /// Prescribed displacement and external load at unit load factor.
-    Vector<double> unit_prescribed_displacement;
-    Vector<double> unit_load;
-    /// f - K times unit_prescribed_displacement: the right-hand side of a
-    /// unit load factor.
-    Vector<double> unit_rhs;
-
-    double         load_factor;
-    Vector<double> solution;
-    Vector<double> step_increment;
-    Vector<double> internal_forces;
+    double load_factor;
 
     IndexSet reaction_dofs;
-    IndexSet monitored_dofs;
   };
 } // namespace thinlayer
 

@@ -7,6 +7,7 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/vector.h>
 
+#include <thinlayer/kinematics.h>
 #include <thinlayer/parameters.h>
 
 #include <map>
@@ -20,39 +21,46 @@ namespace thinlayer
    * The boundary conditions of a scene at unit load factor: prescribed
    * displacements on chosen components, Cartesian tractions and normal
    * pressures, each a function expression per boundary id. Everything is
-   * linear in the load factor, so the analysis builds the load vector and
-   * the prescribed-displacement vector once and scales them.
+   * linear in the load factor, so the analysis builds the load vectors and
+   * the prescribed-displacement vectors once and scales them.
+   *
+   * With Fourier kinematics the expressions are functions of (r, z, theta)
+   * giving Cartesian components; each mode gets its share by integration
+   * over theta, int f . T(n theta) r dtheta for loads, and the amplitude
+   * (1/c) int u T(n theta) dtheta for prescribed displacements.
    */
-  template <int dim>
   class BoundaryData
   {
   public:
-    explicit BoundaryData(const Parameters &parameters);
+    BoundaryData(const Parameters &parameters, const Kinematics &kinematics);
 
     /**
      * Add homogeneous constraints for every constrained component (the
-     * constant-stiffness matrix is built with these).
+     * same for every mode).
      */
     void
-    make_zero_constraints(const DoFHandler<dim>     &dof_handler,
+    make_zero_constraints(const DoFHandler<2>       &dof_handler,
                           AffineConstraints<double> &constraints) const;
 
     /**
-     * The prescribed displacement at unit load factor, DoF by DoF. Where
-     * boundary ids share a node (a corner), the lowest id's value wins.
+     * The prescribed displacement of mode @p mode at unit load factor, DoF
+     * by DoF. Where boundary ids share a node (a corner), the lowest id's
+     * value wins.
      */
     std::map<types::global_dof_index, double>
-    prescribed_values(const Mapping<dim>    &mapping,
-                      const DoFHandler<dim> &dof_handler) const;
+    prescribed_values(const Mapping<2>    &mapping,
+                      const DoFHandler<2> &dof_handler,
+                      const unsigned int   mode) const;
 
     /**
-     * The external load vector of tractions and pressures at unit load
-     * factor (unconstrained).
+     * The external load vector of mode @p mode, tractions and pressures at
+     * unit load factor (unconstrained).
      */
     void
-    assemble_load_vector(const Mapping<dim>    &mapping,
-                         const DoFHandler<dim> &dof_handler,
-                         Vector<double>        &load) const;
+    assemble_load_vector(const Mapping<2>    &mapping,
+                         const DoFHandler<2> &dof_handler,
+                         const unsigned int   mode,
+                         Vector<double>      &load) const;
 
     /// Whether any boundary prescribes a displacement component.
     bool
@@ -61,12 +69,23 @@ namespace thinlayer
   private:
     struct Condition
     {
-      ComponentMask                        constrained;
-      std::unique_ptr<FunctionParser<dim>> displacement;
-      std::unique_ptr<FunctionParser<dim>> traction;
-      std::unique_ptr<FunctionParser<dim>> pressure;
-      bool                                 loaded;
+      ComponentMask                      constrained;
+      std::unique_ptr<FunctionParser<3>> displacement;
+      std::unique_ptr<FunctionParser<3>> traction;
+      std::unique_ptr<FunctionParser<3>> pressure;
+      bool                               loaded;
     };
+
+    /**
+     * The Cartesian vector of @p f at (x, y) in plane strain, or its
+     * cylindrical components (r, z, theta) at (r, z, theta) for Fourier.
+     */
+    Tensor<1, 3>
+    evaluate(const FunctionParser<3> &f,
+             const Point<2>          &x,
+             const double             theta) const;
+
+    const Kinematics                       &kinematics;
     std::map<types::boundary_id, Condition> conditions;
   };
 } // namespace thinlayer

@@ -79,11 +79,13 @@ namespace thinlayer
      * Vertex positions, displacements and the last step's displacement
      * increments as displacements.csv (x, y, u_x, u_y, du_x, du_y),
      * overwritten every step so that it holds the last one: at a failed
-     * step the increment is the mechanism at failure, for plots.
+     * step the increment is the mechanism at failure, for plots. For
+     * Fourier kinematics the field in the cut at angle @p theta.
      */
     template <int dim>
     void
-    write_displacements(const Analysis<dim> &analysis) const;
+    write_displacements(const Analysis<dim> &analysis,
+                        const double         theta) const;
 
     void
     write_summary(const JsonObject &summary);

@@ -58,9 +58,12 @@ namespace thinlayer
   struct BoundaryParameters
   {
     std::string name;
-    /// Which Cartesian components are prescribed (x, y[, z]).
+    /// Which components are prescribed: (x, y) in plane strain, (r, z,
+    /// theta) for Fourier kinematics.
     std::vector<bool> constrained_components;
-    /// Function expressions (one per component, ';'-separated) in x, y, z.
+    /// Function expressions, one per component, ';'-separated: of x, y in
+    /// plane strain; of r, z, theta for Fourier kinematics, where they are
+    /// the Cartesian components (x, y, z) with z along the axis.
     std::string displacement;
     std::string traction;
     /// Normal pressure, positive when it pushes into the body.
@@ -107,6 +110,16 @@ namespace thinlayer
     std::string                   mesh_file;
     std::map<std::string, double> geometry_parameters;
 
+    // Kinematics
+    bool fourier;
+    /// Fourier: the harmonics, the series and the stations (radians).
+    std::vector<unsigned int> harmonics;
+    bool                      antisymmetric;
+    std::vector<double>       station_angles;
+    /// Fourier: the boundary id of the axis r = 0, or -1 if the mesh does
+    /// not reach it.
+    int axis_boundary_id;
+
     // Discretisation
     /// true: 8-node serendipity (constrained Q2); false: 9-node Q2.
     bool         serendipity;
@@ -134,10 +147,12 @@ namespace thinlayer
     /// (i, j) of the averaged stress component.
     std::pair<unsigned int, unsigned int> load_stress_component;
     DisplacementMeasureType               displacement_measure;
-    std::vector<double>                   displacement_point;
-    types::boundary_id                    displacement_boundary_id;
-    unsigned int                          displacement_component;
-    double                                displacement_scale;
+    /// Fourier: the angle (radians) at which displacements are monitored.
+    double              displacement_angle;
+    std::vector<double> displacement_point;
+    types::boundary_id  displacement_boundary_id;
+    unsigned int        displacement_component;
+    double              displacement_scale;
 
     // Reference: the analytic value of the load the run is compared with,
     // evaluated from the geometry parameters; NaN where none is declared.
