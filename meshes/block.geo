@@ -1,7 +1,8 @@
 // A rectangular block of structured quadrilaterals.
 //
 // Parameters:
-//   width, height      size of the block (lower-left corner at the origin)
+//   width, height      size of the block
+//   x0, y0             its lower-left corner (default the origin)
 //   nx, ny             elements along the width and the height
 //
 // Physical groups:
@@ -11,13 +12,15 @@ DefineConstant[
   width  = {1, Name "Parameters/width"},
   height = {1, Name "Parameters/height"},
   nx     = {4, Name "Parameters/nx"},
-  ny     = {4, Name "Parameters/ny"}
+  ny     = {4, Name "Parameters/ny"},
+  x0     = {0, Name "Parameters/x0"},
+  y0     = {0, Name "Parameters/y0"}
 ];
 
-Point(1) = {0, 0, 0};
-Point(2) = {width, 0, 0};
-Point(3) = {width, height, 0};
-Point(4) = {0, height, 0};
+Point(1) = {x0, y0, 0};
+Point(2) = {x0 + width, y0, 0};
+Point(3) = {x0 + width, y0 + height, 0};
+Point(4) = {x0, y0 + height, 0};
 Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
 Curve Loop(1) = {1, 2, 3, 4};
 Plane Surface(1) = {1};

@@ -371,7 +371,8 @@ namespace thinlayer
         "Rerun the scene for every combination of values: "
         "'name = v1, v2, ...; name = ...'. A name with a '/' is an entry "
         "('Solver/Tolerance = 1e-3, 1e-6'), any other a geometry parameter "
-        "('alpha = 10, 20, 30'). Each run writes into run-NNN of the output "
+        "('alpha = 10, 20, 30'). Braces group a value that is a list "
+        "('Kinematics/Harmonics = {1}, {1, 3}'). Each run writes into run-NNN of the output "
         "directory, and sweep.csv there gets one row per run. Empty: one "
         "run.");
       prm.leave_subsection();
@@ -500,8 +501,30 @@ namespace thinlayer
                              "expected 'name = v1, v2, ...' (a geometry "
                              "parameter or Section/Entry), got '" +
                                item + "'");
-          const auto values =
-            Utilities::split_string_list(item.substr(equal + 1), ',');
+          // Values are comma-separated; braces group a value that is a
+          // list itself ("Kinematics/Harmonics = {1}, {1, 3}").
+          std::vector<std::string> values;
+          std::string              current;
+          int                      depth = 0;
+          for (const char ch : item.substr(equal + 1) + ",")
+            {
+              if (ch == '{')
+                ++depth;
+              else if (ch == '}')
+                --depth;
+              else if (ch == ',' && depth == 0)
+                {
+                  if (!Utilities::trim(current).empty())
+                    values.push_back(Utilities::trim(current));
+                  current.clear();
+                }
+              else
+                current += ch;
+            }
+          if (depth != 0)
+            throw InputError(file,
+                             "Sweep/Values",
+                             "unbalanced braces in '" + item + "'");
           if (values.empty())
             throw InputError(file,
                              "Sweep/Values",

@@ -55,6 +55,9 @@ namespace thinlayer
     analysis.setup();
     timer.leave_subsection();
 
+    const std::string station_warning =
+      analysis.get_kinematics().station_warning();
+
     // Everything the user gave us has been checked: only now write.
     OutputWriter writer(p.output_directory);
     writer.write_file("mesh.msh", scene.mesh_text());
@@ -69,6 +72,16 @@ namespace thinlayer
         << 'x' << p.gauss_points_per_direction << " Gauss points, "
         << analysis.n_dofs() << " DoFs (" << analysis.n_equations()
         << " equations)\n";
+    if (p.fourier)
+      {
+        out << "  Fourier harmonics";
+        for (const auto n : p.harmonics)
+          out << ' ' << n;
+        out << " (" << (p.antisymmetric ? "antisymmetric" : "symmetric")
+            << "), " << p.station_angles.size() << " stations\n";
+      }
+    if (!station_warning.empty())
+      out << "  " << station_warning << '\n';
 
     double       load_factor = 0, last_converged_load = 0;
     double       first_failed_load = std::numeric_limits<double>::quiet_NaN();
@@ -139,6 +152,9 @@ namespace thinlayer
     JsonObject geometry;
     for (const auto &[name, value] : p.geometry_parameters)
       geometry.add(name, value);
+    std::string harmonics;
+    for (const auto n : p.harmonics)
+      harmonics += (harmonics.empty() ? "" : " ") + std::to_string(n);
     JsonObject timing;
     for (const auto &[section, seconds] :
          timer.get_summary_data(TimerOutput::total_wall_time))
@@ -148,6 +164,10 @@ namespace thinlayer
     summary.add("parameter_file", p.parameter_file)
       .add("mesh_file", p.mesh_file)
       .add("geometry_parameters", geometry)
+      .add("kinematics",
+           std::string(p.fourier ? "fourier" : "plane strain"))
+      .add("harmonics", harmonics)
+      .add_integer("stations", p.station_angles.size())
       .add("element", std::string(p.serendipity ? "Q8" : "Q9"))
       .add_integer("gauss_points_per_direction", p.gauss_points_per_direction)
       .add_integer("cells", scene.triangulation().n_active_cells())

@@ -33,13 +33,34 @@ namespace thinlayer
     }
 
     /**
+     * The text of a .geo with the files it includes, to check that the
+     * geometry parameters set from the parameter file exist.
+     */
+    std::string
+    geometry_text(const std::string &file, const unsigned int depth = 0)
+    {
+      std::string       text = read_file(file);
+      const std::regex  include("Include\\s*\"([^\"]+)\"");
+      const std::string directory =
+        std::filesystem::path(file).parent_path().string();
+      std::string included;
+      for (std::sregex_iterator i(text.begin(), text.end(), include), end;
+           i != end && depth < 8;
+           ++i)
+        included += geometry_text(
+          (directory.empty() ? "" : directory + "/") + (*i)[1].str(),
+          depth + 1);
+      return text + included;
+    }
+
+    /**
      * Mesh a .geo with the gmsh program, setting its DefineConstant[]
      * parameters with -setnumber. Returns the mesh in gmsh's 2.2 format.
      */
     std::string
     mesh_geometry(const Parameters &p)
     {
-      const std::string geo = read_file(p.mesh_file);
+      const std::string geo = geometry_text(p.mesh_file);
       for (const auto &[name, value] : p.geometry_parameters)
         if (!std::regex_search(geo, std::regex("\\b" + name + "\\b")))
           throw InputError(p.parameter_file,
