@@ -22,10 +22,12 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 
 def value(text):
+    """A number; for a list value (stations, harmonics) its length."""
     try:
         return float(text)
     except ValueError:
-        return math.nan
+        items = [t for t in text.replace("{", "").replace("}", "").split(",") if t.strip()]
+        return float(len(items)) if len(items) > 1 else math.nan
 
 
 def main(directory, x_name):
@@ -63,8 +65,9 @@ def main(directory, x_name):
                              100 * value(r["relative_error"]), r["total_iterations"],
                              r["dofs"], value(r["wall_seconds"])))
     xs_all = [value(r[x_name]) for r in rows]
+    listed = any("," in r[x_name] for r in rows)
     for ax in (ax_err, ax_time):
-        ax.set_xlabel(x_name)
+        ax.set_xlabel(("number of " if listed else "") + x_name)
         ax.grid(alpha=0.3)
         if min(xs_all) > 0 and max(xs_all) / min(xs_all) > 20:
             ax.set_xscale("log")
