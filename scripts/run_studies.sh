@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # The paper's studies with their tables and figures, into output/.
 #
-#   scripts/run_studies.sh [case1|case2|case4|all]     (default: all)
+#   scripts/run_studies.sh [case1|case2|case3|case4|all]     (default: all)
 #
 # Times on the 2-core machine: case1 about 40 s, case2 about 2 min,
-# case4 about 3 min.
+# case3 about 10 min, case4 about 3 min.
 set -euo pipefail
 top="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$top"
@@ -33,6 +33,15 @@ if [ "$which" = case2 ] || [ "$which" = all ]; then
   done
   "$thinlayer" prm/case2-study.prm
   $plot scripts/plot_study.py output/case2-study aspect_ratio
+fi
+
+if [ "$which" = case3 ] || [ "$which" = all ]; then
+  for scene in case3-circular-footing case3-circular-footing-better-mesh; do
+    "$thinlayer" prm/$scene.prm
+    $plot scripts/plot_scene.py output/$scene "pi R^2 C_w"
+  done
+  "$thinlayer" prm/case3-study.prm
+  $plot scripts/plot_study.py output/case3-study Kinematics/Stations
 fi
 
 if [ "$which" = case4 ] || [ "$which" = all ]; then

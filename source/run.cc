@@ -115,7 +115,8 @@ namespace thinlayer
             << format("%12.5e", load) << "  displacement "
             << format("%12.5e", displacement.mean) << "  iterations "
             << format("%4.0f", result.iterations) << "  "
-            << (result.converged ? "converged" : "FAILED") << '\n';
+            << (result.converged ? "converged" : "FAILED")
+            << std::endl; // progress: one line per step, as it ends
 
         if (result.converged)
           last_converged_load = load;

@@ -163,7 +163,7 @@ namespace thinlayer
                               s.relative_error);
                 out << line;
               }
-            out << '\n';
+            out << std::endl; // progress: one line per run, as it ends
           }
         catch (const std::exception &e)
           {
@@ -173,7 +173,7 @@ namespace thinlayer
                 c = ' ';
             csv << ",0,,,,,,,,,,," << message << '\n';
             out << "  run " << r + 1 << '/' << combinations.size() << ": "
-                << values << ": error: " << e.what() << '\n';
+                << values << ": error: " << e.what() << std::endl;
           }
         csv << std::flush;
       }
