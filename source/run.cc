@@ -185,6 +185,7 @@ namespace thinlayer
       .add_integer("load_steps", steps_run)
       .add_integer("total_iterations", total_iterations)
       .add("wall_seconds", wall_clock.wall_time())
+      .add("warnings", station_warning)
       .add("timing", timing);
     writer.write_summary(summary);
 
@@ -205,6 +206,7 @@ namespace thinlayer
             static_cast<unsigned int>(analysis.n_equations()),
             steps_run,
             total_iterations,
-            wall_clock.wall_time()};
+            wall_clock.wall_time(),
+            station_warning};
   }
 } // namespace thinlayer

@@ -47,6 +47,20 @@ namespace thinlayer
       return overrides;
     }
 
+    /// A CSV field, quoted where it holds a comma or a quote (RFC 4180).
+    std::string
+    csv_text(const std::string &text)
+    {
+      if (text.find_first_of(",\"\n") == std::string::npos)
+        return text;
+      std::string quoted = "\"";
+      for (const char c : text)
+        quoted += (c == '"') ? std::string("\"\"") :
+                  (c == '\n') ? std::string(" ") :
+                                std::string(1, c);
+      return quoted + "\"";
+    }
+
     std::string
     csv_number(const double value)
     {
@@ -114,10 +128,10 @@ namespace thinlayer
     std::ofstream csv(base.output_directory + "/sweep.csv");
     csv << "run";
     for (const auto &[name, values] : base.sweep)
-      csv << ',' << name;
+      csv << ',' << csv_text(name);
     csv << ",converged,last_converged_load,first_failed_load,reference_load,"
            "relative_error,cells,dofs,equations,load_steps,total_iterations,"
-           "wall_seconds,error\n";
+           "wall_seconds,warnings,error\n";
 
     out << "thinlayer: sweep of " << combinations.size() << " runs into "
         << base.output_directory << '\n';
@@ -130,7 +144,7 @@ namespace thinlayer
 
         csv << r + 1;
         for (unsigned int k = 0; k < base.sweep.size(); ++k)
-          csv << ',' << base.sweep[k].second[combinations[r][k]];
+          csv << ',' << csv_text(base.sweep[k].second[combinations[r][k]]);
 
         std::ostringstream run_output;
         try
@@ -144,7 +158,7 @@ namespace thinlayer
                 << csv_number(s.relative_error) << ',' << s.cells << ','
                 << s.dofs << ',' << s.equations << ',' << s.load_steps << ','
                 << s.total_iterations << ',' << csv_number(s.wall_seconds)
-                << ",\n";
+                << ',' << csv_text(s.warnings) << ",\n";
 
             char line[160];
             std::snprintf(line,
@@ -163,15 +177,13 @@ namespace thinlayer
                               s.relative_error);
                 out << line;
               }
+            if (!s.warnings.empty())
+              out << " (" << s.warnings << ')';
             out << std::endl; // progress: one line per run, as it ends
           }
         catch (const std::exception &e)
           {
-            std::string message = e.what();
-            for (char &c : message)
-              if (c == ',' || c == '\n')
-                c = ' ';
-            csv << ",0,,,,,,,,,,," << message << '\n';
+            csv << ",0,,,,,,,,,,,," << csv_text(e.what()) << '\n';
             out << "  run " << r + 1 << '/' << combinations.size() << ": "
                 << values << ": error: " << e.what() << std::endl;
           }

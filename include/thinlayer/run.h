@@ -24,6 +24,8 @@ namespace thinlayer
     unsigned int load_steps;
     unsigned int total_iterations;
     double       wall_seconds;
+    /// Warnings about the model (e.g. too few stations); empty if none.
+    std::string warnings;
   };
 
   /**
