@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <limits>
@@ -372,7 +373,8 @@ namespace thinlayer
         "'name = v1, v2, ...; name = ...'. A name with a '/' is an entry "
         "('Solver/Tolerance = 1e-3, 1e-6'), any other a geometry parameter "
         "('alpha = 10, 20, 30'). Braces group a value that is a list "
-        "('Kinematics/Harmonics = {1}, {1, 3}'). Each run writes into run-NNN of the output "
+        "('Kinematics/Harmonics = {1}, {1, 3}'). Each run writes into run-NNN "
+        "of the output "
         "directory, and sweep.csv there gets one row per run. Empty: one "
         "run.");
       prm.leave_subsection();
@@ -949,7 +951,23 @@ namespace thinlayer
     for (const auto &o : overrides)
       apply_override(prm, o);
 
-    return extract(prm, file, material_ids, boundary_ids);
+    Parameters parameters = extract(prm, file, material_ids, boundary_ids);
+    // The record names the mesh by its absolute path, so that it can be
+    // run again from anywhere.
+    prm.enter_subsection("Mesh");
+    prm.set("File",
+            std::filesystem::absolute(parameters.mesh_file)
+              .lexically_normal()
+              .string());
+    prm.leave_subsection();
+    std::ostringstream effective;
+    effective << "# The parameters of this run: " << file;
+    for (const auto &o : overrides)
+      effective << " -s \"" << o << '"';
+    effective << '\n';
+    prm.print_parameters(effective, ParameterHandler::ShortPRM);
+    parameters.effective_parameters = effective.str();
+    return parameters;
   }
 
 

@@ -29,14 +29,6 @@ namespace thinlayer
       return std::filesystem::path(path).filename().string();
     }
 
-    std::string
-    read_file(const std::string &file)
-    {
-      std::ifstream      in(file);
-      std::ostringstream text;
-      text << in.rdbuf();
-      return text.str();
-    }
   } // namespace
 
 
@@ -61,7 +53,7 @@ namespace thinlayer
     // Everything the user gave us has been checked: only now write.
     OutputWriter writer(p.output_directory);
     writer.write_file("mesh.msh", scene.mesh_text());
-    writer.write_file("parameters.prm", read_file(p.parameter_file));
+    writer.write_file("parameters.prm", p.effective_parameters);
 
     // File names only: the full paths are in summary.json, and the screen
     // output stays the same wherever the project is checked out.
@@ -165,8 +157,7 @@ namespace thinlayer
     summary.add("parameter_file", p.parameter_file)
       .add("mesh_file", p.mesh_file)
       .add("geometry_parameters", geometry)
-      .add("kinematics",
-           std::string(p.fourier ? "fourier" : "plane strain"))
+      .add("kinematics", std::string(p.fourier ? "fourier" : "plane strain"))
       .add("harmonics", harmonics)
       .add_integer("stations", p.station_angles.size())
       .add("element", std::string(p.serendipity ? "Q8" : "Q9"))

@@ -1,5 +1,6 @@
 #include <deal.II/grid/grid_in.h>
 
+#include <thinlayer/file_utilities.h>
 #include <thinlayer/input_error.h>
 #include <thinlayer/scene.h>
 
@@ -23,14 +24,6 @@ namespace thinlayer
       return quoted + "'";
     }
 
-    std::string
-    read_file(const std::string &file)
-    {
-      std::ifstream      in(file);
-      std::ostringstream text;
-      text << in.rdbuf();
-      return text.str();
-    }
 
     /**
      * The text of a .geo with the files it includes, to check that the
@@ -47,9 +40,9 @@ namespace thinlayer
       for (std::sregex_iterator i(text.begin(), text.end(), include), end;
            i != end && depth < 8;
            ++i)
-        included += geometry_text(
-          (directory.empty() ? "" : directory + "/") + (*i)[1].str(),
-          depth + 1);
+        included += geometry_text((directory.empty() ? "" : directory + "/") +
+                                    (*i)[1].str(),
+                                  depth + 1);
       return text + included;
     }
 

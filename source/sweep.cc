@@ -55,9 +55,9 @@ namespace thinlayer
         return text;
       std::string quoted = "\"";
       for (const char c : text)
-        quoted += (c == '"') ? std::string("\"\"") :
-                  (c == '\n') ? std::string(" ") :
-                                std::string(1, c);
+        quoted += (c == '"')    ? std::string("\"\"")
+                  : (c == '\n') ? std::string(" ")
+                                : std::string(1, c);
       return quoted + "\"";
     }
 

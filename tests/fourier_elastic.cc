@@ -20,12 +20,9 @@
 #include <deal.II/base/convergence_table.h>
 #include <deal.II/base/function.h>
 #include <deal.II/base/quadrature_lib.h>
-
 #include <deal.II/dofs/dof_tools.h>
-
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/tria.h>
-
 #include <deal.II/numerics/vector_tools.h>
 
 #include <thinlayer/analysis.h>
@@ -62,8 +59,7 @@ namespace
   read(const std::string &prm)
   {
     return thinlayer::ParameterReader().read_from_string(
-      "subsection Mesh\n  set File = made-in-code\nend\n" + prm,
-      "fourier.prm");
+      "subsection Mesh\n  set File = made-in-code\nend\n" + prm, "fourier.prm");
   }
 
   class LameCylinder : public Function<2>
@@ -98,15 +94,15 @@ namespace
       {
         Triangulation<2> tria;
         make_rectangle(tria, 1, 2, 0.5, 2 << level, 1 << level);
-        const thinlayer::Parameters p =
-          read("subsection Kinematics\n  set Type = fourier\n"
-               "  set Harmonics = 0\nend\n"
-               "subsection Material 0\n  set Young's modulus = 1\n"
-               "  set Poisson's ratio = 0.3\nend\n"
-               "subsection Boundary 0\n  set Pressure = 1\nend\n"
-               "subsection Boundary 2\n  set Constrained components = z\nend\n"
-               "subsection Boundary 3\n  set Constrained components = z\nend\n"
-               "subsection Monitors\n  set Displacement boundary id = 0\nend\n");
+        const thinlayer::Parameters p = read(
+          "subsection Kinematics\n  set Type = fourier\n"
+          "  set Harmonics = 0\nend\n"
+          "subsection Material 0\n  set Young's modulus = 1\n"
+          "  set Poisson's ratio = 0.3\nend\n"
+          "subsection Boundary 0\n  set Pressure = 1\nend\n"
+          "subsection Boundary 2\n  set Constrained components = z\nend\n"
+          "subsection Boundary 3\n  set Constrained components = z\nend\n"
+          "subsection Monitors\n  set Displacement boundary id = 0\nend\n");
         thinlayer::check_ids(p, tria);
         thinlayer::Analysis<2> analysis(p, tria);
         analysis.setup();
@@ -126,10 +122,8 @@ namespace
                                               errors,
                                               quadrature,
                                               norm);
-            table.add_value(name,
-                            VectorTools::compute_global_error(tria,
-                                                              errors,
-                                                              norm));
+            table.add_value(
+              name, VectorTools::compute_global_error(tria, errors, norm));
           }
       }
     for (const auto &column : {"L2", "H1"})
@@ -141,7 +135,8 @@ namespace
                                          ConvergenceTable::reduction_rate_log2,
                                          2);
       }
-    std::cout << "1. Harmonic 0, Lame thick cylinder (rates are orders in h):\n";
+    std::cout
+      << "1. Harmonic 0, Lame thick cylinder (rates are orders in h):\n";
     table.write_text(std::cout, TableHandler::org_mode_table);
   }
 
@@ -195,7 +190,7 @@ namespace
         analysis.solve(1);
 
         // Largest nodal error against the exact amplitudes.
-        const Bending               exact;
+        const Bending                               exact;
         std::map<types::global_dof_index, Point<2>> support;
         DoFTools::map_dofs_to_support_points(analysis.get_mapping(),
                                              analysis.get_dof_handler(),
@@ -210,19 +205,21 @@ namespace
             for (unsigned int i = 0; i < dofs.size(); ++i)
               {
                 const unsigned int c = fe.system_to_component_index(i).first;
-                const double u = exact.value(support[dofs[i]], c);
-                error = std::max(error,
-                                 std::abs(analysis.get_solution(0)[dofs[i]] - u));
+                const double       u = exact.value(support[dofs[i]], c);
+                error =
+                  std::max(error,
+                           std::abs(analysis.get_solution(0)[dofs[i]] - u));
                 size = std::max(size, std::abs(u));
               }
           }
-        std::printf("  %sx%s Gauss points: largest nodal error / largest "
-                    "displacement %s\n",
-                    gauss.c_str(),
-                    gauss.c_str(),
-                    error / size < 1e-10 ?
-                      "below 1e-10 (exact)" :
-                      ("= " + std::to_string(error / size).substr(0, 8)).c_str());
+        std::printf(
+          "  %sx%s Gauss points: largest nodal error / largest "
+          "displacement %s\n",
+          gauss.c_str(),
+          gauss.c_str(),
+          error / size < 1e-10
+            ? "below 1e-10 (exact)"
+            : ("= " + std::to_string(error / size).substr(0, 8)).c_str());
       }
   }
 
@@ -260,26 +257,26 @@ namespace
         std::printf("  uniform horizontal traction, harmonic %u: largest "
                     "displacement amplitude %s\n",
                     m,
-                    a->get_solution(m).linfty_norm() < 1e-12 ?
-                      "zero (below 1e-12)" :
-                      "non-zero");
+                    a->get_solution(m).linfty_norm() < 1e-12
+                      ? "zero (below 1e-12)"
+                      : "non-zero");
     }
 
     // Harmonics 1 and 3 together against each alone, at 30 degrees.
     const std::string traction = "1 + cos(3*theta)*cos(theta); "
                                  "cos(3*theta)*sin(theta); r*cos(3*theta)";
-    auto [t13, p13, a13] = run("1, 3", traction);
-    auto [t1, p1, a1]    = run("1", traction);
-    auto [t3, p3, a3]    = run("3", traction);
-    const double   theta = numbers::PI / 6;
-    Vector<double> sum   = a1->displacement_at(theta);
+    auto [t13, p13, a13]       = run("1, 3", traction);
+    auto [t1, p1, a1]          = run("1", traction);
+    auto [t3, p3, a3]          = run("3", traction);
+    const double   theta       = numbers::PI / 6;
+    Vector<double> sum         = a1->displacement_at(theta);
     sum += a3->displacement_at(theta);
     Vector<double> both = a13->displacement_at(theta);
     both -= sum;
     std::printf("  harmonics {1, 3} against {1} + {3} at 30 degrees: "
                 "difference / size %s\n",
-                both.linfty_norm() / sum.linfty_norm() < 1e-12 ? "below 1e-12" :
-                                                                 "LARGE");
+                both.linfty_norm() / sum.linfty_norm() < 1e-12 ? "below 1e-12"
+                                                               : "LARGE");
   }
 } // namespace
 

@@ -105,6 +105,10 @@ namespace thinlayer
     /// The parameter file, as given on the command line (for messages).
     std::string parameter_file;
 
+    /// Every entry as used, overrides applied, in parameter-file format:
+    /// the record of what ran.
+    std::string effective_parameters;
+
     // Mesh
     /// The mesh or geometry file, resolved relative to the parameter file.
     std::string                   mesh_file;
