@@ -93,6 +93,15 @@ namespace thinlayer
         combinations.swap(extended);
       }
 
+    // "alpha=30, Solver/Tolerance=1e-3": the values of run r.
+    const auto describe = [&](const unsigned int r) {
+      std::string values;
+      for (unsigned int k = 0; k < base.sweep.size(); ++k)
+        values += (k ? ", " : "") + base.sweep[k].first + "=" +
+                  base.sweep[k].second[combinations[r][k]];
+      return values;
+    };
+
     const auto directory_of = [&](const unsigned int run) {
       char name[32];
       std::snprintf(name, sizeof(name), "/run-%03u", run + 1);
@@ -113,13 +122,9 @@ namespace thinlayer
           }
         catch (const InputError &e)
           {
-            std::string values;
-            for (unsigned int k = 0; k < base.sweep.size(); ++k)
-              values += (k ? ", " : "") + base.sweep[k].first + "=" +
-                        base.sweep[k].second[combinations[r][k]];
             throw InputError(file,
                              "Sweep/Values",
-                             "the run with " + values +
+                             "the run with " + describe(r) +
                                " is invalid: " + e.what());
           }
       }
@@ -137,10 +142,7 @@ namespace thinlayer
         << base.output_directory << '\n';
     for (unsigned int r = 0; r < combinations.size(); ++r)
       {
-        std::string values;
-        for (unsigned int k = 0; k < base.sweep.size(); ++k)
-          values += (k ? ", " : "") + base.sweep[k].first + "=" +
-                    base.sweep[k].second[combinations[r][k]];
+        const std::string values = describe(r);
 
         csv << r + 1;
         for (unsigned int k = 0; k < base.sweep.size(); ++k)
