@@ -1,3 +1,4 @@
+#include <deal.II/base/thread_management.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
@@ -88,7 +89,10 @@ namespace thinlayer
     DynamicSparsityPattern dsp(dof_handler.n_dofs());
     for (unsigned int m = 0; m < kinematics.n_modes(); ++m)
       {
-        modes.push_back(std::make_unique<Mode>());
+        modes.push_back(std::make_unique<Mode>(
+          parameters.linear_solver == LinearSolver::cholmod
+            ? FactorisedStiffness::Method::cholmod
+            : FactorisedStiffness::Method::umfpack));
         make_mode_constraints(m);
         DoFTools::make_sparsity_pattern(dof_handler,
                                         dsp,
@@ -147,7 +151,7 @@ namespace thinlayer
           {
             mode.factorisation.factorize(mode.condensed_stiffness);
           }
-        catch (const ExceptionBase &)
+        catch (const std::exception &)
           {
             throw InputError(parameters.parameter_file,
                              "Boundary <id>/Constrained components",
@@ -393,6 +397,41 @@ namespace thinlayer
   unsigned int
   Analysis<dim>::update_stresses()
   {
+    // A fixed number of chunks, whatever the number of threads, so that the
+    // sums, and so the iterations, are the same on every machine.
+    const unsigned int n_cells  = tria.n_active_cells();
+    const unsigned int n_chunks = std::min(16u, n_cells);
+    if (chunk_body_loads.size() != n_chunks)
+      chunk_body_loads.assign(
+        n_chunks,
+        std::vector<Vector<double>>(modes.size(),
+                                    Vector<double>(dof_handler.n_dofs())));
+
+    std::vector<Threads::Task<unsigned int>> tasks;
+    for (unsigned int k = 0; k < n_chunks; ++k)
+      tasks.push_back(Threads::new_task([this, k, n_chunks, n_cells]() {
+        for (Vector<double> &v : chunk_body_loads[k])
+          v = 0;
+        return update_stresses(k * n_cells / n_chunks,
+                               (k + 1) * n_cells / n_chunks,
+                               chunk_body_loads[k]);
+      }));
+    unsigned int n_yielding = 0;
+    for (auto &task : tasks)
+      n_yielding += task.return_value();
+    for (unsigned int m = 0; m < modes.size(); ++m)
+      for (unsigned int k = 0; k < n_chunks; ++k)
+        modes[m]->body_load_change += chunk_body_loads[k][m];
+    return n_yielding;
+  }
+
+
+  template <int dim>
+  unsigned int
+  Analysis<dim>::update_stresses(const unsigned int           begin,
+                                 const unsigned int           end,
+                                 std::vector<Vector<double>> &body_loads)
+  {
     const unsigned int                 n          = fe.n_dofs_per_cell();
     const unsigned int                 n_q        = quadrature.size();
     const unsigned int                 n_modes    = kinematics.n_modes();
@@ -401,7 +440,7 @@ namespace thinlayer
     std::vector<double>                du(n_modes * n);
     std::vector<SymmetricTensor<2, 3>> mode_strain(n_modes * n_parts);
 
-    for (unsigned int c = 0; c < tria.n_active_cells(); ++c)
+    for (unsigned int c = begin; c < end; ++c)
       {
         const MaterialLaw             &law  = *cell_law[c];
         const SymmetricTensor<4, 3>   &D    = law.elasticity();
@@ -456,7 +495,7 @@ namespace thinlayer
                   (kinematics.station_weight(s) * point_weight[p]);
                 for (unsigned int m = 0; m < n_modes; ++m)
                   {
-                    Vector<double> &b  = modes[m]->body_load_change;
+                    Vector<double> &b  = body_loads[m];
                     const double    t1 = kinematics.T1(m, s);
                     const double    t2 = kinematics.T2(m, s);
                     for (unsigned int i = 0; i < n; ++i)

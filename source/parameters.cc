@@ -282,6 +282,12 @@ namespace thinlayer
                         Patterns::Integer(1),
                         "Iterations per load step; a step that reaches the "
                         "limit has failed (collapse).");
+      prm.declare_entry("Linear solver",
+                        "cholmod",
+                        Patterns::Selection("cholmod|umfpack"),
+                        "The direct solver of the stiffness, factorised once "
+                        "per analysis: cholmod (sparse Cholesky, the stiffness "
+                        "being symmetric positive definite) or umfpack (LU).");
       prm.declare_entry("Continue after failure",
                         "false",
                         Patterns::Bool(),
@@ -829,6 +835,9 @@ namespace thinlayer
       p.tolerance              = positive(prm, "Tolerance", file, "Solver");
       p.max_iterations         = prm.get_integer("Maximum iterations");
       p.continue_after_failure = prm.get_bool("Continue after failure");
+      p.linear_solver          = (prm.get("Linear solver") == "umfpack")
+                                   ? LinearSolver::umfpack
+                                   : LinearSolver::cholmod;
       prm.leave_subsection();
 
       prm.enter_subsection("Monitors");

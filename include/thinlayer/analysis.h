@@ -15,6 +15,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <thinlayer/boundary_data.h>
+#include <thinlayer/factorised_stiffness.h>
 #include <thinlayer/kinematics.h>
 #include <thinlayer/material_law.h>
 #include <thinlayer/parameters.h>
@@ -173,13 +174,17 @@ namespace thinlayer
      */
     struct Mode
     {
+      explicit Mode(const FactorisedStiffness::Method method)
+        : factorisation(method)
+      {}
+
       /// Serendipity, dead-component and axis lines.
       AffineConstraints<double> structural_constraints;
       /// The above plus homogeneous Dirichlet lines: the solve's space.
       AffineConstraints<double> constraints;
       SparseMatrix<double>      stiffness;
       SparseMatrix<double>      condensed_stiffness;
-      SparseDirectUMFPACK       factorisation;
+      FactorisedStiffness       factorisation;
       Vector<double>            unit_prescribed_displacement;
       Vector<double>            unit_load;
       /// f - K u_prescribed at unit load factor.
@@ -217,9 +222,21 @@ namespace thinlayer
      * Stresses at every point and station for the modes' increments; adds
      * the new viscoplastic body loads to each mode's body_load_change.
      * Returns the number of yielding points and stations.
+     *
+     * The cells are split into a fixed number of chunks, run as parallel
+     * tasks, each adding to its own body-load vectors, which are then
+     * summed in a fixed order: the result does not depend on the number of
+     * threads.
      */
     unsigned int
     update_stresses();
+
+    /// update_stresses() for the active cells [@p begin, @p end), adding
+    /// the body loads to @p body_loads (one vector per mode).
+    unsigned int
+    update_stresses(const unsigned int           begin,
+                    const unsigned int           end,
+                    std::vector<Vector<double>> &body_loads);
 
     void
     update_internal_forces();
@@ -259,6 +276,9 @@ namespace thinlayer
 
     /// The component of every DoF.
     std::vector<unsigned int> dof_component;
+
+    /// Body-load increments of each chunk of cells, per mode.
+    std::vector<std::vector<Vector<double>>> chunk_body_loads;
 
     double load_factor;
 

@@ -38,6 +38,13 @@ namespace thinlayer
     double dilation_angle;
   };
 
+  /// The direct solver of the constant stiffness.
+  enum class LinearSolver
+  {
+    cholmod,
+    umfpack
+  };
+
   /**
    * When an iteration of the constant-stiffness method has converged.
    */
@@ -141,6 +148,7 @@ namespace thinlayer
     double               tolerance;
     unsigned int         max_iterations;
     bool                 continue_after_failure;
+    LinearSolver         linear_solver;
 
     // Monitors
     LoadMeasure        load_measure;

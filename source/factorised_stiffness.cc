@@ -1,0 +1,132 @@
+#include <thinlayer/factorised_stiffness.h>
+
+#include <stdexcept>
+#include <vector>
+
+#include <suitesparse/cholmod.h>
+
+namespace thinlayer
+{
+  struct FactorisedStiffness::Cholmod
+  {
+    Cholmod()
+    {
+      cholmod_l_start(&common);
+      common.supernodal = CHOLMOD_SUPERNODAL;
+    }
+
+    ~Cholmod()
+    {
+      clear();
+      cholmod_l_finish(&common);
+    }
+
+    void
+    clear()
+    {
+      for (cholmod_dense **d : {&x, &y, &e})
+        if (*d)
+          cholmod_l_free_dense(d, &common);
+      if (factor)
+        cholmod_l_free_factor(&factor, &common);
+    }
+
+    cholmod_common  common;
+    cholmod_factor *factor = nullptr;
+    // Reused by every solve, so that it allocates nothing.
+    cholmod_dense *x = nullptr, *y = nullptr, *e = nullptr;
+  };
+
+
+  FactorisedStiffness::FactorisedStiffness(const Method method)
+    : method(method)
+    , cholmod(method == Method::cholmod ? std::make_unique<Cholmod>() : nullptr)
+  {}
+
+
+  FactorisedStiffness::~FactorisedStiffness() = default;
+
+
+  void
+  FactorisedStiffness::factorize(const SparseMatrix<double> &matrix)
+  {
+    if (method == Method::umfpack)
+      {
+        umfpack.factorize(matrix);
+        return;
+      }
+
+    cholmod->clear();
+    cholmod_common &c = cholmod->common;
+    const auto      n = matrix.m();
+
+    // The matrix is symmetric, so its rows are its columns: the CSR arrays
+    // of deal.II serve as CSC, of which CHOLMOD reads the upper triangle.
+    cholmod_sparse *A            = cholmod_l_allocate_sparse(n,
+                                                  n,
+                                                  matrix.n_nonzero_elements(),
+                                                  /*sorted=*/0,
+                                                  /*packed=*/1,
+                                                  /*stype=*/1,
+                                                  CHOLMOD_REAL,
+                                                  &c);
+    auto           *column_start = static_cast<SuiteSparse_long *>(A->p);
+    auto           *row          = static_cast<SuiteSparse_long *>(A->i);
+    auto           *value        = static_cast<double *>(A->x);
+    std::size_t     k            = 0;
+    for (types::global_dof_index i = 0; i < n; ++i)
+      {
+        column_start[i] = k;
+        for (auto entry = matrix.begin(i); entry != matrix.end(i); ++entry)
+          {
+            row[k]   = entry->column();
+            value[k] = entry->value();
+            ++k;
+          }
+      }
+    column_start[n] = k;
+
+    cholmod->factor = cholmod_l_analyze(A, &c);
+    const bool ok   = cholmod->factor != nullptr &&
+                    cholmod_l_factorize(A, cholmod->factor, &c) &&
+                    c.status == CHOLMOD_OK;
+    cholmod_l_free_sparse(&A, &c);
+    if (!ok)
+      throw std::runtime_error("CHOLMOD could not factorise the stiffness "
+                               "matrix: it is singular or not positive "
+                               "definite");
+  }
+
+
+  void
+  FactorisedStiffness::solve(Vector<double> &rhs)
+  {
+    if (method == Method::umfpack)
+      {
+        umfpack.solve(rhs);
+        return;
+      }
+
+    cholmod_common &c = cholmod->common;
+    cholmod_dense   b;
+    b.nrow  = rhs.size();
+    b.ncol  = 1;
+    b.nzmax = rhs.size();
+    b.d     = rhs.size();
+    b.x     = rhs.data();
+    b.z     = nullptr;
+    b.xtype = CHOLMOD_REAL;
+    b.dtype = CHOLMOD_DOUBLE;
+    cholmod_l_solve2(CHOLMOD_A,
+                     cholmod->factor,
+                     &b,
+                     nullptr,
+                     &cholmod->x,
+                     nullptr,
+                     &cholmod->y,
+                     &cholmod->e,
+                     &c);
+    const double *x = static_cast<const double *>(cholmod->x->x);
+    std::copy(x, x + rhs.size(), rhs.begin());
+  }
+} // namespace thinlayer
