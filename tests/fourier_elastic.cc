@@ -17,6 +17,10 @@
 //    (the load vectors of harmonics 0, 2, 3 vanish), and a run with
 //    harmonics 1 and 3 reproduces, at a station, the sum of runs with each
 //    harmonic alone.
+// 4. The antisymmetric series, harmonic 0: torsion of a solid cylinder
+//    (radius 1, length 2) by an end shear tau_z_theta = G k r, base fixed:
+//    u_theta = k r z exactly, linear, so the Q8 solution must be exact
+//    (with 3x3 Gauss points, which integrate the r-weighted terms exactly).
 #include <deal.II/base/convergence_table.h>
 #include <deal.II/base/function.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -278,6 +282,56 @@ namespace
                 both.linfty_norm() / sum.linfty_norm() < 1e-12 ? "below 1e-12"
                                                                : "LARGE");
   }
+
+  void
+  torsion()
+  {
+    std::cout << "\n4. Antisymmetric series, harmonic 0: torsion\n";
+    Triangulation<2> tria;
+    make_rectangle(tria, 0, 1, 2, 3, 4);
+    // E = 1, nu = 0.3: G = 1/2.6; twist k = 0.01. The traction on the top
+    // face is Cartesian: tau (-sin theta, cos theta, 0) with tau = G k r.
+    const thinlayer::Parameters p =
+      read("subsection Kinematics\n  set Type = fourier\n"
+           "  set Series = antisymmetric\n  set Harmonics = 0\n"
+           "  set Axis boundary id = 0\nend\n"
+           "subsection Discretisation\n  set Gauss points per direction = 3\n"
+           "end\n"
+           "subsection Material 0\n  set Young's modulus = 1\n"
+           "  set Poisson's ratio = 0.3\nend\n"
+           "subsection Boundary 2\n  set Constrained components = r, z, theta\n"
+           "end\n"
+           "subsection Boundary 3\n  set Traction = -0.01/2.6*r*sin(theta); "
+           "0.01/2.6*r*cos(theta); 0\nend\n"
+           "subsection Monitors\n  set Displacement boundary id = 3\nend\n");
+    thinlayer::check_ids(p, tria);
+    thinlayer::Analysis<2> analysis(p, tria);
+    analysis.setup();
+    analysis.solve(1);
+
+    std::map<types::global_dof_index, Point<2>> support;
+    DoFTools::map_dofs_to_support_points(analysis.get_mapping(),
+                                         analysis.get_dof_handler(),
+                                         support);
+    const auto &fe    = analysis.get_dof_handler().get_fe();
+    double      error = 0;
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    for (const auto &cell : analysis.get_dof_handler().active_cell_iterators())
+      {
+        cell->get_dof_indices(dofs);
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          {
+            const unsigned int c = fe.system_to_component_index(i).first;
+            const Point<2>    &x = support[dofs[i]];
+            const double exact = (c == 2) ? 0.01 * x[0] * x[1] : 0.;
+            error =
+              std::max(error, std::abs(analysis.get_solution(0)[dofs[i]] - exact));
+          }
+      }
+    // The largest twist displacement is k r z = 0.02.
+    std::printf("  largest nodal error / 0.02: %s\n",
+                error / 0.02 < 1e-10 ? "below 1e-10 (exact)" : "LARGE");
+  }
 } // namespace
 
 int
@@ -286,4 +340,5 @@ main()
   harmonic_0();
   harmonic_1();
   superposition();
+  torsion();
 }
