@@ -22,6 +22,8 @@ if [ "$which" = case1 ] || [ "$which" = all ]; then
     "$thinlayer" prm/case1-$figure.prm
     $plot scripts/plot_case1.py frictional output/case1-$figure
   done
+  "$thinlayer" prm/case1-stability-map.prm
+  $plot scripts/plot_stability.py output/case1-stability-map
   "$thinlayer" prm/prandtl-strip-footing.prm
   $plot scripts/plot_scene.py output/prandtl-strip-footing "(2 + pi) c"
 fi

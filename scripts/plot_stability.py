@@ -1,0 +1,79 @@
+#!/usr/bin/python3
+"""Stability map of a sweep over aspect ratio and tolerance.
+
+    /usr/bin/python3 scripts/plot_stability.py OUTPUT_DIR
+
+Reads OUTPUT_DIR/sweep.csv (swept over aspect_ratio and Solver/Tolerance)
+and each run's history.csv, and writes stability.png: for every aspect ratio
+and tolerance, the error of the last converged load against the analytic
+value ('x' where no step failed, i.e. collapse was not detected) and the
+drift into illegal stress space, the largest max_yield_ratio over the
+converged steps. stability.md has the same as a table.
+"""
+import csv
+import math
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def main(directory):
+    with open(os.path.join(directory, "sweep.csv"), newline="") as f:
+        rows = list(csv.DictReader(f))
+    ratios = sorted({r["aspect_ratio"] for r in rows}, key=float)
+    tols = sorted({r["Solver/Tolerance"] for r in rows}, key=float, reverse=True)
+    error = [[math.nan] * len(tols) for _ in ratios]
+    drift = [[math.nan] * len(tols) for _ in ratios]
+    detected = [[False] * len(tols) for _ in ratios]
+    lines = ["| aspect ratio | TOL | collapse detected | error | drift (max yield ratio) "
+             "| iterations |", "|---|---|---|---|---|---|"]
+    for r in rows:
+        i, j = ratios.index(r["aspect_ratio"]), tols.index(r["Solver/Tolerance"])
+        with open(os.path.join(directory, "run-%03d" % int(r["run"]), "history.csv"),
+                  newline="") as f:
+            steps = [s for s in csv.DictReader(f) if s["converged"] == "1"]
+        ratios_of_steps = [float(s["max_yield_ratio"]) for s in steps if s["max_yield_ratio"]]
+        error[i][j] = 100 * float(r["relative_error"])
+        drift[i][j] = max(ratios_of_steps) if ratios_of_steps else math.nan
+        detected[i][j] = r["converged"] == "0"
+        lines.append("| %s | %s | %s | %+.1f%% | %.2e | %s |" % (
+            r["aspect_ratio"], r["Solver/Tolerance"], "yes" if detected[i][j] else "no",
+            error[i][j], drift[i][j], r["total_iterations"]))
+
+    fig, axes = plt.subplots(1, 2, figsize=(12, 4))
+    panels = [(error, "error of the collapse load (%)", "RdBu_r", False),
+              (drift, "drift: log10 max yield ratio", "viridis", True)]
+    for ax, (data, title, cmap, log) in zip(axes, panels):
+        shown = [[math.log10(v) if log and v > 0 else (v if not log else math.nan)
+                  for v in row] for row in data]
+        limit = max(abs(v) for row in shown for v in row if not math.isnan(v)) or 1
+        image = ax.imshow(shown, cmap=cmap, aspect="auto",
+                          vmin=-limit if not log else None, vmax=limit if not log else None)
+        fig.colorbar(image, ax=ax)
+        for i in range(len(ratios)):
+            for j in range(len(tols)):
+                text = ("x " if not detected[i][j] else "") + (
+                    "%+.0f" % data[i][j] if not log else "%.0e" % data[i][j])
+                ax.text(j, i, text, ha="center", va="center", fontsize=7)
+        ax.set_xticks(range(len(tols)))
+        ax.set_xticklabels(tols)
+        ax.set_yticks(range(len(ratios)))
+        ax.set_yticklabels(ratios)
+        ax.set_xlabel("tolerance TOL")
+        ax.set_ylabel("interface aspect ratio")
+        ax.set_title(title + ("\n(x: collapse not detected)" if not log else ""), fontsize=9)
+    fig.tight_layout()
+    fig.savefig(os.path.join(directory, "stability.png"), dpi=120)
+    with open(os.path.join(directory, "stability.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 2:
+        sys.exit(__doc__)
+    main(sys.argv[1])
