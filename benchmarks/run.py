@@ -1,0 +1,149 @@
+#!/usr/bin/python3
+"""Speed and accuracy benchmarks of thinlayer: the results are not tests.
+
+    /usr/bin/python3 benchmarks/run.py [--quick] [--repeat N]
+
+Runs each configuration below N times (default 3), and writes into
+output/benchmarks/: benchmarks.csv (one row per configuration: error of the
+collapse load against the analytic value, iterations, median and spread of
+the wall time, peak memory), benchmarks.md (the same as a table, also
+printed) and benchmarks.png (error against median wall time per case, one
+series per linear solver and tolerance). --quick runs the smallest meshes
+only. Peak memory is the maximum resident set size reported by
+/usr/bin/time (about 170 MB of it are the libraries deal.II loads). The
+full run takes about 10 minutes on the 2-core machine.
+"""
+import csv
+import json
+import os
+import statistics
+import subprocess
+import sys
+
+TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+THINLAYER = os.path.join(TOP, "build", "thinlayer")
+OUT = os.path.join(TOP, "output", "benchmarks")
+
+# case: (parameter file, {mesh level: geometry parameters})
+CASES = {
+    "prandtl": ("prm/prandtl-strip-footing.prm", {
+        1: "half_width=1, width=5, depth=3, n_footing=8, n_side=12, n_depth=12, growth=1.15",
+        2: "half_width=1, width=5, depth=3, n_footing=16, n_side=24, n_depth=24, growth=1.07",
+        3: "half_width=1, width=5, depth=3, n_footing=32, n_side=48, n_depth=48, growth=1.035",
+    }),
+    "case1-adhesive": ("prm/case1-inclined-adhesive.prm", {
+        1: "alpha=30, aspect_ratio=100, elements_along=8, elements_block=8",
+        2: "alpha=30, aspect_ratio=100, elements_along=16, elements_block=16",
+        3: "alpha=30, aspect_ratio=100, elements_along=32, elements_block=32",
+    }),
+    "case2": ("prm/case2-strip-footing.prm", {
+        1: "half_width=1, width=5, depth=3, aspect_ratio=10, n_footing=8, n_side=12, n_depth=10, interface_beyond_footing=1, refinement=1",
+        2: "half_width=1, width=5, depth=3, aspect_ratio=10, n_footing=8, n_side=12, n_depth=10, interface_beyond_footing=1, refinement=2",
+    }),
+    "case3": ("prm/case3-circular-footing.prm", {
+        1: "half_width=1, width=5, depth=3, aspect_ratio=10, n_footing=8, n_side=12, n_depth=10, interface_beyond_footing=1, refinement=1",
+    }),
+}
+SOLVERS = ["cholmod", "umfpack"]
+# UMFPACK is the comparison; on the finest meshes it alone would take most
+# of the run (about 2 minutes a run for Prandtl at level 3).
+MAX_LEVEL = {"cholmod": 3, "umfpack": 2}
+TOLERANCES = ["1e-3", "1e-4", "1e-5"]
+
+
+def run_once(prm, geometry, solver, tol, directory):
+    command = ["/usr/bin/time", "-f", "%M", THINLAYER, os.path.join(TOP, prm),
+               "-s", "Mesh/Geometry parameters=" + geometry,
+               "-s", "Solver/Linear solver=" + solver,
+               "-s", "Solver/Tolerance=" + tol,
+               "-s", "Output/Directory=" + directory,
+               "-s", "Output/Write VTU=false",
+               "-s", "Output/Print timing=false"]
+    done = subprocess.run(command, capture_output=True, text=True, check=True)
+    peak_kb = int(done.stderr.strip().splitlines()[-1])
+    with open(os.path.join(directory, "summary.json")) as f:
+        return json.load(f), peak_kb
+
+
+def main():
+    quick = "--quick" in sys.argv
+    repeat = int(sys.argv[sys.argv.index("--repeat") + 1]) if "--repeat" in sys.argv else 3
+    os.makedirs(OUT, exist_ok=True)
+    rows = []
+    for case, (prm, levels) in CASES.items():
+        for level, geometry in sorted(levels.items()):
+            if quick and level > 1:
+                continue
+            for solver in SOLVERS:
+                if level > MAX_LEVEL[solver]:
+                    continue
+                for tol in TOLERANCES:
+                    times, summary, peak = [], None, 0
+                    for k in range(repeat):
+                        directory = os.path.join(OUT, "runs", "%s-%d-%s-%s" % (case, level, solver, tol))
+                        summary, peak_kb = run_once(prm, geometry, solver, tol, directory)
+                        times.append(summary["wall_seconds"])
+                        peak = max(peak, peak_kb)
+                    row = {
+                        "case": case, "mesh_level": level, "cells": summary["cells"],
+                        "equations": summary["equations"], "linear_solver": solver,
+                        "tolerance": tol,
+                        "collapse_detected": int(not summary["converged"]),
+                        "last_converged_load": summary["last_converged_load"],
+                        "relative_error": summary["relative_error"],
+                        "total_iterations": summary["total_iterations"],
+                        "wall_median_s": statistics.median(times),
+                        "wall_min_s": min(times), "wall_max_s": max(times),
+                        "peak_memory_mb": round(peak / 1024, 1),
+                    }
+                    rows.append(row)
+                    print("%-15s level %d %-8s TOL %-5s error %+6.1f%% %6d iterations %8.3f s "
+                          "(median of %d) %7.1f MB" % (
+                              case, level, solver, tol, 100 * (row["relative_error"] or 0),
+                              row["total_iterations"], row["wall_median_s"], repeat,
+                              row["peak_memory_mb"]), flush=True)
+    with open(os.path.join(OUT, "benchmarks.csv"), "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+        writer.writeheader()
+        writer.writerows(rows)
+    lines = ["| case | level | cells | equations | solver | TOL | collapse detected | error "
+             "| iterations | wall s (median) | peak MB |", "|" + "---|" * 11]
+    for r in rows:
+        lines.append("| %s | %d | %d | %d | %s | %s | %s | %+.1f%% | %d | %.3f | %.1f |" % (
+            r["case"], r["mesh_level"], r["cells"], r["equations"], r["linear_solver"],
+            r["tolerance"], "yes" if r["collapse_detected"] else "no",
+            100 * (r["relative_error"] or 0), r["total_iterations"], r["wall_median_s"],
+            r["peak_memory_mb"]))
+    with open(os.path.join(OUT, "benchmarks.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+    chart(rows)
+
+
+def chart(rows):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    cases = list(dict.fromkeys(r["case"] for r in rows))
+    fig, axes = plt.subplots(1, len(cases), figsize=(4.5 * len(cases), 4), squeeze=False)
+    for ax, case in zip(axes[0], cases):
+        for solver, marker in zip(SOLVERS, "os"):
+            for tol, colour in zip(TOLERANCES, ("C0", "C1", "C2")):
+                pts = sorted((r for r in rows if r["case"] == case and r["linear_solver"] == solver
+                              and r["tolerance"] == tol), key=lambda r: r["mesh_level"])
+                ax.plot([r["wall_median_s"] for r in pts],
+                        [abs(100 * (r["relative_error"] or 0)) for r in pts],
+                        marker + ("-" if solver == "cholmod" else "--"), color=colour,
+                        label="%s, TOL %s" % (solver, tol))
+        ax.set_xscale("log")
+        ax.set_xlabel("wall time, median (s)")
+        ax.set_ylabel("|error| of the collapse load (%)")
+        ax.set_title(case + " (points: mesh levels)", fontsize=9)
+        ax.grid(alpha=0.3)
+    axes[0][0].legend(fontsize=6)
+    fig.tight_layout()
+    fig.savefig(os.path.join(OUT, "benchmarks.png"), dpi=120)
+
+
+if __name__ == "__main__":
+    main()
