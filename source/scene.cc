@@ -4,6 +4,8 @@
 #include <thinlayer/input_error.h>
 #include <thinlayer/scene.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -186,6 +188,38 @@ namespace thinlayer
         for (const auto &face : cell->face_iterators())
           if (face->at_boundary())
             mesh_boundaries.insert(face->boundary_id());
+      }
+
+    if (p.fourier)
+      {
+        // The mesh is the r-z plane: r = x >= 0, and faces on the axis need
+        // the per-harmonic axis conditions.
+        double size = 0, min_x = 0;
+        for (const auto &v : tria.get_vertices())
+          {
+            size  = std::max(size, v.norm());
+            min_x = std::min(min_x, v[0]);
+          }
+        if (min_x < -1e-12 * size)
+          throw InputError(p.parameter_file,
+                           "Kinematics/Type",
+                           "Fourier kinematics need the mesh in the r-z plane "
+                           "with r = x >= 0, but it reaches x = " +
+                             std::to_string(min_x));
+        std::set<unsigned int> on_axis;
+        for (const auto &face : tria.active_face_iterators())
+          if (face->at_boundary() &&
+              std::abs(face->vertex(0)[0]) <= 1e-12 * size &&
+              std::abs(face->vertex(1)[0]) <= 1e-12 * size)
+            on_axis.insert(face->boundary_id());
+        if (!on_axis.empty() &&
+            on_axis.count(static_cast<unsigned int>(p.axis_boundary_id)) == 0)
+          throw InputError(p.parameter_file,
+                           "Kinematics/Axis boundary id",
+                           "the mesh reaches the axis r = 0 on boundary id " +
+                             describe(on_axis, true) +
+                             ": set that id, so that every harmonic gets its "
+                             "axis conditions");
       }
 
     for (const auto id : mesh_materials)

@@ -198,6 +198,17 @@ main()
               "20\n  set Dilation angle = 25\n"));
   check("a dilation angle above the friction angle", {"dilation.prm"});
 
+  write("axis.prm",
+        "subsection Mesh\n  set File = good.geo\nend\n"
+        "subsection Kinematics\n  set Type = fourier\nend\n"
+        "subsection Material 1\nend\nsubsection Material 2\nend\n"
+        "subsection Boundary 1\n  set Constrained components = r, z, theta\n"
+        "end\n"
+        "subsection Boundary 2\n  set Traction = 1; 0; 0\nend\n"
+        "subsection Monitors\n  set Displacement boundary id = 2\nend\n"
+        "subsection Output\n  set Directory = results\nend\n");
+  check("a Fourier mesh on the axis without an axis boundary id", {"axis.prm"});
+
   check("an override of an entry that does not exist",
         {"good.prm", "-s", "Material 1/Stiffness=3"});
   check("an override with a value out of its pattern",

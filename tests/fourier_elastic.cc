@@ -321,11 +321,12 @@ namespace
         cell->get_dof_indices(dofs);
         for (unsigned int i = 0; i < dofs.size(); ++i)
           {
-            const unsigned int c = fe.system_to_component_index(i).first;
-            const Point<2>    &x = support[dofs[i]];
-            const double exact = (c == 2) ? 0.01 * x[0] * x[1] : 0.;
+            const unsigned int c     = fe.system_to_component_index(i).first;
+            const Point<2>    &x     = support[dofs[i]];
+            const double       exact = (c == 2) ? 0.01 * x[0] * x[1] : 0.;
             error =
-              std::max(error, std::abs(analysis.get_solution(0)[dofs[i]] - exact));
+              std::max(error,
+                       std::abs(analysis.get_solution(0)[dofs[i]] - exact));
           }
       }
     // The largest twist displacement is k r z = 0.02.
