@@ -16,14 +16,17 @@ namespace thinlayer
 {
   namespace
   {
-    /// max_i |v_i| of a vector after condensation onto the free DoFs.
+    /// max_i |v_i| of a vector after condensation onto the free DoFs;
+    /// @p work holds the condensed copy (reused, so nothing is allocated
+    /// in the iterations).
     double
     condensed_max(const Vector<double>            &v,
-                  const AffineConstraints<double> &constraints)
+                  const AffineConstraints<double> &constraints,
+                  Vector<double>                  &work)
     {
-      Vector<double> condensed(v);
-      constraints.condense(condensed);
-      return condensed.linfty_norm();
+      work = v;
+      constraints.condense(work);
+      return work.linfty_norm();
     }
 
     Kinematics
@@ -136,7 +139,8 @@ namespace thinlayer
                                   &mode.internal_forces,
                                   &mode.body_loads,
                                   &mode.body_load_change,
-                                  &mode.previous_increment})
+                                  &mode.previous_increment,
+                                  &mode.condensed})
           v->reinit(n);
       }
 
@@ -584,10 +588,12 @@ namespace thinlayer
               {
                 change = std::max(change,
                                   condensed_max(mode.body_load_change,
-                                                mode.constraints));
-                size =
-                  std::max(size,
-                           condensed_max(mode.body_loads, mode.constraints));
+                                                mode.constraints,
+                                                mode.condensed));
+                size   = std::max(size,
+                                condensed_max(mode.body_loads,
+                                              mode.constraints,
+                                              mode.condensed));
               }
             else
               {

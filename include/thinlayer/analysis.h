@@ -196,6 +196,8 @@ namespace thinlayer
       Vector<double> body_loads;
       Vector<double> body_load_change;
       Vector<double> previous_increment;
+      /// A condensed copy for the convergence criterion.
+      Vector<double> condensed;
     };
 
     void
