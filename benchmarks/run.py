@@ -71,6 +71,18 @@ def run_once(prm, geometry, solver, tol, directory, extra=()):
         return json.load(f), peak_kb
 
 
+def write_results(rows, name, header, format_row):
+    """NAME.csv (every field) and NAME.md (a table, also printed) in OUT."""
+    with open(os.path.join(OUT, name + ".csv"), "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+        writer.writeheader()
+        writer.writerows(rows)
+    lines = [header, "|" + "---|" * (header.count("|") - 1)] + [format_row(r) for r in rows]
+    with open(os.path.join(OUT, name + ".md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+
 def median_run(prm, geometry, solver, tol, directory, repeat, extra=()):
     """The summary of the last of @p repeat runs, their median time, peak memory."""
     times, summary, peak = [], None, 0
@@ -107,20 +119,14 @@ def ladder(repeat):
                         case, level, element, row["gauss_points"],
                         100 * (row["relative_error"] or 0), row["total_iterations"], median),
                         flush=True)
-    with open(os.path.join(OUT, "ladder.csv"), "w", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
-        writer.writeheader()
-        writer.writerows(rows)
-    lines = ["| case | level | element | Gauss | equations | collapse detected | error | "
-             "iterations | wall s (median) |", "|" + "---|" * 9]
-    for r in rows:
-        lines.append("| %s | %d | %s | %s | %d | %s | %+.1f%% | %d | %.3f |" % (
-            r["case"], r["mesh_level"], r["element"], r["gauss_points"], r["equations"],
-            "yes" if r["collapse_detected"] else "no", 100 * (r["relative_error"] or 0),
-            r["total_iterations"], r["wall_median_s"]))
-    with open(os.path.join(OUT, "ladder.md"), "w") as f:
-        f.write("\n".join(lines) + "\n")
-    print("\n".join(lines))
+    write_results(rows, "ladder",
+                  "| case | level | element | Gauss | equations | collapse detected | error "
+                  "| iterations | wall s (median) |",
+                  lambda r: "| %s | %d | %s | %s | %d | %s | %+.1f%% | %d | %.3f |" % (
+                      r["case"], r["mesh_level"], r["element"], r["gauss_points"],
+                      r["equations"], "yes" if r["collapse_detected"] else "no",
+                      100 * (r["relative_error"] or 0), r["total_iterations"],
+                      r["wall_median_s"]))
 
     import matplotlib
     matplotlib.use("Agg")
@@ -181,21 +187,15 @@ def main():
                               case, level, solver, tol, 100 * (row["relative_error"] or 0),
                               row["total_iterations"], row["wall_median_s"], repeat,
                               row["peak_memory_mb"]), flush=True)
-    with open(os.path.join(OUT, "benchmarks.csv"), "w", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
-        writer.writeheader()
-        writer.writerows(rows)
-    lines = ["| case | level | cells | equations | solver | TOL | collapse detected | error "
-             "| iterations | wall s (median) | peak MB |", "|" + "---|" * 11]
-    for r in rows:
-        lines.append("| %s | %d | %d | %d | %s | %s | %s | %+.1f%% | %d | %.3f | %.1f |" % (
-            r["case"], r["mesh_level"], r["cells"], r["equations"], r["linear_solver"],
-            r["tolerance"], "yes" if r["collapse_detected"] else "no",
-            100 * (r["relative_error"] or 0), r["total_iterations"], r["wall_median_s"],
-            r["peak_memory_mb"]))
-    with open(os.path.join(OUT, "benchmarks.md"), "w") as f:
-        f.write("\n".join(lines) + "\n")
-    print("\n".join(lines))
+    write_results(rows, "benchmarks",
+                  "| case | level | cells | equations | solver | TOL | collapse detected "
+                  "| error | iterations | wall s (median) | peak MB |",
+                  lambda r: "| %s | %d | %d | %d | %s | %s | %s | %+.1f%% | %d | %.3f | %.1f |" % (
+                      r["case"], r["mesh_level"], r["cells"], r["equations"],
+                      r["linear_solver"], r["tolerance"],
+                      "yes" if r["collapse_detected"] else "no",
+                      100 * (r["relative_error"] or 0), r["total_iterations"],
+                      r["wall_median_s"], r["peak_memory_mb"]))
     chart(rows)
 
 
