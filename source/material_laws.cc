@@ -2,6 +2,7 @@
 #include <thinlayer/material_law.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -49,6 +50,45 @@ namespace thinlayer
       return gradient;
     }
 
+
+    /**
+     * The tangent of an isotropic function of a symmetric tensor, sigma =
+     * sum_i sigma_i(trial_1..3) e_i (x) e_i, from the derivatives of its
+     * principal values, @p principal_tangent(i, j) = d sigma_i / d trial_j,
+     * and the spin of its eigenvectors: the off-diagonal terms
+     * (sigma_i - sigma_j) / (trial_i - trial_j) (their limit for equal
+     * trial values).
+     */
+    SymmetricTensor<4, 3>
+    isotropic_function_tangent(
+      const std::array<std::pair<double, Tensor<1, 3>>, 3> &trial,
+      const std::array<double, 3>                          &sigma,
+      const double (&principal_tangent)[3][3])
+    {
+      std::array<SymmetricTensor<2, 3>, 3> E;
+      for (unsigned int i = 0; i < 3; ++i)
+        E[i] = symmetrize(outer_product(trial[i].second, trial[i].second));
+      SymmetricTensor<4, 3> T;
+      for (unsigned int i = 0; i < 3; ++i)
+        for (unsigned int j = 0; j < 3; ++j)
+          if (principal_tangent[i][j] != 0)
+            T += principal_tangent[i][j] * outer_product(E[i], E[j]);
+      for (unsigned int i = 0; i < 3; ++i)
+        for (unsigned int j = i + 1; j < 3; ++j)
+          {
+            const double gap = trial[i].first - trial[j].first;
+            const double scale =
+              std::abs(trial[0].first) + std::abs(trial[2].first);
+            const double ratio =
+              (std::abs(gap) > 1e-10 * scale)
+                ? (sigma[i] - sigma[j]) / gap
+                : principal_tangent[i][i] - principal_tangent[i][j];
+            const SymmetricTensor<2, 3> M =
+              symmetrize(outer_product(trial[i].second, trial[j].second));
+            T += (2 * ratio) * outer_product(M, M);
+          }
+      return T;
+    }
 
     /**
      * Elastic only: no yield surface.
@@ -99,6 +139,30 @@ namespace thinlayer
       viscoplastic_time_step() const override
       {
         return 4 * (1 + poissons_ratio) / (3 * youngs_modulus);
+      }
+
+      /**
+       * Radial return: the deviator is scaled back onto the cylinder,
+       * s = sqrt(2) c s_trial / |s_trial|, the mean stress is kept; the
+       * tangent is K I(x)I + 2G sqrt(2) c / |s_trial| (I_dev - n (x) n),
+       * n = s_trial / |s_trial|.
+       */
+      ReturnMapping
+      return_mapping(const SymmetricTensor<2, 3> &trial) const override
+      {
+        if (yield_function(trial) <= 0)
+          return {trial, stiffness, ReturnRegion::elastic};
+        const SymmetricTensor<2, 3> s    = deviator(trial);
+        const double                norm = s.norm();
+        const SymmetricTensor<2, 3> n    = s / norm;
+        const double                beta = std::sqrt(2.) * cohesion / norm;
+        const double K = youngs_modulus / (3 * (1 - 2 * poissons_ratio));
+        const double G = youngs_modulus / (2 * (1 + poissons_ratio));
+        const SymmetricTensor<2, 3> I = unit_symmetric_tensor<3>();
+        return {trace(trial) / 3 * I + beta * s,
+                K * outer_product(I, I) +
+                  (2 * G * beta) * (deviator_tensor<3>() - outer_product(n, n)),
+                ReturnRegion::surface};
       }
 
     private:
@@ -186,6 +250,158 @@ namespace thinlayer
                (youngs_modulus * (1 - 2 * nu + sin_phi * sin_phi));
       }
 
+      bool
+      is_associated() const override
+      {
+        return sin_psi == sin_phi;
+      }
+
+      /**
+       * The return in principal-stress space (s1 >= s2 >= s3, as in de
+       * Souza Neto, Peric and Owen, Computational Methods for Plasticity,
+       * section 8.2), where the surface is made of planes
+       *   F_13 = (s1 - s3)/2 + (s1 + s3)/2 sin(phi) - c cos(phi)
+       * and its neighbours F_23, F_12, and the flow of plane ij is
+       * (e_i - e_j)/2 + (e_i + e_j)/2 sin(psi). With perfect plasticity the
+       * planes are linear in the principal stresses, so each candidate
+       * return is a linear solve: first the main plane F_13; if that breaks
+       * the ordering, the edge with F_23 (s1 = s2) or F_12 (s2 = s3); if
+       * that gives a negative multiplier, the apex s = c cot(phi) (which
+       * Tresca, phi = 0, does not have).
+       */
+      ReturnMapping
+      return_mapping(const SymmetricTensor<2, 3> &trial) const override
+      {
+        if (yield_function(trial) <= 0)
+          return {trial, stiffness, ReturnRegion::elastic};
+
+        const auto            eig = eigenvectors(trial);
+        std::array<double, 3> st;
+        for (unsigned int i = 0; i < 3; ++i)
+          st[i] = eig[i].first;
+        const double K = youngs_modulus / (3 * (1 - 2 * poissons_ratio));
+        const double G = youngs_modulus / (2 * (1 + poissons_ratio));
+        // Principal elasticity.
+        double Dp[3][3];
+        for (unsigned int i = 0; i < 3; ++i)
+          for (unsigned int j = 0; j < 3; ++j)
+            Dp[i][j] = K - 2 * G / 3 + (i == j ? 2 * G : 0);
+
+        // Normal and flow of the plane of principal stresses i > j.
+        const auto plane = [](const unsigned int i,
+                              const unsigned int j,
+                              const double       sin_angle) {
+          std::array<double, 3> v{{0, 0, 0}};
+          v[i] = 0.5 * (1 + sin_angle);
+          v[j] = 0.5 * (-1 + sin_angle);
+          return v;
+        };
+        const auto dot = [](const std::array<double, 3> &a,
+                            const std::array<double, 3> &b) {
+          return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+        };
+        const auto D_times = [&Dp](const std::array<double, 3> &v) {
+          std::array<double, 3> w;
+          for (unsigned int i = 0; i < 3; ++i)
+            w[i] = Dp[i][0] * v[0] + Dp[i][1] * v[1] + Dp[i][2] * v[2];
+          return w;
+        };
+        const double scale    = std::abs(st[0]) + std::abs(st[2]) + cohesion;
+        const double slack    = 1e-12 * scale;
+        const double strength = cohesion * cos_phi;
+
+        // Tries the return onto the planes @p active (one or two); fills
+        // sigma and the principal tangent; false if a multiplier is
+        // negative or the ordering breaks.
+        std::array<double, 3> sigma;
+        double                P[3][3];
+        const auto            try_return =
+          [&](
+            const unsigned int                                          k,
+            const std::array<std::pair<unsigned int, unsigned int>, 2> &active,
+            const bool check_order) {
+            std::array<std::array<double, 3>, 2> n, Dm;
+            for (unsigned int a = 0; a < k; ++a)
+              {
+                n[a] = plane(active[a].first, active[a].second, sin_phi);
+                Dm[a] =
+                  D_times(plane(active[a].first, active[a].second, sin_psi));
+              }
+            // A(a, b) = n_a . D m_b, and the multipliers A^-1 F_trial.
+            double A[2][2], Ainv[2][2], gamma[2];
+            for (unsigned int a = 0; a < k; ++a)
+              for (unsigned int b = 0; b < k; ++b)
+                A[a][b] = dot(n[a], Dm[b]);
+            if (k == 1)
+              Ainv[0][0] = 1 / A[0][0];
+            else
+              {
+                const double det = A[0][0] * A[1][1] - A[0][1] * A[1][0];
+                Ainv[0][0]       = A[1][1] / det;
+                Ainv[1][1]       = A[0][0] / det;
+                Ainv[0][1]       = -A[0][1] / det;
+                Ainv[1][0]       = -A[1][0] / det;
+              }
+            for (unsigned int a = 0; a < k; ++a)
+              {
+                gamma[a] = 0;
+                for (unsigned int b = 0; b < k; ++b)
+                  gamma[a] += Ainv[a][b] * (dot(n[b], st) - strength);
+                if (gamma[a] < -slack / A[a][a])
+                  return false;
+              }
+            sigma = st;
+            for (unsigned int a = 0; a < k; ++a)
+              for (unsigned int i = 0; i < 3; ++i)
+                sigma[i] -= gamma[a] * Dm[a][i];
+            if (check_order &&
+                (sigma[1] > sigma[0] + slack || sigma[2] > sigma[1] + slack))
+              return false;
+            // d sigma / d trial = I - sum_ab D m_a Ainv_ab n_b^T.
+            for (unsigned int i = 0; i < 3; ++i)
+              for (unsigned int j = 0; j < 3; ++j)
+                {
+                  P[i][j] = (i == j) ? 1 : 0;
+                  for (unsigned int a = 0; a < k; ++a)
+                    for (unsigned int b = 0; b < k; ++b)
+                      P[i][j] -= Dm[a][i] * Ainv[a][b] * n[b][j];
+                }
+            return true;
+          };
+
+        ReturnRegion region = ReturnRegion::surface;
+        if (!try_return(1, {{{0, 2}, {0, 2}}}, true))
+          {
+            // Which edge: the main-plane return pushed s2 above s1, or
+            // below s3.
+            try_return(1, {{{0, 2}, {0, 2}}}, false);
+            const bool upper = (sigma[1] > sigma[0]);
+            region           = upper ? ReturnRegion::edge_s1_equals_s2
+                                     : ReturnRegion::edge_s2_equals_s3;
+            const bool ok    = upper ? try_return(2, {{{0, 2}, {1, 2}}}, true)
+                                     : try_return(2, {{{0, 2}, {0, 1}}}, true);
+            if (!ok && sin_phi > 0)
+              {
+                // The apex: a hydrostatic state at c cot(phi); perfectly
+                // plastic, so the stress does not depend on the strain.
+                region = ReturnRegion::apex;
+                sigma.fill(cohesion * cos_phi / sin_phi);
+                for (auto &row : P)
+                  for (double &v : row)
+                    v = 0;
+              }
+          }
+
+        SymmetricTensor<2, 3> stress;
+        for (unsigned int i = 0; i < 3; ++i)
+          stress +=
+            sigma[i] * symmetrize(outer_product(eig[i].second, eig[i].second));
+        // d sigma / d strain = (d sigma / d trial) : D.
+        return {stress,
+                isotropic_function_tangent(eig, sigma, P) * stiffness,
+                region};
+      }
+
     private:
       const double cohesion;
       const double sin_phi;
@@ -216,7 +432,29 @@ namespace thinlayer
     : youngs_modulus(youngs_modulus)
     , poissons_ratio(poissons_ratio)
     , stiffness(isotropic_elasticity(youngs_modulus, poissons_ratio))
+    , inverse_stiffness(invert(stiffness))
   {}
+
+
+  const SymmetricTensor<4, 3> &
+  MaterialLaw::compliance() const
+  {
+    return inverse_stiffness;
+  }
+
+
+  ReturnMapping
+  MaterialLaw::return_mapping(const SymmetricTensor<2, 3> &trial) const
+  {
+    return {trial, stiffness, ReturnRegion::elastic};
+  }
+
+
+  bool
+  MaterialLaw::is_associated() const
+  {
+    return true;
+  }
 
 
   const SymmetricTensor<4, 3> &

@@ -32,6 +32,33 @@ namespace thinlayer
   };
 
   /**
+   * Where a return mapping ended on the yield surface. For Mohr-Coulomb
+   * and Tresca in principal-stress space (s1 >= s2 >= s3): the main plane
+   * of s1 and s3, the edge where it meets the plane of s2 and s3 (s1 = s2),
+   * the edge where it meets the plane of s1 and s2 (s2 = s3), or the apex;
+   * von Mises has only its smooth surface.
+   */
+  enum class ReturnRegion
+  {
+    elastic,
+    surface,
+    edge_s1_equals_s2,
+    edge_s2_equals_s3,
+    apex
+  };
+
+  /**
+   * The result of a return mapping: the admissible stress, the consistent
+   * (algorithmic) tangent d stress / d strain, and where it ended.
+   */
+  struct ReturnMapping
+  {
+    SymmetricTensor<2, 3> stress;
+    SymmetricTensor<4, 3> tangent;
+    ReturnRegion          region;
+  };
+
+  /**
    * An elastic-perfectly plastic material at a point: isotropic elasticity,
    * and, for laws that can yield, a yield function F (F <= 0 is admissible,
    * in stress units), the direction of plastic flow dQ/dsigma, and the
@@ -78,10 +105,30 @@ namespace thinlayer
     virtual double
     viscoplastic_time_step() const;
 
+    /**
+     * The closest-point (backward Euler) projection of the elastic trial
+     * stress @p trial onto the yield surface, with the consistent tangent,
+     * for the return-mapping solution methods (initial stress, Newton).
+     * The tangent is the elasticity tensor where the trial stress is
+     * admissible.
+     */
+    virtual ReturnMapping
+    return_mapping(const SymmetricTensor<2, 3> &trial) const;
+
+    /// Whether the flow rule is associated, i.e. the consistent tangent is
+    /// symmetric (Newton can then use a Cholesky factorisation).
+    virtual bool
+    is_associated() const;
+
+    /// The inverse of elasticity(): plastic strain from a stress excess.
+    const SymmetricTensor<4, 3> &
+    compliance() const;
+
   protected:
     const double                youngs_modulus;
     const double                poissons_ratio;
     const SymmetricTensor<4, 3> stiffness;
+    const SymmetricTensor<4, 3> inverse_stiffness;
   };
 
   /**
