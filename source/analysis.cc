@@ -51,8 +51,9 @@ namespace thinlayer
     , quadrature(parameters.gauss_points_per_direction)
     , dof_handler(tria)
     , boundary_data(parameters, kinematics)
-    , n_parts(kinematics.is_fourier() ? 2 : 1)
     , time_step(std::numeric_limits<double>::infinity())
+    , n_parts(kinematics.is_fourier() ? 2 : 1)
+    , anderson(parameters.anderson_depth)
     , load_factor(0)
   {
     static_assert(dim == 2,
@@ -140,8 +141,34 @@ namespace thinlayer
                                   &mode.body_loads,
                                   &mode.body_load_change,
                                   &mode.previous_increment,
+                                  &mode.residual,
+                                  &mode.correction,
                                   &mode.condensed})
           v->reinit(n);
+
+        if (parameters.method == SolutionMethod::newton)
+          {
+            // A non-associated flow rule makes the tangent unsymmetric.
+            bool associated = true;
+            for (const auto &[id, law] : laws)
+              associated = associated && law->is_associated();
+            mode.tangent.reinit(sparsity);
+            mode.tangent_factorisation = std::make_unique<FactorisedStiffness>(
+              associated && parameters.linear_solver == LinearSolver::cholmod
+                ? FactorisedStiffness::Method::cholmod
+                : FactorisedStiffness::Method::umfpack);
+          }
+      }
+    stacked_increment.reinit(n * kinematics.n_modes());
+    stacked_correction.reinit(n * kinematics.n_modes());
+    if (parameters.method == SolutionMethod::newton)
+      {
+        // The tangent of the first load step's first iteration: elastic.
+        tangents.resize(history.size() * kinematics.n_stations());
+        for (unsigned int p = 0; p < history.size(); ++p)
+          for (unsigned int s = 0; s < kinematics.n_stations(); ++s)
+            tangents[p * kinematics.n_stations() + s] =
+              cell_law[p / quadrature.size()]->elasticity();
       }
 
     assemble_stiffness();
@@ -399,33 +426,57 @@ namespace thinlayer
 
   template <int dim>
   unsigned int
-  Analysis<dim>::update_stresses()
+  Analysis<dim>::update_stresses(const bool store_tangents)
   {
     // A fixed number of chunks, whatever the number of threads, so that the
     // sums, and so the iterations, are the same on every machine.
     const unsigned int n_cells  = tria.n_active_cells();
     const unsigned int n_chunks = std::min(16u, n_cells);
-    if (chunk_body_loads.size() != n_chunks)
-      chunk_body_loads.assign(
-        n_chunks,
-        std::vector<Vector<double>>(modes.size(),
-                                    Vector<double>(dof_handler.n_dofs())));
+    const bool         viscoplastic =
+      (parameters.method == SolutionMethod::viscoplastic);
+    for (auto *chunks : {&chunk_body_loads, &chunk_internal_forces})
+      if (chunks->size() != n_chunks &&
+          (viscoplastic == false || chunks == &chunk_body_loads))
+        chunks->assign(n_chunks,
+                       std::vector<Vector<double>>(
+                         modes.size(), Vector<double>(dof_handler.n_dofs())));
 
     std::vector<Threads::Task<unsigned int>> tasks;
     for (unsigned int k = 0; k < n_chunks; ++k)
-      tasks.push_back(Threads::new_task([this, k, n_chunks, n_cells]() {
-        for (Vector<double> &v : chunk_body_loads[k])
-          v = 0;
-        return update_stresses(k * n_cells / n_chunks,
-                               (k + 1) * n_cells / n_chunks,
-                               chunk_body_loads[k]);
-      }));
+      tasks.push_back(Threads::new_task(
+        [this, k, n_chunks, n_cells, viscoplastic, store_tangents]() {
+          for (Vector<double> &v : chunk_body_loads[k])
+            v = 0;
+          if (!viscoplastic)
+            for (Vector<double> &v : chunk_internal_forces[k])
+              v = 0;
+          return update_stresses(k * n_cells / n_chunks,
+                                 (k + 1) * n_cells / n_chunks,
+                                 chunk_body_loads[k],
+                                 viscoplastic ? chunk_body_loads[k]
+                                              : chunk_internal_forces[k],
+                                 store_tangents);
+        }));
     unsigned int n_yielding = 0;
     for (auto &task : tasks)
       n_yielding += task.return_value();
     for (unsigned int m = 0; m < modes.size(); ++m)
-      for (unsigned int k = 0; k < n_chunks; ++k)
-        modes[m]->body_load_change += chunk_body_loads[k][m];
+      {
+        Mode &mode = *modes[m];
+        if (viscoplastic)
+          for (unsigned int k = 0; k < n_chunks; ++k)
+            mode.body_load_change += chunk_body_loads[k][m];
+        else
+          {
+            mode.body_loads      = 0;
+            mode.internal_forces = 0;
+            for (unsigned int k = 0; k < n_chunks; ++k)
+              {
+                mode.body_loads += chunk_body_loads[k][m];
+                mode.internal_forces += chunk_internal_forces[k][m];
+              }
+          }
+      }
     return n_yielding;
   }
 
@@ -434,8 +485,12 @@ namespace thinlayer
   unsigned int
   Analysis<dim>::update_stresses(const unsigned int           begin,
                                  const unsigned int           end,
-                                 std::vector<Vector<double>> &body_loads)
+                                 std::vector<Vector<double>> &body_loads,
+                                 std::vector<Vector<double>> &internal_forces,
+                                 const bool                   store_tangents)
   {
+    const bool viscoplastic =
+      (parameters.method == SolutionMethod::viscoplastic);
     const unsigned int                 n          = fe.n_dofs_per_cell();
     const unsigned int                 n_q        = quadrature.size();
     const unsigned int                 n_modes    = kinematics.n_modes();
@@ -477,6 +532,57 @@ namespace thinlayer
                       strain +=
                         kinematics.T2(m, s) * mode_strain[m * n_parts + 1];
                   }
+                // Adds int (T1 B1 + T2 B2)^T t over this point and station
+                // to every mode's vector in @p target.
+                const double weight =
+                  kinematics.station_weight(s) * point_weight[p];
+                const auto project = [&](const SymmetricTensor<2, 3> &t,
+                                         std::vector<Vector<double>> &target) {
+                  const SymmetricTensor<2, 3> tw = t * weight;
+                  for (unsigned int m = 0; m < n_modes; ++m)
+                    {
+                      Vector<double> &b  = target[m];
+                      const double    t1 = kinematics.T1(m, s);
+                      const double    t2 = kinematics.T2(m, s);
+                      for (unsigned int i = 0; i < n; ++i)
+                        {
+                          double value = t1 * (B(p, m, i, 0) * tw);
+                          if (n_parts == 2)
+                            value += t2 * (B(p, m, i, 1) * tw);
+                          b[dofs[i]] += value;
+                        }
+                    }
+                };
+
+                if (!viscoplastic)
+                  {
+                    // Return mapping of the step's elastic trial stress.
+                    const SymmetricTensor<2, 3> trial =
+                      state.converged_stress + D * strain;
+                    state.yielding = false;
+                    if (!law.can_yield())
+                      state.stress = trial;
+                    else
+                      {
+                        const ReturnMapping r = law.return_mapping(trial);
+                        state.stress          = r.stress;
+                        if (store_tangents)
+                          tangents[p * n_stations + s] = r.tangent;
+                        if (r.region != ReturnRegion::elastic)
+                          {
+                            state.yielding = true;
+                            ++n_yielding;
+                            state.step_plastic_strain =
+                              law.compliance() * (trial - r.stress);
+                            project(trial - r.stress, body_loads);
+                          }
+                        else
+                          state.step_plastic_strain = 0;
+                      }
+                    project(state.stress, internal_forces);
+                    continue;
+                  }
+
                 state.stress = state.converged_stress +
                                D * (strain - state.step_plastic_strain);
 
@@ -494,22 +600,7 @@ namespace thinlayer
                 state.step_plastic_strain += viscoplastic_strain;
 
                 // Project D (that strain) back onto every mode.
-                const SymmetricTensor<2, 3> stress_change =
-                  (D * viscoplastic_strain) *
-                  (kinematics.station_weight(s) * point_weight[p]);
-                for (unsigned int m = 0; m < n_modes; ++m)
-                  {
-                    Vector<double> &b  = body_loads[m];
-                    const double    t1 = kinematics.T1(m, s);
-                    const double    t2 = kinematics.T2(m, s);
-                    for (unsigned int i = 0; i < n; ++i)
-                      {
-                        double value = t1 * (B(p, m, i, 0) * stress_change);
-                        if (n_parts == 2)
-                          value += t2 * (B(p, m, i, 1) * stress_change);
-                        b[dofs[i]] += value;
-                      }
-                  }
+                project(D * viscoplastic_strain, body_loads);
               }
           }
       }
@@ -552,11 +643,51 @@ namespace thinlayer
   StepResult
   Analysis<dim>::solve(const double new_load_factor)
   {
-    const double dlambda = new_load_factor - load_factor;
+    StepResult result = (parameters.method == SolutionMethod::viscoplastic)
+                          ? solve_viscoplastic(new_load_factor - load_factor)
+                          : solve_with_return_mapping(new_load_factor);
 
+    // The step's state is kept even if it failed, so that the mechanism at
+    // failure can be seen.
+    accept_step_state();
+    load_factor            = new_load_factor;
+    result.max_yield_ratio = std::numeric_limits<double>::quiet_NaN();
+    for (unsigned int p = 0; p < history.size(); ++p)
+      {
+        const MaterialLaw &law = *cell_law[p / quadrature.size()];
+        if (law.can_yield())
+          for (const PointState &state : history[p]->stations)
+            result.max_yield_ratio =
+              std::isnan(result.max_yield_ratio)
+                ? law.yield_ratio(state.stress)
+                : std::max(result.max_yield_ratio,
+                           law.yield_ratio(state.stress));
+      }
+    update_internal_forces();
+    return result;
+  }
+
+
+  template <int dim>
+  void
+  Analysis<dim>::accept_step_state()
+  {
+    for (auto &mode : modes)
+      mode->solution += mode->step_increment;
     for (PointHistory *point : history)
       for (PointState &state : point->stations)
-        state.step_plastic_strain = 0;
+        {
+          state.converged_stress = state.stress;
+          state.plastic_strain += state.step_plastic_strain;
+          state.step_plastic_strain = 0;
+        }
+  }
+
+
+  template <int dim>
+  StepResult
+  Analysis<dim>::solve_viscoplastic(const double dlambda)
+  {
     for (auto &mode : modes)
       {
         mode->body_loads         = 0;
@@ -611,29 +742,254 @@ namespace thinlayer
           result.converged = (change <= parameters.tolerance * size);
       }
 
-    // The step's state is kept even if it failed, so that the mechanism at
-    // failure can be seen.
-    for (auto &mode : modes)
-      mode->solution += mode->step_increment;
-    load_factor            = new_load_factor;
-    result.max_yield_ratio = std::numeric_limits<double>::quiet_NaN();
-    for (unsigned int p = 0; p < history.size(); ++p)
+    return result;
+  }
+
+
+  template <int dim>
+  StepResult
+  Analysis<dim>::solve_with_return_mapping(const double new_load_factor)
+  {
+    StepResult   result{0, false, 0, 0};
+    const bool   newton = (parameters.method == SolutionMethod::newton);
+    const double total  = new_load_factor - load_factor;
+    // The tangents at the last accepted state, to restart from after a
+    // failed attempt.
+    std::vector<SymmetricTensor<4, 3>> accepted_tangents;
+    if (newton)
+      accepted_tangents = tangents;
+
+    double size = total;
+    while (true)
       {
-        const MaterialLaw &law = *cell_law[p / quadrature.size()];
-        for (PointState &state : history[p]->stations)
+        const bool last = std::abs(load_factor + size - new_load_factor) <=
+                          1e-12 * std::abs(total);
+        const double target = last ? new_load_factor : load_factor + size;
+        if (iterate_with_return_mapping(target, result))
           {
-            state.converged_stress = state.stress;
-            state.plastic_strain += state.step_plastic_strain;
-            if (law.can_yield())
-              result.max_yield_ratio =
-                std::isnan(result.max_yield_ratio)
-                  ? law.yield_ratio(state.stress)
-                  : std::max(result.max_yield_ratio,
-                             law.yield_ratio(state.stress));
+            if (last)
+              {
+                result.converged = true;
+                break;
+              }
+            // A converged part of a cut-back step.
+            accept_step_state();
+            load_factor = target;
+            if (newton)
+              accepted_tangents = tangents;
+            size = std::min(size, new_load_factor - load_factor);
+            continue;
+          }
+        if (!newton || result.cut_backs == parameters.max_cut_backs)
+          break; // failed: the last attempt's state is kept
+        ++result.cut_backs;
+        size /= 2;
+        tangents = accepted_tangents;
+      }
+    return result;
+  }
+
+
+  template <int dim>
+  bool
+  Analysis<dim>::iterate_with_return_mapping(const double target,
+                                             StepResult  &result)
+  {
+    const SolutionMethod method  = parameters.method;
+    const double         dlambda = target - load_factor;
+    const unsigned int   n       = dof_handler.n_dofs();
+    for (auto &mode : modes)
+      {
+        mode->step_increment = mode->unit_prescribed_displacement;
+        mode->step_increment *= dlambda;
+      }
+    anderson.reset();
+
+    ResidualNorms      norms = evaluate_residual(target, false);
+    const unsigned int limit = (method == SolutionMethod::newton)
+                                 ? parameters.max_newton_iterations
+                                 : parameters.max_iterations;
+    for (unsigned int k = 0; k < limit; ++k)
+      {
+        ++result.iterations;
+        if (method == SolutionMethod::newton)
+          {
+            ++result.factorisations;
+            if (!factorise_tangents())
+              return false;
+          }
+
+        for (auto &mode : modes)
+          {
+            mode->correction = mode->residual;
+            (method == SolutionMethod::newton ? *mode->tangent_factorisation
+                                              : mode->factorisation)
+              .solve(mode->correction);
+            mode->constraints.distribute(mode->correction);
+            mode->previous_increment = mode->step_increment;
+          }
+
+        if (method == SolutionMethod::accelerated_initial_stress)
+          {
+            for (unsigned int m = 0; m < modes.size(); ++m)
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  stacked_increment[m * n + i]  = modes[m]->step_increment[i];
+                  stacked_correction[m * n + i] = modes[m]->correction[i];
+                }
+            anderson.update(stacked_increment, stacked_correction);
+            for (unsigned int m = 0; m < modes.size(); ++m)
+              for (unsigned int i = 0; i < n; ++i)
+                modes[m]->step_increment[i] = stacked_increment[m * n + i];
+            norms = evaluate_residual(target, false);
+          }
+        else if (method == SolutionMethod::newton)
+          {
+            // Backtracking on |r|_2: halve the step until the residual
+            // falls (Armijo with 1e-4), at most four times.
+            const double initial = norms.l2;
+            double       scale   = 1;
+            for (unsigned int trial = 0;; ++trial)
+              {
+                for (auto &mode : modes)
+                  {
+                    mode->step_increment = mode->previous_increment;
+                    mode->step_increment.add(scale, mode->correction);
+                  }
+                norms = evaluate_residual(target, true);
+                if (norms.l2 <= (1 - 1e-4 * scale) * initial || trial == 4)
+                  break;
+                scale /= 2;
+              }
+          }
+        else
+          {
+            for (auto &mode : modes)
+              mode->step_increment += mode->correction;
+            norms = evaluate_residual(target, false);
+          }
+        result.plastic_points = norms.n_yielding;
+
+        // Converged: the out-of-balance force against the stress excess
+        // (the paper's body-load test) or against the forces, or the last
+        // change of the step's
+        // displacements against their size; and, whatever the criterion,
+        // once the residual is at rounding level (elastic steps).
+        bool converged = (norms.max <= 1e-10 * norms.forces);
+        if (parameters.convergence_criterion ==
+            ConvergenceCriterion::body_loads)
+          converged =
+            converged || (norms.max <= parameters.tolerance * norms.body_loads);
+        else if (parameters.convergence_criterion ==
+                 ConvergenceCriterion::residual)
+          converged =
+            converged || (norms.max <= parameters.tolerance * norms.forces);
+        else
+          {
+            double change = 0, size = 0;
+            for (auto &mode : modes)
+              {
+                mode->previous_increment -= mode->step_increment;
+                change =
+                  std::max(change, mode->previous_increment.linfty_norm());
+                size = std::max(size, mode->step_increment.linfty_norm());
+              }
+            converged = converged || (change <= parameters.tolerance * size);
+          }
+        if (converged)
+          return true;
+      }
+    return false;
+  }
+
+
+  template <int dim>
+  typename Analysis<dim>::ResidualNorms
+  Analysis<dim>::evaluate_residual(const double target,
+                                   const bool   store_tangents)
+  {
+    ResidualNorms norms{update_stresses(store_tangents), 0, 0, 0, 0};
+    for (auto &mode : modes)
+      {
+        Vector<double> &r = mode->residual;
+        r                 = mode->unit_load;
+        r *= target;
+        norms.forces = std::max(
+          {norms.forces, r.linfty_norm(), mode->internal_forces.linfty_norm()});
+        r -= mode->internal_forces;
+        mode->constraints.condense(r);
+        norms.max = std::max(norms.max, r.linfty_norm());
+        norms.l2 += r.norm_sqr();
+        norms.body_loads = std::max(norms.body_loads,
+                                    condensed_max(mode->body_loads,
+                                                  mode->constraints,
+                                                  mode->condensed));
+      }
+    norms.l2 = std::sqrt(norms.l2);
+    return norms;
+  }
+
+
+  template <int dim>
+  bool
+  Analysis<dim>::factorise_tangents()
+  {
+    const unsigned int                   n          = fe.n_dofs_per_cell();
+    const unsigned int                   n_q        = quadrature.size();
+    const unsigned int                   n_stations = kinematics.n_stations();
+    FullMatrix<double>                   cell_matrix(n, n);
+    std::vector<types::global_dof_index> dofs(n);
+    std::vector<SymmetricTensor<2, 3>>   strain(n), stress(n);
+
+    for (unsigned int m = 0; m < kinematics.n_modes(); ++m)
+      {
+        Mode &mode   = *modes[m];
+        mode.tangent = 0;
+        for (unsigned int c = 0; c < tria.n_active_cells(); ++c)
+          {
+            cell_matrix = 0;
+            for (unsigned int q = 0; q < n_q; ++q)
+              {
+                const unsigned int p = c * n_q + q;
+                // The diagonal block of mode m of the station sum of
+                // (T1 B1 + T2 B2)^T C_t (T1 B1 + T2 B2).
+                for (unsigned int s = 0; s < n_stations; ++s)
+                  {
+                    const SymmetricTensor<4, 3> &C =
+                      tangents[p * n_stations + s];
+                    const double weight =
+                      kinematics.station_weight(s) * point_weight[p];
+                    const double t1 = kinematics.T1(m, s);
+                    const double t2 = kinematics.T2(m, s);
+                    for (unsigned int i = 0; i < n; ++i)
+                      {
+                        strain[i] = t1 * B(p, m, i, 0);
+                        if (n_parts == 2)
+                          strain[i] += t2 * B(p, m, i, 1);
+                        stress[i] = C * strain[i];
+                      }
+                    for (unsigned int i = 0; i < n; ++i)
+                      for (unsigned int j = 0; j < n; ++j)
+                        cell_matrix(i, j) += (strain[i] * stress[j]) * weight;
+                  }
+              }
+            std::copy(cell_dofs.begin() + c * n,
+                      cell_dofs.begin() + (c + 1) * n,
+                      dofs.begin());
+            mode.constraints.distribute_local_to_global(cell_matrix,
+                                                        dofs,
+                                                        mode.tangent);
+          }
+        try
+          {
+            mode.tangent_factorisation->factorize(mode.tangent);
+          }
+        catch (const std::exception &)
+          {
+            return false; // singular: a mechanism has formed
           }
       }
-    update_internal_forces();
-    return result;
+    return true;
   }
 
 

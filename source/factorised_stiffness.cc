@@ -13,6 +13,10 @@ namespace thinlayer
     {
       cholmod_l_start(&common);
       common.supernodal = CHOLMOD_SUPERNODAL;
+      // A tangent that is not positive definite is reported to the caller
+      // (Newton then cuts the step back), not printed.
+      common.print         = 0;
+      common.error_handler = nullptr;
     }
 
     ~Cholmod()

@@ -264,14 +264,52 @@ namespace thinlayer
       prm.leave_subsection();
 
       prm.enter_subsection("Solver");
+      prm.declare_entry(
+        "Method",
+        "viscoplastic",
+        Patterns::Selection(
+          "viscoplastic|initial stress|accelerated initial stress|newton"),
+        "viscoplastic: the paper's constant-stiffness viscoplastic strain "
+        "iterations; initial stress: constant stiffness, each point "
+        "return-mapped, the stress excess as body loads; accelerated initial "
+        "stress: the same with Anderson acceleration, still one factorisation; "
+        "newton: the consistent tangent, refactorised every iteration, with "
+        "a line search and load-step cut-back.");
+      prm.declare_entry("Anderson depth",
+                        "5",
+                        Patterns::Integer(1, 50),
+                        "Accelerated initial stress: how many previous "
+                        "iterates the Anderson update combines.");
+      prm.declare_entry("Maximum cut-backs",
+                        "4",
+                        Patterns::Integer(0, 20),
+                        "Newton: how often a load step that does not "
+                        "converge is halved before it counts as failed "
+                        "(collapse).");
+      prm.declare_entry("Maximum Newton iterations",
+                        "25",
+                        Patterns::Integer(1),
+                        "Newton: iterations per attempt at a load step before "
+                        "it is cut back (Maximum iterations applies to the "
+                        "constant-stiffness methods).");
       prm.declare_entry("Convergence criterion",
                         "body loads",
-                        Patterns::Selection("body loads|displacements"),
+                        Patterns::Selection(
+                          "body loads|displacements|residual"),
                         "body loads: the paper's test, no body load "
                         "(divided by the largest) changes by more than the "
-                        "tolerance between two iterations; displacements: "
-                        "the same test on the step's displacement "
-                        "increment.");
+                        "tolerance between two iterations; for the "
+                        "return-mapping methods that change is the "
+                        "out-of-balance force and the body loads the stress "
+                        "excess int B^T (trial stress - stress); "
+                        "displacements: the same test on the step's "
+                        "displacement increment (its last correction "
+                        "against its size); residual (return-mapping methods "
+                        "only): max |out-of-balance force| against the "
+                        "largest external or internal force, reactions "
+                        "included. Newton needs residual or displacements: "
+                        "past collapse its stress excess grows without bound "
+                        "and the body-load test would pass.");
       prm.declare_entry("Tolerance",
                         "1e-4",
                         Patterns::Double(0),
@@ -828,10 +866,39 @@ namespace thinlayer
       prm.leave_subsection();
 
       prm.enter_subsection("Solver");
-      p.convergence_criterion =
-        (prm.get("Convergence criterion") == "displacements")
-          ? ConvergenceCriterion::displacements
-          : ConvergenceCriterion::body_loads;
+      {
+        const std::string method = prm.get("Method");
+        p.method = (method == "initial stress") ? SolutionMethod::initial_stress
+                   : (method == "accelerated initial stress")
+                     ? SolutionMethod::accelerated_initial_stress
+                   : (method == "newton") ? SolutionMethod::newton
+                                          : SolutionMethod::viscoplastic;
+      }
+      p.anderson_depth        = prm.get_integer("Anderson depth");
+      p.max_cut_backs         = prm.get_integer("Maximum cut-backs");
+      p.max_newton_iterations = prm.get_integer("Maximum Newton iterations");
+      {
+        const std::string criterion = prm.get("Convergence criterion");
+        p.convergence_criterion =
+          (criterion == "displacements") ? ConvergenceCriterion::displacements
+          : (criterion == "residual")    ? ConvergenceCriterion::residual
+                                         : ConvergenceCriterion::body_loads;
+        if (p.method == SolutionMethod::viscoplastic &&
+            p.convergence_criterion == ConvergenceCriterion::residual)
+          throw InputError(file,
+                           "Solver/Convergence criterion",
+                           "'body loads' or 'displacements' for the "
+                           "viscoplastic method, whose stresses are in "
+                           "equilibrium at every iteration (its out-of-balance "
+                           "is the change of the body loads), not 'residual'");
+        if (p.method == SolutionMethod::newton &&
+            p.convergence_criterion == ConvergenceCriterion::body_loads)
+          throw InputError(file,
+                           "Solver/Convergence criterion",
+                           "'residual' or 'displacements' for Newton, not "
+                           "'body loads': past collapse the stress excess "
+                           "grows without bound and that test would pass");
+      }
       p.tolerance              = positive(prm, "Tolerance", file, "Solver");
       p.max_iterations         = prm.get_integer("Maximum iterations");
       p.continue_after_failure = prm.get_bool("Continue after failure");

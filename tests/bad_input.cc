@@ -216,4 +216,8 @@ main()
   check("an override that is not Section/Entry=value",
         {"good.prm", "-s", "Material 1/Young's modulus"});
   check("an unknown option", {"good.prm", "--fast"});
+  check("the residual criterion with the viscoplastic method",
+        {"good.prm", "-s", "Solver/Convergence criterion=residual"});
+  check("the body-load criterion with Newton",
+        {"good.prm", "-s", "Solver/Method=newton"});
 }

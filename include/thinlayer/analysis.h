@@ -14,6 +14,7 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
+#include <thinlayer/anderson_acceleration.h>
 #include <thinlayer/boundary_data.h>
 #include <thinlayer/factorised_stiffness.h>
 #include <thinlayer/kinematics.h>
@@ -41,6 +42,10 @@ namespace thinlayer
     double max_yield_ratio;
     /// Points (and stations) with F > 0 at the end of the step.
     unsigned int plastic_points;
+    /// Newton: how often the step was halved.
+    unsigned int cut_backs = 0;
+    /// Newton: tangent factorisations.
+    unsigned int factorisations = 0;
   };
 
   /**
@@ -55,8 +60,7 @@ namespace thinlayer
   };
 
   /**
-   * An elasto-plastic analysis of one scene with the paper's
-   * constant-stiffness viscoplastic iterations, for any Kinematics: plane
+   * An elasto-plastic analysis of one scene, for any Kinematics: plane
    * strain (one mode, one station) or an axisymmetric body under
    * non-axisymmetric load (one mode per Fourier harmonic, the material
    * evaluated at circumferential stations).
@@ -77,6 +81,19 @@ namespace thinlayer
    * loads (or the displacement increments) stop changing to within the
    * tolerance. A step that reaches the iteration limit has failed: that is
    * how collapse shows.
+   *
+   * The other solution methods (Parameters::method) iterate on the
+   * out-of-balance force r = lambda f - int B^T sigma, every point's stress
+   * coming from the return mapping of its elastic trial stress
+   * sigma_0 + D (strain of the step): the initial-stress method corrects
+   * the step's displacement by K^-1 r with the elastic factor (the stress
+   * excess int B^T (trial - sigma) playing the part of the body loads; r is
+   * exactly the change of those between iterations), optionally with
+   * Anderson acceleration; Newton by K_t^-1 r with the consistent tangent,
+   * refactorised every iteration, a backtracking line search on |r|, and
+   * the step halved when it does not converge. In the Fourier case the
+   * exact tangent couples the harmonics; Newton uses its harmonic-diagonal
+   * blocks, so it is a quasi-Newton method there.
    *
    * Discretisation: FE_Q(2) per component, reduced to the 8-node
    * serendipity element by make_serendipity_constraints() (or kept as Q9),
@@ -99,7 +116,8 @@ namespace thinlayer
     setup();
 
     /**
-     * One load step, to the total load factor @p load_factor.
+     * One load step, to the total load factor @p load_factor, with the
+     * method the parameters ask for.
      */
     StepResult
     solve(const double load_factor);
@@ -192,6 +210,12 @@ namespace thinlayer
       Vector<double> solution;
       Vector<double> step_increment;
       Vector<double> internal_forces;
+      /// Newton: the consistent tangent (condensed) and its factor.
+      SparseMatrix<double>                 tangent;
+      std::unique_ptr<FactorisedStiffness> tangent_factorisation;
+      /// Return-mapping methods: the out-of-balance force and correction.
+      Vector<double> residual;
+      Vector<double> correction;
       // Work vectors of the iterations.
       Vector<double> body_loads;
       Vector<double> body_load_change;
@@ -220,10 +244,64 @@ namespace thinlayer
     void
     solve_increment(const unsigned int m, const double dlambda);
 
+    /// The paper's method for one load step.
+    StepResult
+    solve_viscoplastic(const double dlambda);
+
     /**
-     * Stresses at every point and station for the modes' increments; adds
-     * the new viscoplastic body loads to each mode's body_load_change.
-     * Returns the number of yielding points and stations.
+     * A return-mapping method (initial stress, accelerated, Newton) for one
+     * load step from load_factor to @p new_load_factor; Newton halves the
+     * step up to Parameters::max_cut_backs times.
+     */
+    StepResult
+    solve_with_return_mapping(const double new_load_factor);
+
+    /**
+     * Iterations of a return-mapping method from load_factor to
+     * @p target, starting from the converged state; counts into @p result.
+     * True if converged.
+     */
+    bool
+    iterate_with_return_mapping(const double target, StepResult &result);
+
+    /**
+     * Stresses at every point and station by return mapping of the trial
+     * stresses of the modes' step increments; then each mode's residual
+     * (condensed onto the free DoFs) at load factor @p target, and the
+     * stress excess in body_loads.
+     */
+    struct ResidualNorms
+    {
+      unsigned int n_yielding;
+      /// max |r| and |r|_2 over the free DoFs of all modes.
+      double max;
+      double l2;
+      /// max |b| of the stress excess, and max |f| of the internal and
+      /// external forces: the scales max |r| is measured against.
+      double body_loads;
+      double forces;
+    };
+
+    ResidualNorms
+    evaluate_residual(const double target, const bool store_tangents);
+
+    /// Assemble and factorise the consistent tangent of every mode; false
+    /// if a factorisation fails (a singular tangent at a mechanism).
+    bool
+    factorise_tangents();
+
+    /// Make the current stresses the converged ones, add the step's
+    /// increment to the solution and its plastic strain to the total.
+    void
+    accept_step_state();
+
+    /**
+     * Stresses at every point and station for the modes' increments.
+     * Viscoplastic: adds the new viscoplastic body loads to each mode's
+     * body_load_change. Return-mapping methods: sets each mode's
+     * internal_forces and its stress excess in body_loads, and with
+     * @p store_tangents keeps the consistent tangents. Returns the number
+     * of yielding points and stations.
      *
      * The cells are split into a fixed number of chunks, run as parallel
      * tasks, each adding to its own body-load vectors, which are then
@@ -231,14 +309,16 @@ namespace thinlayer
      * threads.
      */
     unsigned int
-    update_stresses();
+    update_stresses(const bool store_tangents = false);
 
     /// update_stresses() for the active cells [@p begin, @p end), adding
-    /// the body loads to @p body_loads (one vector per mode).
+    /// to @p body_loads and @p internal_forces (one vector per mode).
     unsigned int
     update_stresses(const unsigned int           begin,
                     const unsigned int           end,
-                    std::vector<Vector<double>> &body_loads);
+                    std::vector<Vector<double>> &body_loads,
+                    std::vector<Vector<double>> &internal_forces,
+                    const bool                   store_tangents);
 
     void
     update_internal_forces();
@@ -281,6 +361,17 @@ namespace thinlayer
 
     /// Body-load increments of each chunk of cells, per mode.
     std::vector<std::vector<Vector<double>>> chunk_body_loads;
+    /// Internal forces of each chunk (return-mapping methods), per mode.
+    std::vector<std::vector<Vector<double>>> chunk_internal_forces;
+
+    /// Newton: the consistent tangent at every point and station.
+    std::vector<SymmetricTensor<4, 3>> tangents;
+
+    AndersonAcceleration anderson;
+    /// The step increments of all modes, one after the other, and their
+    /// corrections: the vectors Anderson acceleration works on.
+    Vector<double> stacked_increment;
+    Vector<double> stacked_correction;
 
     double load_factor;
 

@@ -46,6 +46,21 @@ namespace thinlayer
   };
 
   /**
+   * How the elasto-plastic equations of a load step are solved.
+   */
+  enum class SolutionMethod
+  {
+    /// The paper's: constant stiffness, viscoplastic strain iterations.
+    viscoplastic,
+    /// Constant stiffness, return mapping, the stress excess as body loads.
+    initial_stress,
+    /// Initial stress with Anderson acceleration on the same factor.
+    accelerated_initial_stress,
+    /// Consistent tangent, line search, load-step cut-back.
+    newton
+  };
+
+  /**
    * When an iteration of the constant-stiffness method has converged.
    */
   enum class ConvergenceCriterion
@@ -54,7 +69,10 @@ namespace thinlayer
     /// than the tolerance between two iterations.
     body_loads,
     /// The same test on the displacement increment of the step.
-    displacements
+    displacements,
+    /// Return-mapping methods: the out-of-balance force against the
+    /// largest external or internal force (reactions included).
+    residual
   };
 
   /**
@@ -144,6 +162,10 @@ namespace thinlayer
     std::vector<double> load_increments;
 
     // Solver
+    SolutionMethod       method;
+    unsigned int         anderson_depth;
+    unsigned int         max_cut_backs;
+    unsigned int         max_newton_iterations;
     ConvergenceCriterion convergence_criterion;
     double               tolerance;
     unsigned int         max_iterations;
