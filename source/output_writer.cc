@@ -107,7 +107,7 @@ namespace thinlayer
     history.open(directory + "/history.csv");
     history << "step,load_factor,load,displacement,displacement_min,"
                "displacement_max,iterations,converged,max_yield_ratio,"
-               "plastic_points\n";
+               "plastic_points,cut_backs,factorisations\n";
   }
 
 
@@ -123,7 +123,8 @@ namespace thinlayer
             << number(row.displacement.max) << ',' << row.result.iterations
             << ',' << (row.result.converged ? 1 : 0) << ','
             << optional(row.result.max_yield_ratio) << ','
-            << row.result.plastic_points << '\n'
+            << row.result.plastic_points << ',' << row.result.cut_backs << ','
+            << row.result.factorisations << '\n'
             << std::flush;
   }
 

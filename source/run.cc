@@ -29,6 +29,22 @@ namespace thinlayer
       return std::filesystem::path(path).filename().string();
     }
 
+    std::string
+    method_name(const SolutionMethod method)
+    {
+      switch (method)
+        {
+          case SolutionMethod::viscoplastic:
+            return "viscoplastic";
+          case SolutionMethod::initial_stress:
+            return "initial stress";
+          case SolutionMethod::accelerated_initial_stress:
+            return "accelerated initial stress";
+          case SolutionMethod::newton:
+            return "newton";
+        }
+      return "";
+    }
   } // namespace
 
 
@@ -175,6 +191,14 @@ namespace thinlayer
       .add("final_displacement_max", displacement.max)
       .add_integer("load_steps", steps_run)
       .add_integer("total_iterations", total_iterations)
+      .add("method", method_name(p.method))
+      .add("seconds_per_substitution", analysis.substitution_seconds())
+      .add("seconds_per_iteration",
+           total_iterations > 0 ?
+             timer.get_summary_data(
+               TimerOutput::total_wall_time)["load steps"] /
+               total_iterations :
+             0.)
       .add("wall_seconds", wall_clock.wall_time())
       .add("warnings", station_warning)
       .add("timing", timing);

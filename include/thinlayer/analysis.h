@@ -180,6 +180,14 @@ namespace thinlayer
     types::global_dof_index
     n_equations() const;
 
+    /**
+     * Wall time of one forward/backward substitution with the stored
+     * elastic factors of all modes (the median of ten, measured in
+     * setup()): the floor of a constant-stiffness iteration's cost.
+     */
+    double
+    substitution_seconds() const;
+
     /// The pseudo time step of the viscoplastic iterations.
     double
     viscoplastic_time_step() const;
@@ -374,6 +382,7 @@ namespace thinlayer
     Vector<double> stacked_correction;
 
     double load_factor;
+    double substitution_time;
 
     IndexSet reaction_dofs;
   };
