@@ -3,19 +3,27 @@
 
     /usr/bin/python3 benchmarks/run.py [--quick] [--repeat N]
     /usr/bin/python3 benchmarks/run.py --ladder [--repeat N]
+    /usr/bin/python3 benchmarks/run.py --stability
+    /usr/bin/python3 benchmarks/run.py --performance [--repeat N]
 
-Runs each configuration below N times (default 3), and writes into
-output/benchmarks/: benchmarks.csv (one row per configuration: error of the
-collapse load against the analytic value, iterations, median and spread of
-the wall time, peak memory), benchmarks.md (the same as a table, also
-printed) and benchmarks.png (error against median wall time per case, one
-series per linear solver and tolerance). --quick runs the smallest meshes
-only. --ladder instead climbs the cost ladder ("no more model than the
-scene needs"): element Q8 or Q9 x 2x2 or 3x3 Gauss points x mesh level, for
-Prandtl and Case 1 with CHOLMOD and TOL 1e-3, into ladder.csv, ladder.md and
-ladder.png. Peak memory is the maximum resident set size reported by
-/usr/bin/time (about 170 MB of it are the libraries deal.II loads). The
-full run takes about 10 minutes on the 2-core machine.
+Default: case x solution method x tolerance x mesh level, each run N times
+(default 3), into output/benchmarks/: benchmarks.csv (error of the collapse
+load against the analytic value, iterations, median wall time, peak
+memory), benchmarks.md (the same table, also printed), benchmarks.png
+(error against median wall time per case, methods as series) and
+near_collapse.png (iterations per load step over the last steps before
+collapse, per case and method). --quick runs mesh level 1 only.
+--ladder climbs the cost ladder ("no more model than the scene needs"):
+element Q8 or Q9 x 2x2 or 3x3 Gauss points x mesh level, for Prandtl and
+Case 1, into ladder.csv/.md/.png. --stability runs the Case 1 stability
+maps (adhesive and frictional, aspect ratio x TOL) with every method, into
+output/benchmarks/stability/ (a map per material and method, and
+stability.md summing them up). --performance times Prandtl's strip footing
+with 2048 and 8192 Q8 elements to collapse, and reports the time per
+iteration against one forward/backward substitution (performance.md).
+Peak memory is the maximum resident set size reported by /usr/bin/time
+(about 170 MB of it are the libraries deal.II loads). THINLAYER in the
+environment names another binary (so that a build can go on meanwhile).
 """
 import csv
 import json
@@ -23,9 +31,10 @@ import os
 import statistics
 import subprocess
 import sys
+import time
 
 TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-THINLAYER = os.path.join(TOP, "build", "thinlayer")
+THINLAYER = os.environ.get("THINLAYER", os.path.join(TOP, "build", "thinlayer"))
 OUT = os.path.join(TOP, "output", "benchmarks")
 
 # case: (parameter file, {mesh level: geometry parameters})
@@ -47,22 +56,29 @@ CASES = {
     "case3": ("prm/case3-circular-footing.prm", {
         1: "half_width=1, width=5, depth=3, aspect_ratio=10, n_footing=8, n_side=12, n_depth=10, interface_beyond_footing=1, refinement=1",
     }),
+    "case4-rough": ("prm/case4-rough-wall.prm", {
+        1: "wall_height=1, width=3, depth=2, aspect_ratio=10, n_wall=10, n_below=5, n_x=12",
+    }),
 }
-SOLVERS = ["cholmod", "umfpack"]
-# UMFPACK is the comparison; on the finest meshes it alone would take most
-# of the run (about 2 minutes a run for Prandtl at level 3).
-MAX_LEVEL = {"cholmod": 3, "umfpack": 2}
-TOLERANCES = ["1e-3", "1e-4", "1e-5"]
+# Each method with its convergence criterion: the paper's body-load test for
+# the viscoplastic method, the out-of-balance force for the others.
+METHODS = [("viscoplastic", "body loads"), ("initial stress", "residual"),
+           ("accelerated initial stress", "residual"), ("newton", "residual")]
+TOLERANCES = ["1e-3", "1e-5"]
+# Prandtl at level 3 (3840 cells) costs about half a minute a run with the
+# viscoplastic method; the performance mode covers the large meshes.
+MAX_LEVEL = 2
 
 
 def run_once(prm, geometry, solver, tol, directory, extra=()):
     command = ["/usr/bin/time", "-f", "%M", THINLAYER, os.path.join(TOP, prm),
-               "-s", "Mesh/Geometry parameters=" + geometry,
                "-s", "Solver/Linear solver=" + solver,
                "-s", "Solver/Tolerance=" + tol,
                "-s", "Output/Directory=" + directory,
                "-s", "Output/Write VTU=false",
                "-s", "Output/Print timing=false"]
+    if geometry:
+        command += ["-s", "Mesh/Geometry parameters=" + geometry]
     for entry in extra:
         command += ["-s", entry]
     done = subprocess.run(command, capture_output=True, text=True, check=True)
@@ -150,29 +166,38 @@ def ladder(repeat):
     fig.savefig(os.path.join(OUT, "ladder.png"), dpi=120)
 
 
+def method_entries(method, criterion):
+    return ("Solver/Method=" + method, "Solver/Convergence criterion=" + criterion)
+
+
 def main():
-    if "--ladder" in sys.argv:
-        os.makedirs(OUT, exist_ok=True)
-        ladder(int(sys.argv[sys.argv.index("--repeat") + 1]) if "--repeat" in sys.argv else 3)
-        return
-    quick = "--quick" in sys.argv
     repeat = int(sys.argv[sys.argv.index("--repeat") + 1]) if "--repeat" in sys.argv else 3
     os.makedirs(OUT, exist_ok=True)
+    if "--ladder" in sys.argv:
+        ladder(repeat)
+        return
+    if "--stability" in sys.argv:
+        stability()
+        return
+    if "--performance" in sys.argv:
+        performance(repeat)
+        return
+    quick = "--quick" in sys.argv
     rows = []
     for case, (prm, levels) in CASES.items():
         for level, geometry in sorted(levels.items()):
-            if quick and level > 1:
+            if level > (1 if quick else MAX_LEVEL):
                 continue
-            for solver in SOLVERS:
-                if level > MAX_LEVEL[solver]:
-                    continue
+            for method, criterion in METHODS:
                 for tol in TOLERANCES:
-                    directory = os.path.join(OUT, "runs", "%s-%d-%s-%s" % (case, level, solver, tol))
-                    summary, median, peak = median_run(prm, geometry, solver, tol, directory,
-                                                       repeat)
+                    directory = os.path.join(OUT, "runs", "%s-%d-%s-%s" % (
+                        case, level, method.replace(" ", "_"), tol))
+                    summary, median, peak = median_run(
+                        prm, geometry, "cholmod", tol, directory, repeat,
+                        method_entries(method, criterion))
                     row = {
                         "case": case, "mesh_level": level, "cells": summary["cells"],
-                        "equations": summary["equations"], "linear_solver": solver,
+                        "equations": summary["equations"], "method": method,
                         "tolerance": tol,
                         "collapse_detected": int(not summary["converged"]),
                         "last_converged_load": summary["last_converged_load"],
@@ -180,23 +205,25 @@ def main():
                         "total_iterations": summary["total_iterations"],
                         "wall_median_s": median,
                         "peak_memory_mb": peak,
+                        "directory": directory,
                     }
                     rows.append(row)
-                    print("%-15s level %d %-8s TOL %-5s error %+6.1f%% %6d iterations %8.3f s "
-                          "(median of %d) %7.1f MB" % (
-                              case, level, solver, tol, 100 * (row["relative_error"] or 0),
+                    print("%-15s level %d %-27s TOL %-5s error %+6.1f%% %6d iterations "
+                          "%8.3f s (median of %d) %7.1f MB" % (
+                              case, level, method, tol, 100 * (row["relative_error"] or 0),
                               row["total_iterations"], row["wall_median_s"], repeat,
                               row["peak_memory_mb"]), flush=True)
     write_results(rows, "benchmarks",
-                  "| case | level | cells | equations | solver | TOL | collapse detected "
+                  "| case | level | cells | equations | method | TOL | collapse detected "
                   "| error | iterations | wall s (median) | peak MB |",
                   lambda r: "| %s | %d | %d | %d | %s | %s | %s | %+.1f%% | %d | %.3f | %.1f |" % (
                       r["case"], r["mesh_level"], r["cells"], r["equations"],
-                      r["linear_solver"], r["tolerance"],
+                      r["method"], r["tolerance"],
                       "yes" if r["collapse_detected"] else "no",
                       100 * (r["relative_error"] or 0), r["total_iterations"],
                       r["wall_median_s"], r["peak_memory_mb"]))
     chart(rows)
+    near_collapse_chart(rows)
 
 
 def chart(rows):
@@ -204,16 +231,16 @@ def chart(rows):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     cases = list(dict.fromkeys(r["case"] for r in rows))
-    fig, axes = plt.subplots(1, len(cases), figsize=(4.5 * len(cases), 4), squeeze=False)
+    fig, axes = plt.subplots(1, len(cases), figsize=(4.2 * len(cases), 4), squeeze=False)
     for ax, case in zip(axes[0], cases):
-        for solver, marker in zip(SOLVERS, "os"):
-            for tol, colour in zip(TOLERANCES, ("C0", "C1", "C2")):
-                pts = sorted((r for r in rows if r["case"] == case and r["linear_solver"] == solver
+        for (method, _), colour in zip(METHODS, ("C0", "C1", "C2", "C3")):
+            for tol, marker in zip(TOLERANCES, "os"):
+                pts = sorted((r for r in rows if r["case"] == case and r["method"] == method
                               and r["tolerance"] == tol), key=lambda r: r["mesh_level"])
                 ax.plot([r["wall_median_s"] for r in pts],
                         [abs(100 * (r["relative_error"] or 0)) for r in pts],
-                        marker + ("-" if solver == "cholmod" else "--"), color=colour,
-                        label="%s, TOL %s" % (solver, tol))
+                        marker + ("-" if tol == TOLERANCES[0] else "--"), color=colour,
+                        label="%s, TOL %s" % (method, tol))
         ax.set_xscale("log")
         ax.set_xlabel("wall time, median (s)")
         ax.set_ylabel("|error| of the collapse load (%)")
@@ -222,6 +249,96 @@ def chart(rows):
     axes[0][0].legend(fontsize=6)
     fig.tight_layout()
     fig.savefig(os.path.join(OUT, "benchmarks.png"), dpi=120)
+
+
+def near_collapse_chart(rows):
+    """Iterations per step over the last ten steps, level 1, tightest TOL."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    cases = list(dict.fromkeys(r["case"] for r in rows))
+    fig, axes = plt.subplots(1, len(cases), figsize=(4.2 * len(cases), 4), squeeze=False)
+    for ax, case in zip(axes[0], cases):
+        for (method, _), colour in zip(METHODS, ("C0", "C1", "C2", "C3")):
+            run = [r for r in rows if r["case"] == case and r["method"] == method
+                   and r["mesh_level"] == 1 and r["tolerance"] == TOLERANCES[-1]]
+            if not run:
+                continue
+            with open(os.path.join(run[0]["directory"], "history.csv"), newline="") as f:
+                steps = list(csv.DictReader(f))[-10:]
+            ax.plot([float(s["load_factor"]) for s in steps],
+                    [int(s["iterations"]) for s in steps], "o-", color=colour, label=method)
+            failed = [s for s in steps if s["converged"] == "0"]
+            ax.plot([float(s["load_factor"]) for s in failed],
+                    [int(s["iterations"]) for s in failed], "x", color="k", markersize=9)
+        ax.set_yscale("log")
+        ax.set_xlabel("load factor")
+        ax.set_ylabel("iterations in the step")
+        ax.set_title("%s, level 1, TOL %s (x: failed)" % (case, TOLERANCES[-1]), fontsize=9)
+        ax.grid(alpha=0.3)
+    axes[0][0].legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(OUT, "near_collapse.png"), dpi=120)
+
+
+def stability():
+    """Case 1 stability maps per material and method."""
+    maps = [("adhesive", "prm/case1-stability-map.prm"),
+            ("frictional", "prm/case1-frictional-stability-map.prm")]
+    lines = ["| interface | method | cells with collapse detected | of which within "
+             "2% | median iterations | wall s |", "|---|---|---|---|---|---|"]
+    for material, prm in maps:
+        for method, criterion in METHODS:
+            directory = os.path.join(OUT, "stability", "%s-%s" % (material, method.replace(" ", "_")))
+            command = [THINLAYER, os.path.join(TOP, prm), "-s", "Output/Directory=" + directory]
+            for entry in method_entries(method, criterion):
+                command += ["-s", entry]
+            start = time.time()
+            subprocess.run(command, capture_output=True, text=True, check=True)
+            seconds = time.time() - start
+            subprocess.run(["/usr/bin/python3", os.path.join(TOP, "scripts", "plot_stability.py"),
+                            directory], capture_output=True, text=True, check=True)
+            with open(os.path.join(directory, "sweep.csv"), newline="") as f:
+                runs = list(csv.DictReader(f))
+            detected = [r for r in runs if r["converged"] == "0"]
+            close = [r for r in detected if abs(float(r["relative_error"])) <= 0.02 + 1e-9]
+            lines.append("| %s | %s | %d of %d | %d | %d | %.1f |" % (
+                material, method, len(detected), len(runs), len(close),
+                statistics.median(int(r["total_iterations"]) for r in runs), seconds))
+            print(lines[-1], flush=True)
+    with open(os.path.join(OUT, "stability", "stability.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+
+def performance(repeat):
+    """Prandtl with 2048 and 8192 Q8 elements to collapse (targets: 1 s, 5 s)."""
+    meshes = {2048: "half_width=1, width=5, depth=3, n_footing=24, n_side=40, n_depth=32, growth=1.05",
+              8192: "half_width=1, width=5, depth=3, n_footing=48, n_side=80, n_depth=64, growth=1.025"}
+    rows = []
+    for cells, geometry in meshes.items():
+        for method, criterion in (METHODS[0], METHODS[2]):
+            directory = os.path.join(OUT, "runs", "performance-%d-%s" % (cells, method.replace(" ", "_")))
+            summary, median, peak = median_run("prm/prandtl-strip-footing.prm", geometry, "cholmod",
+                                               "1e-4", directory, repeat,
+                                               method_entries(method, criterion))
+            row = {"cells": summary["cells"], "equations": summary["equations"], "method": method,
+                   "relative_error": summary["relative_error"],
+                   "total_iterations": summary["total_iterations"], "wall_median_s": median,
+                   "seconds_per_iteration": summary["seconds_per_iteration"],
+                   "seconds_per_substitution": summary["seconds_per_substitution"],
+                   "peak_memory_mb": peak}
+            rows.append(row)
+            print(row, flush=True)
+    write_results(rows, "performance",
+                  "| cells | equations | method | error | iterations | wall s (median) "
+                  "| ms per iteration | ms per substitution | ratio | peak MB |",
+                  lambda r: "| %d | %d | %s | %+.1f%% | %d | %.2f | %.2f | %.2f | %.2f | %.1f |" % (
+                      r["cells"], r["equations"], r["method"], 100 * r["relative_error"],
+                      r["total_iterations"], r["wall_median_s"],
+                      1e3 * r["seconds_per_iteration"], 1e3 * r["seconds_per_substitution"],
+                      r["seconds_per_iteration"] / r["seconds_per_substitution"],
+                      r["peak_memory_mb"]))
 
 
 if __name__ == "__main__":
