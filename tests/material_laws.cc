@@ -17,37 +17,20 @@
 #include <cmath>
 #include <cstdio>
 
+#include "material_test_utilities.h"
+
 using namespace dealii;
 using namespace thinlayer;
+using namespace thinlayer_tests;
 
 namespace
 {
-  // A fixed pseudo-random sequence, the same on every machine.
-  double
-  next_random()
-  {
-    static unsigned long state = 12345;
-    state = (state * 6364136223846793005UL + 1442695040888963407UL);
-    return static_cast<double>(state >> 11) / static_cast<double>(1UL << 53);
-  }
+  PseudoRandom random_numbers(12345);
 
   SymmetricTensor<2, 3>
   random_stress(const double scale)
   {
-    SymmetricTensor<2, 3> s;
-    for (unsigned int i = 0; i < 3; ++i)
-      for (unsigned int j = i; j < 3; ++j)
-        s[i][j] = scale * (2 * next_random() - 1);
-    return s;
-  }
-
-  MaterialParameters
-  material(const YieldCriterion criterion,
-           const double         c,
-           const double         phi = 0,
-           const double         psi = 0)
-  {
-    return {"", 1000., 0.3, criterion, c, phi, psi};
+    return random_numbers.stress(scale);
   }
 
   // Principal stresses, largest first.

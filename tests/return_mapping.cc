@@ -24,29 +24,22 @@
 #include <functional>
 #include <map>
 
+#include "material_test_utilities.h"
+
 using namespace dealii;
 using namespace thinlayer;
+using namespace thinlayer_tests;
 
 namespace
 {
-  // A fixed pseudo-random sequence, the same on every machine.
-  double
-  next_random()
-  {
-    static unsigned long state = 424242;
-    state = (state * 6364136223846793005UL + 1442695040888963407UL);
-    return static_cast<double>(state >> 11) / static_cast<double>(1UL << 53);
-  }
+  PseudoRandom random_numbers(424242);
 
   SymmetricTensor<2, 3>
   random_stress(const double deviatoric_scale, const double mean_scale)
   {
-    SymmetricTensor<2, 3> s;
-    for (unsigned int i = 0; i < 3; ++i)
-      for (unsigned int j = i; j < 3; ++j)
-        s[i][j] = deviatoric_scale * (2 * next_random() - 1);
-    return deviator(s) +
-           mean_scale * (2 * next_random() - 1) * unit_symmetric_tensor<3>();
+    return deviator(random_numbers.stress(deviatoric_scale)) +
+           mean_scale * (2 * random_numbers.next() - 1) *
+             unit_symmetric_tensor<3>();
   }
 
   const char *
@@ -231,14 +224,6 @@ namespace
                 fd_skipped);
   }
 
-  MaterialParameters
-  material(const YieldCriterion criterion,
-           const double         c,
-           const double         phi = 0,
-           const double         psi = 0)
-  {
-    return {"", 1000., 0.3, criterion, c, phi, psi};
-  }
 } // namespace
 
 
