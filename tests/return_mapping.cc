@@ -37,9 +37,10 @@ namespace
   SymmetricTensor<2, 3>
   random_stress(const double deviatoric_scale, const double mean_scale)
   {
-    return deviator(random_numbers.stress(deviatoric_scale)) +
-           mean_scale * (2 * random_numbers.next() - 1) *
-             unit_symmetric_tensor<3>();
+    // Two statements: the deviator's entries are drawn before the mean.
+    const SymmetricTensor<2, 3> s = random_numbers.stress(deviatoric_scale);
+    return deviator(s) + mean_scale * (2 * random_numbers.next() - 1) *
+                           unit_symmetric_tensor<3>();
   }
 
   const char *
