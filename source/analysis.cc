@@ -161,6 +161,16 @@ namespace thinlayer
                 : FactorisedStiffness::Method::umfpack);
           }
       }
+    // The per-chunk vectors of the point loop, allocated once (the number
+    // of chunks is fixed, see update_stresses()).
+    const unsigned int n_chunks =
+      std::min(16u, static_cast<unsigned int>(tria.n_active_cells()));
+    const std::vector<Vector<double>> per_mode(modes.size(), Vector<double>(n));
+    chunk_body_loads.assign(n_chunks, per_mode);
+    if (parameters.method != SolutionMethod::viscoplastic)
+      chunk_internal_forces.assign(n_chunks, per_mode);
+    tasks.reserve(n_chunks);
+
     stacked_increment.reinit(n * kinematics.n_modes());
     stacked_correction.reinit(n * kinematics.n_modes());
     if (parameters.method == SolutionMethod::newton)
@@ -455,14 +465,9 @@ namespace thinlayer
     const unsigned int n_chunks = std::min(16u, n_cells);
     const bool         viscoplastic =
       (parameters.method == SolutionMethod::viscoplastic);
-    for (auto *chunks : {&chunk_body_loads, &chunk_internal_forces})
-      if (chunks->size() != n_chunks &&
-          (viscoplastic == false || chunks == &chunk_body_loads))
-        chunks->assign(n_chunks,
-                       std::vector<Vector<double>>(
-                         modes.size(), Vector<double>(dof_handler.n_dofs())));
 
-    std::vector<Threads::Task<unsigned int>> tasks;
+    // The task list keeps its capacity: nothing is allocated here.
+    tasks.clear();
     for (unsigned int k = 0; k < n_chunks; ++k)
       tasks.push_back(Threads::new_task(
         [this, k, n_chunks, n_cells, viscoplastic, store_tangents]() {

@@ -1,7 +1,6 @@
 #include <thinlayer/anderson_acceleration.h>
 
 #include <cmath>
-#include <vector>
 
 namespace thinlayer
 {
@@ -49,15 +48,17 @@ namespace thinlayer
     // gamma = R^-1 Q^T g. Columns that are (nearly) dependent on earlier
     // ones are dropped, which keeps the update bounded when the iteration
     // stagnates.
-    const unsigned int          m = dG.size();
-    std::vector<Vector<double>> Q;
-    std::vector<unsigned int>   kept;
-    std::vector<double>         R(m * m, 0.);
+    const unsigned int m = dG.size();
+    if (Q.size() < m)
+      Q.resize(m);
+    kept.clear();
+    R.assign(m * m, 0.);
     for (unsigned int j = 0; j < m; ++j)
       {
-        Vector<double> q      = dG[j];
-        const double   norm_0 = q.l2_norm();
-        for (unsigned int k = 0; k < Q.size(); ++k)
+        Vector<double> &q   = Q[kept.size()];
+        q                   = dG[j];
+        const double norm_0 = q.l2_norm();
+        for (unsigned int k = 0; k < kept.size(); ++k)
           {
             const double r = Q[k] * q;
             R[k * m + j]   = r;
@@ -66,15 +67,14 @@ namespace thinlayer
         const double norm = q.l2_norm();
         if (norm_0 == 0 || norm < 1e-10 * norm_0)
           continue;
-        R[Q.size() * m + j] = norm;
+        R[kept.size() * m + j] = norm;
         q /= norm;
-        Q.push_back(std::move(q));
         kept.push_back(j);
       }
 
     // Back substitution for the kept columns: R_kk gamma = Q^T g.
-    const unsigned int  k = Q.size();
-    std::vector<double> gamma(k, 0.);
+    const unsigned int k = kept.size();
+    gamma.assign(k, 0.);
     for (int i = k - 1; i >= 0; --i)
       {
         double value = Q[i] * g;

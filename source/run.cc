@@ -194,11 +194,11 @@ namespace thinlayer
       .add("method", method_name(p.method))
       .add("seconds_per_substitution", analysis.substitution_seconds())
       .add("seconds_per_iteration",
-           total_iterations > 0 ?
-             timer.get_summary_data(
-               TimerOutput::total_wall_time)["load steps"] /
-               total_iterations :
-             0.)
+           total_iterations > 0
+             ? timer.get_summary_data(
+                 TimerOutput::total_wall_time)["load steps"] /
+                 total_iterations
+             : 0.)
       .add("wall_seconds", wall_clock.wall_time())
       .add("warnings", station_warning)
       .add("timing", timing);

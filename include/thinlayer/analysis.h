@@ -5,6 +5,7 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/quadrature_point_data.h>
 #include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/thread_management.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q.h>
@@ -371,6 +372,8 @@ namespace thinlayer
     std::vector<std::vector<Vector<double>>> chunk_body_loads;
     /// Internal forces of each chunk (return-mapping methods), per mode.
     std::vector<std::vector<Vector<double>>> chunk_internal_forces;
+    /// The point loop's tasks, one per chunk (kept to reuse the storage).
+    std::vector<Threads::Task<unsigned int>> tasks;
 
     /// Newton: the consistent tangent at every point and station.
     std::vector<SymmetricTensor<4, 3>> tangents;

@@ -4,6 +4,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <deque>
+#include <vector>
 
 namespace thinlayer
 {
@@ -46,6 +47,12 @@ namespace thinlayer
     bool                       has_previous;
     std::deque<Vector<double>> dX;
     std::deque<Vector<double>> dG;
+    // Work space of the least-squares solve, kept so that an iteration
+    // allocates nothing once the history is full.
+    std::vector<Vector<double>> Q;
+    std::vector<unsigned int>   kept;
+    std::vector<double>         R;
+    std::vector<double>         gamma;
   };
 } // namespace thinlayer
 
