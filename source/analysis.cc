@@ -161,15 +161,14 @@ namespace thinlayer
                 : FactorisedStiffness::Method::umfpack);
           }
       }
-    // The per-chunk vectors of the point loop, allocated once (the number
-    // of chunks is fixed, see update_stresses()).
-    const unsigned int n_chunks =
-      std::min(16u, static_cast<unsigned int>(tria.n_active_cells()));
-    const std::vector<Vector<double>> per_mode(modes.size(), Vector<double>(n));
-    chunk_body_loads.assign(n_chunks, per_mode);
+    // The point loop's per-cell slots, allocated once.
+    const std::size_t slot_size =
+      tria.n_active_cells() * modes.size() * fe.n_dofs_per_cell();
+    cell_body_loads.assign(slot_size, 0.);
     if (parameters.method != SolutionMethod::viscoplastic)
-      chunk_internal_forces.assign(n_chunks, per_mode);
-    tasks.reserve(n_chunks);
+      cell_internal_forces.assign(slot_size, 0.);
+    cell_has_body_loads.assign(tria.n_active_cells(), 0);
+    tasks.reserve(n_point_loop_chunks());
 
     stacked_increment.reinit(n * kinematics.n_modes());
     stacked_correction.reinit(n * kinematics.n_modes());
@@ -329,7 +328,10 @@ namespace thinlayer
     cell_law.resize(n_cells);
     cell_dofs.resize(n_cells * n);
     point_weight.resize(n_cells * n_q);
-    shape_strains.resize(n_cells * n_q * n_modes * n * n_parts);
+    // Every strain part at every point, then packed (see
+    // ShapeStrainPattern).
+    std::vector<SymmetricTensor<2, 3>> shape_strains(n_cells * n_q * n_modes *
+                                                     n * n_parts);
 
     history_storage.initialize(tria.begin_active(), tria.end(), n_q);
     history.resize(n_cells * n_q);
@@ -377,20 +379,112 @@ namespace thinlayer
             history[p]->stations.assign(kinematics.n_stations(), PointState());
           }
       }
+
+    // The non-zero pattern of each mode's and part's operator, over all
+    // points, grouped by component.
+    const unsigned int n_points = n_cells * n_q;
+    strain_operators.resize(n_modes * n_parts);
+    strain_entry_dof.clear();
+    std::vector<unsigned int> entry_source; // (m * n + i) * n_parts + part
+    std::vector<unsigned int> entry_component;
+    for (unsigned int m = 0; m < n_modes; ++m)
+      for (unsigned int part = 0; part < n_parts; ++part)
+        {
+          StrainOperator &op = strain_operators[m * n_parts + part];
+          for (unsigned int k = 0; k < 6; ++k)
+            {
+              op.component_begin[k] = strain_entry_dof.size();
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  const unsigned int j        = (m * n + i) * n_parts + part;
+                  bool               non_zero = false;
+                  for (unsigned int p = 0; p < n_points && !non_zero; ++p)
+                    non_zero = (shape_strains[p * n_modes * n * n_parts + j]
+                                  .access_raw_entry(k) != 0);
+                  if (non_zero)
+                    {
+                      strain_entry_dof.push_back(i);
+                      entry_source.push_back(j);
+                      entry_component.push_back(k);
+                    }
+                }
+            }
+          op.component_begin[6] = strain_entry_dof.size();
+        }
+    strain_entries_per_point = strain_entry_dof.size();
+    strain_values.resize(std::size_t(n_points) * strain_entries_per_point);
+    for (unsigned int p = 0; p < n_points; ++p)
+      for (unsigned int e = 0; e < strain_entries_per_point; ++e)
+        strain_values[std::size_t(p) * strain_entries_per_point + e] =
+          shape_strains[p * n_modes * n * n_parts + entry_source[e]]
+            .access_raw_entry(entry_component[e]);
   }
 
 
   template <int dim>
-  const SymmetricTensor<2, 3> &
-  Analysis<dim>::B(const unsigned int point,
-                   const unsigned int m,
-                   const unsigned int i,
-                   const unsigned int part) const
+  void
+  Analysis<dim>::shape_strains(const unsigned int     point,
+                               const unsigned int     m,
+                               const unsigned int     part,
+                               SymmetricTensor<2, 3> *B) const
   {
-    const unsigned int n = fe.n_dofs_per_cell();
-    return shape_strains[((point * kinematics.n_modes() + m) * n + i) *
-                           n_parts +
-                         part];
+    const StrainOperator &op = strain_operators[m * n_parts + part];
+    const double         *values =
+      &strain_values[std::size_t(point) * strain_entries_per_point];
+    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+      B[i] = 0;
+    for (unsigned int k = 0; k < 6; ++k)
+      for (unsigned int e = op.component_begin[k];
+           e < op.component_begin[k + 1];
+           ++e)
+        B[strain_entry_dof[e]].access_raw_entry(k) = values[e];
+  }
+
+
+  template <int dim>
+  inline SymmetricTensor<2, 3>
+  Analysis<dim>::strain(const unsigned int point,
+                        const unsigned int m,
+                        const unsigned int part,
+                        const double      *u) const
+  {
+    const StrainOperator &op = strain_operators[m * n_parts + part];
+    const double         *values =
+      &strain_values[std::size_t(point) * strain_entries_per_point];
+    SymmetricTensor<2, 3> e;
+    for (unsigned int k = 0; k < 6; ++k)
+      {
+        double sum = 0;
+        for (unsigned int j = op.component_begin[k];
+             j < op.component_begin[k + 1];
+             ++j)
+          sum += u[strain_entry_dof[j]] * values[j];
+        e.access_raw_entry(k) = sum;
+      }
+    return e;
+  }
+
+
+  template <int dim>
+  inline void
+  Analysis<dim>::add_projection(const unsigned int           point,
+                                const unsigned int           m,
+                                const unsigned int           part,
+                                const SymmetricTensor<2, 3> &t,
+                                double                      *target) const
+  {
+    const StrainOperator &op = strain_operators[m * n_parts + part];
+    const double         *values =
+      &strain_values[std::size_t(point) * strain_entries_per_point];
+    for (unsigned int k = 0; k < 6; ++k)
+      {
+        // The double contraction counts each off-diagonal pair twice.
+        const double tk = (k < 3 ? 1. : 2.) * t.access_raw_entry(k);
+        for (unsigned int j = op.component_begin[k];
+             j < op.component_begin[k + 1];
+             ++j)
+          target[strain_entry_dof[j]] += tk * values[j];
+      }
   }
 
 
@@ -402,7 +496,7 @@ namespace thinlayer
     const unsigned int                   n_q = quadrature.size();
     FullMatrix<double>                   cell_matrix(n, n);
     std::vector<types::global_dof_index> dofs(n);
-    std::vector<SymmetricTensor<2, 3>>   stress(n);
+    std::vector<SymmetricTensor<2, 3>>   strain(n), stress(n);
 
     for (unsigned int m = 0; m < kinematics.n_modes(); ++m)
       for (unsigned int c = 0; c < tria.n_active_cells(); ++c)
@@ -422,12 +516,12 @@ namespace thinlayer
                     point_weight[p];
                   if (weight == 0)
                     continue;
+                  shape_strains(p, m, part, strain.data());
                   for (unsigned int i = 0; i < n; ++i)
-                    stress[i] = D * B(p, m, i, part);
+                    stress[i] = D * strain[i];
                   for (unsigned int i = 0; i < n; ++i)
                     for (unsigned int j = 0; j < n; ++j)
-                      cell_matrix(i, j) +=
-                        (B(p, m, i, part) * stress[j]) * weight;
+                      cell_matrix(i, j) += (strain[i] * stress[j]) * weight;
                 }
             }
           std::copy(cell_dofs.begin() + c * n,
@@ -457,50 +551,57 @@ namespace thinlayer
 
   template <int dim>
   unsigned int
+  Analysis<dim>::n_point_loop_chunks() const
+  {
+    // A few chunks per thread balance the plastic zone's extra work.
+    return std::min(4 * MultithreadInfo::n_threads(), tria.n_active_cells());
+  }
+
+
+  template <int dim>
+  unsigned int
   Analysis<dim>::update_stresses(const bool store_tangents)
   {
-    // A fixed number of chunks, whatever the number of threads, so that the
-    // sums, and so the iterations, are the same on every machine.
     const unsigned int n_cells  = tria.n_active_cells();
-    const unsigned int n_chunks = std::min(16u, n_cells);
+    const unsigned int n_chunks = n_point_loop_chunks();
     const bool         viscoplastic =
       (parameters.method == SolutionMethod::viscoplastic);
 
     // The task list keeps its capacity: nothing is allocated here.
     tasks.clear();
     for (unsigned int k = 0; k < n_chunks; ++k)
-      tasks.push_back(Threads::new_task(
-        [this, k, n_chunks, n_cells, viscoplastic, store_tangents]() {
-          for (Vector<double> &v : chunk_body_loads[k])
-            v = 0;
-          if (!viscoplastic)
-            for (Vector<double> &v : chunk_internal_forces[k])
-              v = 0;
+      tasks.push_back(
+        Threads::new_task([this, k, n_chunks, n_cells, store_tangents]() {
           return update_stresses(k * n_cells / n_chunks,
                                  (k + 1) * n_cells / n_chunks,
-                                 chunk_body_loads[k],
-                                 viscoplastic ? chunk_body_loads[k]
-                                              : chunk_internal_forces[k],
                                  store_tangents);
         }));
     unsigned int n_yielding = 0;
     for (auto &task : tasks)
       n_yielding += task.return_value();
+
+    // The serial pass, in cell order.
+    const unsigned int n = fe.n_dofs_per_cell();
     for (unsigned int m = 0; m < modes.size(); ++m)
       {
-        Mode &mode = *modes[m];
-        if (viscoplastic)
-          for (unsigned int k = 0; k < n_chunks; ++k)
-            mode.body_load_change += chunk_body_loads[k][m];
-        else
+        Mode           &mode = *modes[m];
+        Vector<double> &target =
+          viscoplastic ? mode.body_load_change : mode.body_loads;
+        if (!viscoplastic)
           {
             mode.body_loads      = 0;
             mode.internal_forces = 0;
-            for (unsigned int k = 0; k < n_chunks; ++k)
-              {
-                mode.body_loads += chunk_body_loads[k][m];
-                mode.internal_forces += chunk_internal_forces[k][m];
-              }
+          }
+        for (unsigned int c = 0; c < n_cells; ++c)
+          {
+            const types::global_dof_index *dofs = &cell_dofs[c * n];
+            const std::size_t slot = (std::size_t(c) * modes.size() + m) * n;
+            if (cell_has_body_loads[c])
+              for (unsigned int i = 0; i < n; ++i)
+                target[dofs[i]] += cell_body_loads[slot + i];
+            if (!viscoplastic)
+              for (unsigned int i = 0; i < n; ++i)
+                mode.internal_forces[dofs[i]] += cell_internal_forces[slot + i];
           }
       }
     return n_yielding;
@@ -509,11 +610,9 @@ namespace thinlayer
 
   template <int dim>
   unsigned int
-  Analysis<dim>::update_stresses(const unsigned int           begin,
-                                 const unsigned int           end,
-                                 std::vector<Vector<double>> &body_loads,
-                                 std::vector<Vector<double>> &internal_forces,
-                                 const bool                   store_tangents)
+  Analysis<dim>::update_stresses(const unsigned int begin,
+                                 const unsigned int end,
+                                 const bool         store_tangents)
   {
     const bool viscoplastic =
       (parameters.method == SolutionMethod::viscoplastic);
@@ -530,9 +629,16 @@ namespace thinlayer
         const MaterialLaw             &law  = *cell_law[c];
         const SymmetricTensor<4, 3>   &D    = law.elasticity();
         const types::global_dof_index *dofs = &cell_dofs[c * n];
+        double *cell_loads = &cell_body_loads[std::size_t(c) * n_modes * n];
+        double *cell_forces =
+          viscoplastic ? nullptr
+                       : &cell_internal_forces[std::size_t(c) * n_modes * n];
+        bool has_body_loads = false;
         for (unsigned int m = 0; m < n_modes; ++m)
           for (unsigned int i = 0; i < n; ++i)
             du[m * n + i] = modes[m]->step_increment[dofs[i]];
+        if (cell_forces != nullptr)
+          std::fill(cell_forces, cell_forces + n_modes * n, 0.);
 
         for (unsigned int q = 0; q < n_q; ++q)
           {
@@ -541,10 +647,8 @@ namespace thinlayer
             for (unsigned int m = 0; m < n_modes; ++m)
               for (unsigned int part = 0; part < n_parts; ++part)
                 {
-                  SymmetricTensor<2, 3> &e = mode_strain[m * n_parts + part];
-                  e                        = 0;
-                  for (unsigned int i = 0; i < n; ++i)
-                    e += du[m * n + i] * B(p, m, i, part);
+                  mode_strain[m * n_parts + part] =
+                    strain(p, m, part, &du[m * n]);
                 }
 
             for (unsigned int s = 0; s < n_stations; ++s)
@@ -559,25 +663,34 @@ namespace thinlayer
                         kinematics.T2(m, s) * mode_strain[m * n_parts + 1];
                   }
                 // Adds int (T1 B1 + T2 B2)^T t over this point and station
-                // to every mode's vector in @p target.
+                // to every mode's part of the cell's slot @p target.
                 const double weight =
                   kinematics.station_weight(s) * point_weight[p];
                 const auto project = [&](const SymmetricTensor<2, 3> &t,
-                                         std::vector<Vector<double>> &target) {
-                  const SymmetricTensor<2, 3> tw = t * weight;
+                                         double                      *target) {
                   for (unsigned int m = 0; m < n_modes; ++m)
                     {
-                      Vector<double> &b  = target[m];
-                      const double    t1 = kinematics.T1(m, s);
-                      const double    t2 = kinematics.T2(m, s);
-                      for (unsigned int i = 0; i < n; ++i)
-                        {
-                          double value = t1 * (B(p, m, i, 0) * tw);
-                          if (n_parts == 2)
-                            value += t2 * (B(p, m, i, 1) * tw);
-                          b[dofs[i]] += value;
-                        }
+                      add_projection(p,
+                                     m,
+                                     0,
+                                     t * (weight * kinematics.T1(m, s)),
+                                     target + m * n);
+                      if (n_parts == 2)
+                        add_projection(p,
+                                       m,
+                                       1,
+                                       t * (weight * kinematics.T2(m, s)),
+                                       target + m * n);
                     }
+                };
+                // The first body load of this cell clears its slot.
+                const auto add_body_load = [&](const SymmetricTensor<2, 3> &t) {
+                  if (!has_body_loads)
+                    {
+                      std::fill(cell_loads, cell_loads + n_modes * n, 0.);
+                      has_body_loads = true;
+                    }
+                  project(t, cell_loads);
                 };
 
                 if (!viscoplastic)
@@ -600,12 +713,12 @@ namespace thinlayer
                             ++n_yielding;
                             state.step_plastic_strain =
                               law.compliance() * (trial - r.stress);
-                            project(trial - r.stress, body_loads);
+                            add_body_load(trial - r.stress);
                           }
                         else
                           state.step_plastic_strain = 0;
                       }
-                    project(state.stress, internal_forces);
+                    project(state.stress, cell_forces);
                     continue;
                   }
 
@@ -626,9 +739,10 @@ namespace thinlayer
                 state.step_plastic_strain += viscoplastic_strain;
 
                 // Project D (that strain) back onto every mode.
-                project(D * viscoplastic_strain, body_loads);
+                add_body_load(D * viscoplastic_strain);
               }
           }
+        cell_has_body_loads[c] = has_body_loads;
       }
     return n_yielding;
   }
@@ -638,30 +752,38 @@ namespace thinlayer
   void
   Analysis<dim>::update_internal_forces()
   {
-    const unsigned int n   = fe.n_dofs_per_cell();
-    const unsigned int n_q = quadrature.size();
+    const unsigned int  n       = fe.n_dofs_per_cell();
+    const unsigned int  n_q     = quadrature.size();
+    const unsigned int  n_modes = kinematics.n_modes();
+    std::vector<double> cell_forces(n_modes * n);
     for (auto &mode : modes)
       mode->internal_forces = 0;
     for (unsigned int c = 0; c < tria.n_active_cells(); ++c)
-      for (unsigned int q = 0; q < n_q; ++q)
-        {
-          const unsigned int p = c * n_q + q;
-          for (unsigned int s = 0; s < kinematics.n_stations(); ++s)
-            {
-              const SymmetricTensor<2, 3> sigma =
-                history[p]->stations[s].stress *
-                (kinematics.station_weight(s) * point_weight[p]);
-              for (unsigned int m = 0; m < kinematics.n_modes(); ++m)
-                for (unsigned int i = 0; i < n; ++i)
-                  {
-                    double value =
-                      kinematics.T1(m, s) * (B(p, m, i, 0) * sigma);
-                    if (n_parts == 2)
-                      value += kinematics.T2(m, s) * (B(p, m, i, 1) * sigma);
-                    modes[m]->internal_forces[cell_dofs[c * n + i]] += value;
-                  }
-            }
-        }
+      {
+        std::fill(cell_forces.begin(), cell_forces.end(), 0.);
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            const unsigned int p = c * n_q + q;
+            for (unsigned int s = 0; s < kinematics.n_stations(); ++s)
+              {
+                const SymmetricTensor<2, 3> sigma =
+                  history[p]->stations[s].stress *
+                  (kinematics.station_weight(s) * point_weight[p]);
+                for (unsigned int m = 0; m < n_modes; ++m)
+                  for (unsigned int part = 0; part < n_parts; ++part)
+                    add_projection(p,
+                                   m,
+                                   part,
+                                   sigma * (part == 0 ? kinematics.T1(m, s)
+                                                      : kinematics.T2(m, s)),
+                                   &cell_forces[m * n]);
+              }
+          }
+        for (unsigned int m = 0; m < n_modes; ++m)
+          for (unsigned int i = 0; i < n; ++i)
+            modes[m]->internal_forces[cell_dofs[c * n + i]] +=
+              cell_forces[m * n + i];
+      }
   }
 
 
@@ -739,18 +861,16 @@ namespace thinlayer
         for (unsigned int m = 0; m < modes.size(); ++m)
           {
             Mode &mode = *modes[m];
+            // The body loads are kept condensed (condensing is linear, and
+            // idempotent, so solve_increment() may condense them again):
+            // the criterion reads them with no copy.
+            mode.constraints.condense(mode.body_load_change);
             mode.body_loads += mode.body_load_change;
             if (parameters.convergence_criterion ==
                 ConvergenceCriterion::body_loads)
               {
-                change = std::max(change,
-                                  condensed_max(mode.body_load_change,
-                                                mode.constraints,
-                                                mode.condensed));
-                size   = std::max(size,
-                                condensed_max(mode.body_loads,
-                                              mode.constraints,
-                                              mode.condensed));
+                change = std::max(change, mode.body_load_change.linfty_norm());
+                size   = std::max(size, mode.body_loads.linfty_norm());
               }
             else
               {
@@ -965,7 +1085,7 @@ namespace thinlayer
     const unsigned int                   n_stations = kinematics.n_stations();
     FullMatrix<double>                   cell_matrix(n, n);
     std::vector<types::global_dof_index> dofs(n);
-    std::vector<SymmetricTensor<2, 3>>   strain(n), stress(n);
+    std::vector<SymmetricTensor<2, 3>>   strain(n), strain_part2(n), stress(n);
 
     for (unsigned int m = 0; m < kinematics.n_modes(); ++m)
       {
@@ -987,11 +1107,14 @@ namespace thinlayer
                       kinematics.station_weight(s) * point_weight[p];
                     const double t1 = kinematics.T1(m, s);
                     const double t2 = kinematics.T2(m, s);
+                    shape_strains(p, m, 0, strain.data());
+                    if (n_parts == 2)
+                      shape_strains(p, m, 1, strain_part2.data());
                     for (unsigned int i = 0; i < n; ++i)
                       {
-                        strain[i] = t1 * B(p, m, i, 0);
+                        strain[i] *= t1;
                         if (n_parts == 2)
-                          strain[i] += t2 * B(p, m, i, 1);
+                          strain[i] += t2 * strain_part2[i];
                         stress[i] = C * strain[i];
                       }
                     for (unsigned int i = 0; i < n; ++i)

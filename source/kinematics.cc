@@ -16,6 +16,7 @@ namespace thinlayer
     k.harmonics     = {0};
     k.angles        = {0};
     k.weights       = {1};
+    k.tabulate_factors();
     return k;
   }
 
@@ -41,7 +42,22 @@ namespace thinlayer
         k.weights[s] += h;
         k.weights[s + 1] += h;
       }
+    k.tabulate_factors();
     return k;
+  }
+
+
+  void
+  Kinematics::tabulate_factors()
+  {
+    t1_at_stations.resize(harmonics.size() * angles.size());
+    t2_at_stations.resize(harmonics.size() * angles.size());
+    for (unsigned int m = 0; m < harmonics.size(); ++m)
+      for (unsigned int s = 0; s < angles.size(); ++s)
+        {
+          t1_at_stations[m * angles.size() + s] = T1_at(m, angles[s]);
+          t2_at_stations[m * angles.size() + s] = T2_at(m, angles[s]);
+        }
   }
 
 
@@ -56,20 +72,6 @@ namespace thinlayer
   Kinematics::n_components() const
   {
     return fourier ? 3 : 2;
-  }
-
-
-  unsigned int
-  Kinematics::n_modes() const
-  {
-    return harmonics.size();
-  }
-
-
-  unsigned int
-  Kinematics::n_stations() const
-  {
-    return angles.size();
   }
 
 
@@ -115,20 +117,6 @@ namespace thinlayer
 
 
   double
-  Kinematics::T1(const unsigned int m, const unsigned int s) const
-  {
-    return T1_at(m, angles[s]);
-  }
-
-
-  double
-  Kinematics::T2(const unsigned int m, const unsigned int s) const
-  {
-    return T2_at(m, angles[s]);
-  }
-
-
-  double
   Kinematics::c1(const unsigned int m) const
   {
     if (!fourier)
@@ -147,13 +135,6 @@ namespace thinlayer
     if (harmonics[m] > 0)
       return numbers::PI;
     return antisymmetric ? 2 * numbers::PI : 0;
-  }
-
-
-  double
-  Kinematics::station_weight(const unsigned int s) const
-  {
-    return weights[s];
   }
 
 

@@ -198,9 +198,29 @@ namespace thinlayer
         return true;
       }
 
+      /**
+       * F = (s1 - s3)/2 + (s1 + s3)/2 sin(phi) - c cos(phi), the
+       * invariant form sigma_m sin(phi) + sigma_bar (cos(theta)/sqrt(3) -
+       * sin(theta) sin(phi)/3) - c cos(phi) written with the extreme
+       * principal stresses. With no shear out of the x-y plane (plane
+       * strain) they come from a 2x2 eigenproblem, with no asin, pow or
+       * sincos: this is evaluated at every point in every viscoplastic
+       * iteration.
+       */
       double
       yield_function(const SymmetricTensor<2, 3> &stress) const override
       {
+        if (stress[0][2] == 0 && stress[1][2] == 0)
+          {
+            const double centre     = 0.5 * (stress[0][0] + stress[1][1]);
+            const double half_range = 0.5 * (stress[0][0] - stress[1][1]);
+            const double radius =
+              std::sqrt(half_range * half_range + stress[0][1] * stress[0][1]);
+            const double s1 = std::max(centre + radius, stress[2][2]);
+            const double s3 = std::min(centre - radius, stress[2][2]);
+            return 0.5 * (s1 - s3) + 0.5 * (s1 + s3) * sin_phi -
+                   cohesion * cos_phi;
+          }
         const StressInvariants inv(stress);
         return inv.mean * sin_phi +
                inv.equivalent * (std::cos(inv.lode_angle) / std::sqrt(3.) -

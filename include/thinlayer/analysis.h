@@ -23,6 +23,7 @@
 #include <thinlayer/parameters.h>
 #include <thinlayer/point_history.h>
 
+#include <array>
 #include <map>
 #include <memory>
 #include <vector>
@@ -242,13 +243,31 @@ namespace thinlayer
     void
     assemble_stiffness();
 
-    /// The strain-displacement part (1 or 2) of shape function @p i of
-    /// mode @p m at point @p point.
-    const SymmetricTensor<2, 3> &
-    B(const unsigned int point,
-      const unsigned int m,
-      const unsigned int i,
-      const unsigned int part) const;
+    /// The strain-displacement parts @p part (0 or 1) of all shape
+    /// functions of mode @p m at point @p point, into @p B (one per DoF of
+    /// the cell).
+    void
+    shape_strains(const unsigned int     point,
+                  const unsigned int     m,
+                  const unsigned int     part,
+                  SymmetricTensor<2, 3> *B) const;
+
+    /// The strain part @p part of mode @p m at @p point for the cell's
+    /// nodal values @p u of that mode: sum_i u_i B_i.
+    SymmetricTensor<2, 3>
+    strain(const unsigned int point,
+           const unsigned int m,
+           const unsigned int part,
+           const double      *u) const;
+
+    /// @p target_i += B_i : @p t for every DoF i of the cell (part @p part
+    /// of mode @p m at @p point).
+    void
+    add_projection(const unsigned int           point,
+                   const unsigned int           m,
+                   const unsigned int           part,
+                   const SymmetricTensor<2, 3> &t,
+                   double                      *target) const;
 
     void
     solve_increment(const unsigned int m, const double dlambda);
@@ -312,22 +331,27 @@ namespace thinlayer
      * @p store_tangents keeps the consistent tangents. Returns the number
      * of yielding points and stations.
      *
-     * The cells are split into a fixed number of chunks, run as parallel
-     * tasks, each adding to its own body-load vectors, which are then
-     * summed in a fixed order: the result does not depend on the number of
-     * threads.
+     * The cells are split into chunks run as parallel tasks. Each cell
+     * writes its nodal forces into its own slot of cell_body_loads and
+     * cell_internal_forces, and one serial pass adds the slots into the
+     * global vectors in cell order: the sums, and so the iterations, do
+     * not depend on the number of threads, and no per-chunk global vector
+     * has to be zeroed and summed (which cost more than the points did).
      */
     unsigned int
     update_stresses(const bool store_tangents = false);
 
-    /// update_stresses() for the active cells [@p begin, @p end), adding
-    /// to @p body_loads and @p internal_forces (one vector per mode).
+    /// The number of chunks the point loop is split into.
     unsigned int
-    update_stresses(const unsigned int           begin,
-                    const unsigned int           end,
-                    std::vector<Vector<double>> &body_loads,
-                    std::vector<Vector<double>> &internal_forces,
-                    const bool                   store_tangents);
+    n_point_loop_chunks() const;
+
+    /// update_stresses() for the active cells [@p begin, @p end): fills
+    /// their slots of cell_body_loads (and cell_internal_forces) and marks
+    /// in cell_has_body_loads whether a cell's body loads are non-zero.
+    unsigned int
+    update_stresses(const unsigned int begin,
+                    const unsigned int end,
+                    const bool         store_tangents);
 
     void
     update_internal_forces();
@@ -358,8 +382,30 @@ namespace thinlayer
     std::vector<const MaterialLaw *>     cell_law;
     std::vector<types::global_dof_index> cell_dofs;
     std::vector<double>                  point_weight;
-    std::vector<SymmetricTensor<2, 3>>   shape_strains;
     unsigned int                         n_parts;
+
+    /**
+     * The strain-displacement operator of each mode and part, stored by
+     * its non-zero entries only: for each raw component k of
+     * SymmetricTensor<2,3>, the entries [component_begin[k],
+     * component_begin[k+1]) name a DoF of the cell (strain_entry_dof) whose
+     * shape function has a non-zero component k at some point. A shape
+     * function of u_x in plane strain has only xx and xy, for example. The
+     * values, strain_entries_per_point per point, are in the same order.
+     * Grouped by component, the strain is six short gathered dot products,
+     * and the point loop reads a third of the memory a full
+     * SymmetricTensor per shape function needs; memory traffic is what
+     * limits it.
+     */
+    struct StrainOperator
+    {
+      std::array<unsigned int, 7> component_begin;
+    };
+    /// Indexed by m * n_parts + part.
+    std::vector<StrainOperator> strain_operators;
+    std::vector<unsigned int>   strain_entry_dof;
+    std::vector<double>         strain_values;
+    unsigned int                strain_entries_per_point;
 
     CellDataStorage<typename Triangulation<dim>::cell_iterator, PointHistory>
                                 history_storage;
@@ -368,10 +414,16 @@ namespace thinlayer
     /// The component of every DoF.
     std::vector<unsigned int> dof_component;
 
-    /// Body-load increments of each chunk of cells, per mode.
-    std::vector<std::vector<Vector<double>>> chunk_body_loads;
-    /// Internal forces of each chunk (return-mapping methods), per mode.
-    std::vector<std::vector<Vector<double>>> chunk_internal_forces;
+    /// Each cell's nodal body loads (viscoplastic: their increments), per
+    /// mode: n_modes * dofs_per_cell entries from c * n_modes *
+    /// dofs_per_cell on.
+    std::vector<double> cell_body_loads;
+    /// Each cell's nodal internal forces (return-mapping methods), laid
+    /// out as cell_body_loads.
+    std::vector<double> cell_internal_forces;
+    /// Whether a cell's slot of cell_body_loads holds anything (no point of
+    /// it yields): the serial pass skips the others.
+    std::vector<unsigned char> cell_has_body_loads;
     /// The point loop's tasks, one per chunk (kept to reuse the storage).
     std::vector<Threads::Task<unsigned int>> tasks;
 

@@ -77,10 +77,16 @@ namespace thinlayer
     n_components() const;
 
     unsigned int
-    n_modes() const;
+    n_modes() const
+    {
+      return harmonics.size();
+    }
 
     unsigned int
-    n_stations() const;
+    n_stations() const
+    {
+      return angles.size();
+    }
 
     /// The harmonic number of mode @p m (0 in plane strain).
     unsigned int
@@ -93,11 +99,19 @@ namespace thinlayer
     double
     station_angle(const unsigned int s) const;
 
+    /// T1_at() and T2_at() at station @p s, tabulated: the point loop asks
+    /// for them at every point.
     double
-    T1(const unsigned int m, const unsigned int s) const;
+    T1(const unsigned int m, const unsigned int s) const
+    {
+      return t1_at_stations[m * angles.size() + s];
+    }
 
     double
-    T2(const unsigned int m, const unsigned int s) const;
+    T2(const unsigned int m, const unsigned int s) const
+    {
+      return t2_at_stations[m * angles.size() + s];
+    }
 
     /// int T1(n theta)^2 dtheta over the circle (1 in plane strain).
     double
@@ -109,7 +123,10 @@ namespace thinlayer
 
     /// Weight of station @p s when projecting onto the modes.
     double
-    station_weight(const unsigned int s) const;
+    station_weight(const unsigned int s) const
+    {
+      return weights[s];
+    }
 
     /// The trigonometric factors at any angle (for loads and monitors).
     double
@@ -152,11 +169,17 @@ namespace thinlayer
     station_warning() const;
 
   private:
+    /// Fills t1_at_stations and t2_at_stations.
+    void
+    tabulate_factors();
+
     bool                      fourier;
     bool                      antisymmetric;
     std::vector<unsigned int> harmonics;
     std::vector<double>       angles;
     std::vector<double>       weights;
+    std::vector<double>       t1_at_stations;
+    std::vector<double>       t2_at_stations;
   };
 } // namespace thinlayer
 
