@@ -14,8 +14,9 @@ memory), benchmarks.md (the same table, also printed), benchmarks.png
 near_collapse.png (iterations per load step over the last steps before
 collapse, per case and method). --quick runs mesh level 1 only.
 --ladder climbs the cost ladder ("no more model than the scene needs"):
-element Q8 or Q9 x 2x2 or 3x3 Gauss points x mesh level, for Prandtl and
-Case 1, into ladder.csv/.md/.png. --stability runs the Case 1 stability
+element Q8 or Q9 x 2x2 or 3x3 Gauss points x mesh level 1 and 2, for every
+case with its recommended method, and for Case 3 the harmonics {1}, {1,3},
+{1,3,5}, into ladder.csv/.md/.png. --stability runs the Case 1 stability
 maps (adhesive and frictional, aspect ratio x TOL) with every method, into
 output/benchmarks/stability/ (a map per material and method, and
 stability.md summing them up). --performance times Prandtl's strip footing
@@ -55,19 +56,33 @@ CASES = {
     }),
     "case3": ("prm/case3-circular-footing.prm", {
         1: "half_width=1, width=5, depth=3, aspect_ratio=10, n_footing=8, n_side=12, n_depth=10, interface_beyond_footing=1, refinement=1",
+        2: "half_width=1, width=5, depth=3, aspect_ratio=10, n_footing=8, n_side=12, n_depth=10, interface_beyond_footing=1, refinement=2",
     }),
     "case4-rough": ("prm/case4-rough-wall.prm", {
         1: "wall_height=1, width=3, depth=2, aspect_ratio=10, n_wall=10, n_below=5, n_x=12",
+        2: "wall_height=1, width=3, depth=2, aspect_ratio=10, n_wall=20, n_below=10, n_x=24",
     }),
 }
+# The levels the default mode runs per case (Case 3 and Case 4 at level 2
+# only in the ladder: a minute and more a run with the slower methods).
+BENCHMARK_LEVELS = {"prandtl": (1, 2), "case1-adhesive": (1, 2), "case2": (1, 2),
+                    "case3": (1,), "case4-rough": (1,)}
+# The method each case's ladder climbs with: the recommended one (see
+# README, "Choosing a solution method").
+LADDER_METHOD = {"prandtl": ("viscoplastic", "body loads"),
+                 "case1-adhesive": ("accelerated initial stress", "residual"),
+                 "case2": ("accelerated initial stress", "residual"),
+                 "case3": ("accelerated initial stress", "residual"),
+                 "case4-rough": ("accelerated initial stress", "residual")}
+# Case 3's harmonics rung, with stations every 15 degrees so that only the
+# harmonics change.
+LADDER_HARMONICS = ["1", "1, 3", "1, 3, 5"]
+LADDER_STATIONS = ", ".join(str(15 * k) for k in range(13))
 # Each method with its convergence criterion: the paper's body-load test for
 # the viscoplastic method, the out-of-balance force for the others.
 METHODS = [("viscoplastic", "body loads"), ("initial stress", "residual"),
            ("accelerated initial stress", "residual"), ("newton", "residual")]
 TOLERANCES = ["1e-3", "1e-5"]
-# Prandtl at level 3 (3840 cells) costs about half a minute a run with the
-# viscoplastic method; the performance mode covers the large meshes.
-MAX_LEVEL = 2
 
 
 def run_once(prm, geometry, solver, tol, directory, extra=()):
@@ -110,58 +125,81 @@ def median_run(prm, geometry, solver, tol, directory, repeat, extra=()):
 
 
 def ladder(repeat):
-    """Error against cost as the model grows: element, quadrature, mesh."""
+    """Error against cost as the model grows: element, quadrature, mesh,
+    and for Case 3 the harmonics."""
     rows = []
-    for case in ("prandtl", "case1-adhesive"):
+
+    def rung(case, level, element, gauss, harmonics=None):
         prm, levels = CASES[case]
+        method, criterion = LADDER_METHOD[case]
+        entries = ("Discretisation/Element=" + element,
+                   "Discretisation/Gauss points per direction=" + gauss) + \
+            method_entries(method, criterion)
+        label = "%s-%d-%s-%s" % (case, level, element, gauss)
+        if harmonics:
+            entries += ("Kinematics/Harmonics=" + harmonics,
+                        "Kinematics/Stations=" + LADDER_STATIONS)
+            label += "-h" + harmonics.replace(", ", "_")
+        directory = os.path.join(OUT, "runs", "ladder-" + label)
+        summary, median, peak = median_run(prm, levels[level], "cholmod", "1e-3",
+                                           directory, repeat, entries)
+        row = {"case": case, "mesh_level": level, "element": element,
+               "gauss_points": gauss + "x" + gauss, "harmonics": harmonics or "",
+               "method": method, "equations": summary["equations"],
+               "collapse_detected": int(not summary["converged"]),
+               "relative_error": summary["relative_error"],
+               "total_iterations": summary["total_iterations"],
+               "wall_median_s": median, "peak_memory_mb": peak}
+        rows.append(row)
+        print("%-15s level %d %s %s %-8s error %+6.1f%% %6d iterations %8.3f s" % (
+            case, level, element, row["gauss_points"], harmonics or "",
+            100 * (row["relative_error"] or 0), row["total_iterations"], median), flush=True)
+
+    for case in CASES:
         for level in (1, 2):
             for element in ("Q8", "Q9"):
                 for gauss in ("2", "3"):
-                    directory = os.path.join(OUT, "runs", "ladder-%s-%d-%s-%s"
-                                             % (case, level, element, gauss))
-                    summary, median, peak = median_run(
-                        prm, levels[level], "cholmod", "1e-3", directory, repeat,
-                        ("Discretisation/Element=" + element,
-                         "Discretisation/Gauss points per direction=" + gauss))
-                    row = {"case": case, "mesh_level": level, "element": element,
-                           "gauss_points": gauss + "x" + gauss,
-                           "equations": summary["equations"],
-                           "collapse_detected": int(not summary["converged"]),
-                           "relative_error": summary["relative_error"],
-                           "total_iterations": summary["total_iterations"],
-                           "wall_median_s": median, "peak_memory_mb": peak}
-                    rows.append(row)
-                    print("%-15s level %d %s %s error %+6.1f%% %6d iterations %8.3f s" % (
-                        case, level, element, row["gauss_points"],
-                        100 * (row["relative_error"] or 0), row["total_iterations"], median),
-                        flush=True)
+                    rung(case, level, element, gauss)
+    for level in (1, 2):
+        for harmonics in LADDER_HARMONICS:
+            rung("case3", level, "Q8", "2", harmonics)
+
     write_results(rows, "ladder",
-                  "| case | level | element | Gauss | equations | collapse detected | error "
-                  "| iterations | wall s (median) |",
-                  lambda r: "| %s | %d | %s | %s | %d | %s | %+.1f%% | %d | %.3f |" % (
-                      r["case"], r["mesh_level"], r["element"], r["gauss_points"],
-                      r["equations"], "yes" if r["collapse_detected"] else "no",
+                  "| case | method | level | element | Gauss | harmonics | equations "
+                  "| collapse detected | error | iterations | wall s (median) |",
+                  lambda r: "| %s | %s | %d | %s | %s | %s | %d | %s | %+.1f%% | %d | %.3f |" % (
+                      r["case"], r["method"], r["mesh_level"], r["element"],
+                      r["gauss_points"], r["harmonics"] or "(file's)", r["equations"],
+                      "yes" if r["collapse_detected"] else "no",
                       100 * (r["relative_error"] or 0), r["total_iterations"],
                       r["wall_median_s"]))
 
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, axes = plt.subplots(1, 2, figsize=(10, 4))
-    for ax, case in zip(axes, ("prandtl", "case1-adhesive")):
+    cases = list(CASES)
+    fig, axes = plt.subplots(1, len(cases), figsize=(4.2 * len(cases), 4), squeeze=False)
+    for ax, case in zip(axes[0], cases):
         for element, marker in (("Q8", "o"), ("Q9", "s")):
             for gauss, style in (("2x2", "-"), ("3x3", "--")):
                 pts = [r for r in rows if r["case"] == case and r["element"] == element
-                       and r["gauss_points"] == gauss]
+                       and r["gauss_points"] == gauss and not r["harmonics"]]
                 ax.plot([r["wall_median_s"] for r in pts],
                         [abs(100 * (r["relative_error"] or 0)) for r in pts],
                         marker + style, label="%s, %s" % (element, gauss))
+        for harmonics, colour in zip(LADDER_HARMONICS, ("C4", "C5", "C6")):
+            pts = [r for r in rows if r["case"] == case and r["harmonics"] == harmonics]
+            if pts:
+                ax.plot([r["wall_median_s"] for r in pts],
+                        [abs(100 * (r["relative_error"] or 0)) for r in pts],
+                        "^:", color=colour, label="Q8, 2x2, harmonics " + harmonics)
         ax.set_xscale("log")
         ax.set_xlabel("wall time, median (s)")
         ax.set_ylabel("|error| of the collapse load (%)")
-        ax.set_title(case + " (points: mesh levels 1, 2)", fontsize=9)
+        ax.set_title("%s, %s (points: mesh levels 1, 2)" % (case, LADDER_METHOD[case][0]),
+                     fontsize=8)
         ax.grid(alpha=0.3)
-        ax.legend(fontsize=7)
+        ax.legend(fontsize=6)
     fig.tight_layout()
     fig.savefig(os.path.join(OUT, "ladder.png"), dpi=120)
 
@@ -186,7 +224,7 @@ def main():
     rows = []
     for case, (prm, levels) in CASES.items():
         for level, geometry in sorted(levels.items()):
-            if level > (1 if quick else MAX_LEVEL):
+            if level not in BENCHMARK_LEVELS[case] or (quick and level > 1):
                 continue
             for method, criterion in METHODS:
                 for tol in TOLERANCES:

@@ -329,9 +329,9 @@ namespace thinlayer
     cell_dofs.resize(n_cells * n);
     point_weight.resize(n_cells * n_q);
     // Every strain part at every point, then packed (see
-    // ShapeStrainPattern).
-    std::vector<SymmetricTensor<2, 3>> shape_strains(n_cells * n_q * n_modes *
-                                                     n * n_parts);
+    // StrainOperator).
+    std::vector<SymmetricTensor<2, 3>> all_shape_strains(n_cells * n_q *
+                                                         n_modes * n * n_parts);
 
     history_storage.initialize(tria.begin_active(), tria.end(), n_q);
     history.resize(n_cells * n_q);
@@ -370,10 +370,11 @@ namespace thinlayer
                     x[0],
                     part1,
                     part2);
-                  shape_strains[((p * n_modes + m) * n + i) * n_parts] = part1;
+                  all_shape_strains[((p * n_modes + m) * n + i) * n_parts] =
+                    part1;
                   if (n_parts == 2)
-                    shape_strains[((p * n_modes + m) * n + i) * n_parts + 1] =
-                      part2;
+                    all_shape_strains[((p * n_modes + m) * n + i) * n_parts +
+                                      1] = part2;
                 }
             history[p] = points[q].get();
             history[p]->stations.assign(kinematics.n_stations(), PointState());
@@ -399,7 +400,7 @@ namespace thinlayer
                   const unsigned int j        = (m * n + i) * n_parts + part;
                   bool               non_zero = false;
                   for (unsigned int p = 0; p < n_points && !non_zero; ++p)
-                    non_zero = (shape_strains[p * n_modes * n * n_parts + j]
+                    non_zero = (all_shape_strains[p * n_modes * n * n_parts + j]
                                   .access_raw_entry(k) != 0);
                   if (non_zero)
                     {
@@ -416,7 +417,7 @@ namespace thinlayer
     for (unsigned int p = 0; p < n_points; ++p)
       for (unsigned int e = 0; e < strain_entries_per_point; ++e)
         strain_values[std::size_t(p) * strain_entries_per_point + e] =
-          shape_strains[p * n_modes * n * n_parts + entry_source[e]]
+          all_shape_strains[p * n_modes * n * n_parts + entry_source[e]]
             .access_raw_entry(entry_component[e]);
   }
 

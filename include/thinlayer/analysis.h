@@ -335,8 +335,8 @@ namespace thinlayer
      * writes its nodal forces into its own slot of cell_body_loads and
      * cell_internal_forces, and one serial pass adds the slots into the
      * global vectors in cell order: the sums, and so the iterations, do
-     * not depend on the number of threads, and no per-chunk global vector
-     * has to be zeroed and summed (which cost more than the points did).
+     * not depend on the number of threads, and no per-chunk global vectors
+     * are zeroed and summed every iteration.
      */
     unsigned int
     update_stresses(const bool store_tangents = false);
@@ -421,8 +421,8 @@ namespace thinlayer
     /// Each cell's nodal internal forces (return-mapping methods), laid
     /// out as cell_body_loads.
     std::vector<double> cell_internal_forces;
-    /// Whether a cell's slot of cell_body_loads holds anything (no point of
-    /// it yields): the serial pass skips the others.
+    /// Whether a cell's slot of cell_body_loads holds anything (0 when none
+    /// of its points yields): the serial pass skips the cells with 0.
     std::vector<unsigned char> cell_has_body_loads;
     /// The point loop's tasks, one per chunk (kept to reuse the storage).
     std::vector<Threads::Task<unsigned int>> tasks;
