@@ -628,7 +628,6 @@ namespace thinlayer
     for (unsigned int c = begin; c < end; ++c)
       {
         const MaterialLaw             &law  = *cell_law[c];
-        const SymmetricTensor<4, 3>   &D    = law.elasticity();
         const types::global_dof_index *dofs = &cell_dofs[c * n];
         double *cell_loads = &cell_body_loads[std::size_t(c) * n_modes * n];
         double *cell_forces =
@@ -698,7 +697,7 @@ namespace thinlayer
                   {
                     // Return mapping of the step's elastic trial stress.
                     const SymmetricTensor<2, 3> trial =
-                      state.converged_stress + D * strain;
+                      state.converged_stress + law.elastic_stress(strain);
                     state.yielding = false;
                     if (!law.can_yield())
                       state.stress = trial;
@@ -723,8 +722,9 @@ namespace thinlayer
                     continue;
                   }
 
-                state.stress = state.converged_stress +
-                               D * (strain - state.step_plastic_strain);
+                state.stress =
+                  state.converged_stress +
+                  law.elastic_stress(strain - state.step_plastic_strain);
 
                 state.yielding = false;
                 if (!law.can_yield())
@@ -740,7 +740,7 @@ namespace thinlayer
                 state.step_plastic_strain += viscoplastic_strain;
 
                 // Project D (that strain) back onto every mode.
-                add_body_load(D * viscoplastic_strain);
+                add_body_load(law.elastic_stress(viscoplastic_strain));
               }
           }
         cell_has_body_loads[c] = has_body_loads;

@@ -453,6 +453,9 @@ namespace thinlayer
     , poissons_ratio(poissons_ratio)
     , stiffness(isotropic_elasticity(youngs_modulus, poissons_ratio))
     , inverse_stiffness(invert(stiffness))
+    , lame_lambda(youngs_modulus * poissons_ratio /
+                  ((1 + poissons_ratio) * (1 - 2 * poissons_ratio)))
+    , shear_modulus(youngs_modulus / (2 * (1 + poissons_ratio)))
   {}
 
 

@@ -94,9 +94,12 @@ namespace thinlayer
     double       load_factor = 0, last_converged_load = 0;
     double       first_failed_load = std::numeric_limits<double>::quiet_NaN();
     unsigned int total_iterations  = 0;
-    unsigned int steps_run         = 0;
-    bool         converged         = true;
+    unsigned int converged_iterations = 0;
+    unsigned int steps_run            = 0;
+    bool         converged            = true;
+    bool         any_step_converged   = false;
     DisplacementMeasure displacement{0, 0, 0};
+    DisplacementMeasure converged_displacement{0, 0, 0};
 
     for (unsigned int step = 1; step <= p.load_increments.size(); ++step)
       {
@@ -118,16 +121,26 @@ namespace thinlayer
         writer.write_displacements(analysis, p.displacement_angle);
         timer.leave_subsection();
 
+        // Progress: one line per step, as it ends. A failed step's state
+        // is no equilibrium, and its numbers depend on rounding: they go to
+        // history.csv (where the mechanism can be seen), not here.
         out << "  step " << format("%4.0f", step) << "  load factor "
-            << format("%10.4g", load_factor) << "  load "
-            << format("%12.5e", load) << "  displacement "
-            << format("%12.5e", displacement.mean) << "  iterations "
-            << format("%4.0f", result.iterations) << "  "
-            << (result.converged ? "converged" : "FAILED")
-            << std::endl; // progress: one line per step, as it ends
+            << format("%10.4g", load_factor);
+        if (result.converged)
+          out << "  load " << format("%12.5e", load) << "  displacement "
+              << format("%12.5e", displacement.mean) << "  iterations "
+              << format("%4.0f", result.iterations) << "  converged";
+        else
+          out << "  FAILED to converge (its state is in history.csv)";
+        out << std::endl;
 
         if (result.converged)
-          last_converged_load = load;
+          {
+            last_converged_load    = load;
+            converged_displacement = displacement;
+            converged_iterations   = total_iterations;
+            any_step_converged     = true;
+          }
         else
           {
             // Non-convergence is a result (collapse), not an error.
@@ -141,17 +154,20 @@ namespace thinlayer
 
     const double relative_error =
       (last_converged_load - p.reference_load) / p.reference_load;
-    out << "  displacement "
-        << (p.displacement_measure == DisplacementMeasureType::point
-              ? std::string("at the monitored point")
-              : "on boundary " + std::to_string(p.displacement_boundary_id))
-        << ": mean " << format("%.5e", displacement.mean) << ", min "
-        << format("%.5e", displacement.min) << ", max "
-        << format("%.5e", displacement.max) << ", spread (max-min)/|mean| "
-        << format("%.3e",
-                  (displacement.max - displacement.min) /
-                    std::abs(displacement.mean))
-        << '\n';
+    if (any_step_converged)
+      out << "  displacement "
+          << (p.displacement_measure == DisplacementMeasureType::point
+                ? std::string("at the monitored point")
+                : "on boundary " + std::to_string(p.displacement_boundary_id))
+          << " at the last converged step: mean "
+          << format("%.5e", converged_displacement.mean) << ", min "
+          << format("%.5e", converged_displacement.min) << ", max "
+          << format("%.5e", converged_displacement.max)
+          << ", spread (max-min)/|mean| "
+          << format("%.3e",
+                    (converged_displacement.max - converged_displacement.min) /
+                      std::abs(converged_displacement.mean))
+          << '\n';
     out << "  last converged load " << format("%.5g", last_converged_load);
     if (std::isfinite(p.reference_load))
       out << ", analytic " << format("%.5g", p.reference_load)
@@ -191,6 +207,7 @@ namespace thinlayer
       .add("final_displacement_max", displacement.max)
       .add_integer("load_steps", steps_run)
       .add_integer("total_iterations", total_iterations)
+      .add_integer("iterations_to_last_converged_step", converged_iterations)
       .add("method", method_name(p.method))
       .add("seconds_per_substitution", analysis.substitution_seconds())
       .add("seconds_per_iteration",
@@ -221,6 +238,7 @@ namespace thinlayer
             static_cast<unsigned int>(analysis.n_equations()),
             steps_run,
             total_iterations,
+            converged_iterations,
             wall_clock.wall_time(),
             station_warning};
   }

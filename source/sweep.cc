@@ -165,10 +165,10 @@ namespace thinlayer
             char line[160];
             std::snprintf(line,
                           sizeof(line),
-                          "last converged load %.5g%s, %u iterations",
+                          "last converged load %.5g%s, %u iterations to it",
                           s.last_converged_load,
                           s.converged ? "" : " (then failed)",
-                          s.total_iterations);
+                          s.converged_iterations);
             out << "  run " << r + 1 << '/' << combinations.size() << ": "
                 << values << ": " << line;
             if (std::isfinite(s.relative_error))

@@ -11,7 +11,9 @@
 //   (for Mohr-Coulomb with psi != phi, Q is F with psi for phi), away from
 //   the corners of the hexagon;
 // - at a corner (two equal principal stresses) the flow direction is the
-//   average of the gradients of the two faces meeting there.
+//   average of the gradients of the two faces meeting there;
+// - the elastic stress in Lame form equals the elasticity tensor applied to
+//   the strain.
 #include <deal.II/base/symmetric_tensor.h>
 
 #include <thinlayer/material_law.h>
@@ -113,8 +115,8 @@ main()
       SymmetricTensor<2, 3> s = random_stress(5);
       if (k % 2 == 1)
         s[0][2] = s[1][2] = 0; // plane strain
-      const auto p = principal(s);
-      const double                j2 =
+      const auto   p = principal(s);
+      const double j2 =
         ((p[0] - p[1]) * (p[0] - p[1]) + (p[1] - p[2]) * (p[1] - p[2]) +
          (p[2] - p[0]) * (p[2] - p[0])) /
         6;
@@ -215,6 +217,23 @@ main()
                   StressInvariants(s).lode_angle / degree,
                   yes_no((computed - average).norm() < 1e-12));
     }
+
+  {
+    // The Lame form of the elastic stress against the elasticity tensor.
+    double difference = 0;
+    for (unsigned int k = 0; k < 100; ++k)
+      {
+        const SymmetricTensor<2, 3> strain = random_stress(1e-3);
+        difference                         = std::max(difference,
+                              (mohr_coulomb->elastic_stress(strain) -
+                               mohr_coulomb->elasticity() * strain)
+                                  .norm() /
+                                (mohr_coulomb->elasticity() * strain).norm());
+      }
+    std::printf("\nElastic stress (Lame form) equals elasticity() * strain "
+                "to 1e-14 (100 random strains): %s\n",
+                yes_no(difference < 1e-14));
+  }
 
   std::printf("\nPseudo time steps for E = 1000, nu = 0.3:\n"
               "  Tresca %.6e\n  von Mises %.6e\n  Mohr-Coulomb (phi = 30) "

@@ -77,6 +77,21 @@ namespace thinlayer
     const SymmetricTensor<4, 3> &
     elasticity() const;
 
+    /**
+     * elasticity() * @p strain, as lambda tr(strain) I + 2 mu strain: the
+     * same stress in a fraction of the operations of the 6x6 product. The
+     * viscoplastic iterations need it at every point, every iteration.
+     */
+    SymmetricTensor<2, 3>
+    elastic_stress(const SymmetricTensor<2, 3> &strain) const
+    {
+      SymmetricTensor<2, 3> stress   = (2 * shear_modulus) * strain;
+      const double          pressure = lame_lambda * trace(strain);
+      for (unsigned int i = 0; i < 3; ++i)
+        stress[i][i] += pressure;
+      return stress;
+    }
+
     /// Whether the law has a yield surface at all.
     virtual bool
     can_yield() const;
@@ -129,6 +144,9 @@ namespace thinlayer
     const double                poissons_ratio;
     const SymmetricTensor<4, 3> stiffness;
     const SymmetricTensor<4, 3> inverse_stiffness;
+    /// The Lame constants of stiffness.
+    const double lame_lambda;
+    const double shear_modulus;
   };
 
   /**

@@ -23,6 +23,9 @@ namespace thinlayer
     unsigned int equations;
     unsigned int load_steps;
     unsigned int total_iterations;
+    /// The iterations of the steps up to the last converged one (those of
+    /// a failed step depend on rounding).
+    unsigned int converged_iterations;
     double       wall_seconds;
     /// Warnings about the model (e.g. too few stations); empty if none.
     std::string warnings;
