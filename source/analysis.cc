@@ -147,20 +147,9 @@ namespace thinlayer
                                   &mode.correction,
                                   &mode.condensed})
           v->reinit(n);
-
-        if (parameters.method == SolutionMethod::newton)
-          {
-            // A non-associated flow rule makes the tangent unsymmetric.
-            bool associated = true;
-            for (const auto &[id, law] : laws)
-              associated = associated && law->is_associated();
-            mode.tangent.reinit(sparsity);
-            mode.tangent_factorisation = std::make_unique<FactorisedStiffness>(
-              associated && parameters.linear_solver == LinearSolver::cholmod
-                ? FactorisedStiffness::Method::cholmod
-                : FactorisedStiffness::Method::umfpack);
-          }
       }
+    if (parameters.method == SolutionMethod::newton)
+      setup_newton_system();
     // The point loop's per-cell slots, allocated once.
     const std::size_t slot_size =
       tria.n_active_cells() * modes.size() * fe.n_dofs_per_cell();
@@ -962,19 +951,28 @@ namespace thinlayer
         if (method == SolutionMethod::newton)
           {
             ++result.factorisations;
-            if (!factorise_tangents())
+            if (!factorise_tangent())
               return false;
+            // The coupled solve: the residuals (each condensed with its
+            // mode's constraints) one after the other.
+            for (unsigned int m = 0; m < modes.size(); ++m)
+              for (unsigned int i = 0; i < n; ++i)
+                newton_vector[m * n + i] = modes[m]->residual[i];
+            newton_factorisation->solve(newton_vector);
+            newton_constraints.distribute(newton_vector);
+            for (unsigned int m = 0; m < modes.size(); ++m)
+              for (unsigned int i = 0; i < n; ++i)
+                modes[m]->correction[i] = newton_vector[m * n + i];
           }
-
+        else
+          for (auto &mode : modes)
+            {
+              mode->correction = mode->residual;
+              mode->factorisation.solve(mode->correction);
+              mode->constraints.distribute(mode->correction);
+            }
         for (auto &mode : modes)
-          {
-            mode->correction = mode->residual;
-            (method == SolutionMethod::newton ? *mode->tangent_factorisation
-                                              : mode->factorisation)
-              .solve(mode->correction);
-            mode->constraints.distribute(mode->correction);
-            mode->previous_increment = mode->step_increment;
-          }
+          mode->previous_increment = mode->step_increment;
 
         if (method == SolutionMethod::accelerated_initial_stress)
           {
@@ -1078,66 +1076,112 @@ namespace thinlayer
 
 
   template <int dim>
-  bool
-  Analysis<dim>::factorise_tangents()
+  void
+  Analysis<dim>::setup_newton_system()
   {
-    const unsigned int                   n          = fe.n_dofs_per_cell();
-    const unsigned int                   n_q        = quadrature.size();
-    const unsigned int                   n_stations = kinematics.n_stations();
-    FullMatrix<double>                   cell_matrix(n, n);
-    std::vector<types::global_dof_index> dofs(n);
-    std::vector<SymmetricTensor<2, 3>>   strain(n), strain_part2(n), stress(n);
+    const unsigned int n       = dof_handler.n_dofs();
+    const unsigned int n_cell  = fe.n_dofs_per_cell();
+    const unsigned int n_modes = kinematics.n_modes();
 
-    for (unsigned int m = 0; m < kinematics.n_modes(); ++m)
+    newton_constraints.clear();
+    for (unsigned int m = 0; m < n_modes; ++m)
       {
-        Mode &mode   = *modes[m];
-        mode.tangent = 0;
-        for (unsigned int c = 0; c < tria.n_active_cells(); ++c)
+        AffineConstraints<double> shifted;
+        shifted.copy_from(modes[m]->constraints);
+        shifted.shift(m * n);
+        newton_constraints.merge(shifted);
+      }
+    newton_constraints.close();
+
+    DynamicSparsityPattern               dsp(n_modes * n);
+    std::vector<types::global_dof_index> dofs(n_modes * n_cell);
+    for (unsigned int c = 0; c < tria.n_active_cells(); ++c)
+      {
+        for (unsigned int m = 0; m < n_modes; ++m)
+          for (unsigned int i = 0; i < n_cell; ++i)
+            dofs[m * n_cell + i] = m * n + cell_dofs[c * n_cell + i];
+        newton_constraints.add_entries_local_to_global(dofs,
+                                                       dsp,
+                                                       /*keep=*/true);
+      }
+    newton_sparsity.copy_from(dsp);
+    newton_tangent.reinit(newton_sparsity);
+    newton_vector.reinit(n_modes * n);
+
+    // A non-associated flow rule makes the tangent unsymmetric.
+    bool associated = true;
+    for (const auto &[id, law] : laws)
+      associated = associated && law->is_associated();
+    newton_factorisation = std::make_unique<FactorisedStiffness>(
+      associated && parameters.linear_solver == LinearSolver::cholmod
+        ? FactorisedStiffness::Method::cholmod
+        : FactorisedStiffness::Method::umfpack);
+  }
+
+
+  template <int dim>
+  bool
+  Analysis<dim>::factorise_tangent()
+  {
+    const unsigned int n          = dof_handler.n_dofs();
+    const unsigned int n_cell     = fe.n_dofs_per_cell();
+    const unsigned int n_q        = quadrature.size();
+    const unsigned int n_modes    = kinematics.n_modes();
+    const unsigned int n_stations = kinematics.n_stations();
+    FullMatrix<double> cell_matrix(n_modes * n_cell, n_modes * n_cell);
+    std::vector<types::global_dof_index> dofs(n_modes * n_cell);
+    // Per mode: the strain of each shape function at a station (T1 B1 +
+    // T2 B2) and the tangent applied to it.
+    std::vector<SymmetricTensor<2, 3>> strain(n_modes * n_cell),
+      stress(n_modes * n_cell), part2(n_cell);
+
+    newton_tangent = 0;
+    for (unsigned int c = 0; c < tria.n_active_cells(); ++c)
+      {
+        cell_matrix = 0;
+        for (unsigned int q = 0; q < n_q; ++q)
           {
-            cell_matrix = 0;
-            for (unsigned int q = 0; q < n_q; ++q)
+            const unsigned int p = c * n_q + q;
+            for (unsigned int s = 0; s < n_stations; ++s)
               {
-                const unsigned int p = c * n_q + q;
-                // The diagonal block of mode m of the station sum of
-                // (T1 B1 + T2 B2)^T C_t (T1 B1 + T2 B2).
-                for (unsigned int s = 0; s < n_stations; ++s)
+                const SymmetricTensor<4, 3> &C = tangents[p * n_stations + s];
+                const double                 weight =
+                  kinematics.station_weight(s) * point_weight[p];
+                for (unsigned int m = 0; m < n_modes; ++m)
                   {
-                    const SymmetricTensor<4, 3> &C =
-                      tangents[p * n_stations + s];
-                    const double weight =
-                      kinematics.station_weight(s) * point_weight[p];
-                    const double t1 = kinematics.T1(m, s);
-                    const double t2 = kinematics.T2(m, s);
-                    shape_strains(p, m, 0, strain.data());
+                    SymmetricTensor<2, 3> *e = &strain[m * n_cell];
+                    shape_strains(p, m, 0, e);
                     if (n_parts == 2)
-                      shape_strains(p, m, 1, strain_part2.data());
-                    for (unsigned int i = 0; i < n; ++i)
+                      shape_strains(p, m, 1, part2.data());
+                    for (unsigned int i = 0; i < n_cell; ++i)
                       {
-                        strain[i] *= t1;
+                        e[i] *= kinematics.T1(m, s);
                         if (n_parts == 2)
-                          strain[i] += t2 * strain_part2[i];
-                        stress[i] = C * strain[i];
+                          e[i] += kinematics.T2(m, s) * part2[i];
+                        stress[m * n_cell + i] = C * e[i];
                       }
-                    for (unsigned int i = 0; i < n; ++i)
-                      for (unsigned int j = 0; j < n; ++j)
-                        cell_matrix(i, j) += (strain[i] * stress[j]) * weight;
                   }
+                // Every pair of modes: the station sum of
+                // (T1 B1 + T2 B2)_m^T C_t (T1 B1 + T2 B2)_m'.
+                for (unsigned int i = 0; i < n_modes * n_cell; ++i)
+                  for (unsigned int j = 0; j < n_modes * n_cell; ++j)
+                    cell_matrix(i, j) += (strain[i] * stress[j]) * weight;
               }
-            std::copy(cell_dofs.begin() + c * n,
-                      cell_dofs.begin() + (c + 1) * n,
-                      dofs.begin());
-            mode.constraints.distribute_local_to_global(cell_matrix,
-                                                        dofs,
-                                                        mode.tangent);
           }
-        try
-          {
-            mode.tangent_factorisation->factorize(mode.tangent);
-          }
-        catch (const std::exception &)
-          {
-            return false; // singular: a mechanism has formed
-          }
+        for (unsigned int m = 0; m < n_modes; ++m)
+          for (unsigned int i = 0; i < n_cell; ++i)
+            dofs[m * n_cell + i] = m * n + cell_dofs[c * n_cell + i];
+        newton_constraints.distribute_local_to_global(cell_matrix,
+                                                      dofs,
+                                                      newton_tangent);
+      }
+    try
+      {
+        newton_factorisation->factorize(newton_tangent);
+      }
+    catch (const std::exception &)
+      {
+        return false; // singular: a mechanism has formed
       }
     return true;
   }

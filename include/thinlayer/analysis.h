@@ -94,8 +94,8 @@ namespace thinlayer
    * Anderson acceleration; Newton by K_t^-1 r with the consistent tangent,
    * refactorised every iteration, a backtracking line search on |r|, and
    * the step halved when it does not converge. In the Fourier case the
-   * exact tangent couples the harmonics; Newton uses its harmonic-diagonal
-   * blocks, so it is a quasi-Newton method there.
+   * consistent tangent couples the harmonics (plastic stresses at the
+   * stations mix them), so Newton solves one system over all modes.
    *
    * Discretisation: FE_Q(2) per component, reduced to the 8-node
    * serendipity element by make_serendipity_constraints() (or kept as Q9),
@@ -220,9 +220,6 @@ namespace thinlayer
       Vector<double> solution;
       Vector<double> step_increment;
       Vector<double> internal_forces;
-      /// Newton: the consistent tangent (condensed) and its factor.
-      SparseMatrix<double>                 tangent;
-      std::unique_ptr<FactorisedStiffness> tangent_factorisation;
       /// Return-mapping methods: the out-of-balance force and correction.
       Vector<double> residual;
       Vector<double> correction;
@@ -313,10 +310,14 @@ namespace thinlayer
     ResidualNorms
     evaluate_residual(const double target, const bool store_tangents);
 
-    /// Assemble and factorise the consistent tangent of every mode; false
-    /// if a factorisation fails (a singular tangent at a mechanism).
+    /// Newton: set up newton_constraints, newton_sparsity and the matrix.
+    void
+    setup_newton_system();
+
+    /// Assemble and factorise the consistent tangent, coupling the modes;
+    /// false if the factorisation fails (a singular tangent at a mechanism).
     bool
-    factorise_tangents();
+    factorise_tangent();
 
     /// Make the current stresses the converged ones, add the step's
     /// increment to the solution and its plastic strain to the total.
@@ -429,6 +430,19 @@ namespace thinlayer
 
     /// Newton: the consistent tangent at every point and station.
     std::vector<SymmetricTensor<4, 3>> tangents;
+
+    /**
+     * Newton's system. The stations mix the harmonics, so the consistent
+     * tangent couples the modes: it is one matrix over all of them, mode
+     * m's DoFs shifted by m * n_dofs, each block condensed with its mode's
+     * constraints. (In plane strain it is the one mode's matrix.)
+     */
+    AffineConstraints<double>            newton_constraints;
+    SparsityPattern                      newton_sparsity;
+    SparseMatrix<double>                 newton_tangent;
+    std::unique_ptr<FactorisedStiffness> newton_factorisation;
+    /// The modes' residuals, then corrections, one after the other.
+    Vector<double> newton_vector;
 
     AndersonAcceleration anderson;
     /// The step increments of all modes, one after the other, and their
