@@ -1106,6 +1106,9 @@ namespace thinlayer
       }
     newton_sparsity.copy_from(dsp);
     newton_tangent.reinit(newton_sparsity);
+    newton_cell_matrices.assign(tria.n_active_cells(),
+                                FullMatrix<double>(n_modes * n_cell,
+                                                   n_modes * n_cell));
     newton_vector.reinit(n_modes * n);
 
     // A non-associated flow rule makes the tangent unsymmetric.
@@ -1120,25 +1123,27 @@ namespace thinlayer
 
 
   template <int dim>
-  bool
-  Analysis<dim>::factorise_tangent()
+  void
+  Analysis<dim>::compute_cell_tangents(const unsigned int begin,
+                                       const unsigned int end)
   {
-    const unsigned int n          = dof_handler.n_dofs();
     const unsigned int n_cell     = fe.n_dofs_per_cell();
     const unsigned int n_q        = quadrature.size();
     const unsigned int n_modes    = kinematics.n_modes();
     const unsigned int n_stations = kinematics.n_stations();
-    FullMatrix<double> cell_matrix(n_modes * n_cell, n_modes * n_cell);
-    std::vector<types::global_dof_index> dofs(n_modes * n_cell);
+    const unsigned int n_local    = n_modes * n_cell;
     // Per mode: the strain of each shape function at a station (T1 B1 +
-    // T2 B2) and the tangent applied to it.
-    std::vector<SymmetricTensor<2, 3>> strain(n_modes * n_cell),
-      stress(n_modes * n_cell), part2(n_cell);
+    // T2 B2) and the tangent applied to it; then both as 6 rows of raw
+    // components, the strains' shear rows doubled and weighted, so that
+    // the cell matrix takes a rank-6 update with contiguous rows.
+    std::vector<SymmetricTensor<2, 3>> strain(n_local), stress(n_local),
+      part2(n_cell);
+    std::vector<double> strain_rows(6 * n_local), stress_rows(6 * n_local);
 
-    newton_tangent = 0;
-    for (unsigned int c = 0; c < tria.n_active_cells(); ++c)
+    for (unsigned int c = begin; c < end; ++c)
       {
-        cell_matrix = 0;
+        FullMatrix<double> &cell_matrix = newton_cell_matrices[c];
+        cell_matrix                     = 0;
         for (unsigned int q = 0; q < n_q; ++q)
           {
             const unsigned int p = c * n_q + q;
@@ -1163,15 +1168,63 @@ namespace thinlayer
                   }
                 // Every pair of modes: the station sum of
                 // (T1 B1 + T2 B2)_m^T C_t (T1 B1 + T2 B2)_m'.
-                for (unsigned int i = 0; i < n_modes * n_cell; ++i)
-                  for (unsigned int j = 0; j < n_modes * n_cell; ++j)
-                    cell_matrix(i, j) += (strain[i] * stress[j]) * weight;
+                for (unsigned int k = 0; k < 6; ++k)
+                  for (unsigned int i = 0; i < n_local; ++i)
+                    {
+                      strain_rows[k * n_local + i] =
+                        (k < 3 ? weight : 2 * weight) *
+                        strain[i].access_raw_entry(k);
+                      stress_rows[k * n_local + i] =
+                        stress[i].access_raw_entry(k);
+                    }
+                for (unsigned int i = 0; i < n_local; ++i)
+                  {
+                    double *row = &cell_matrix(i, 0);
+                    for (unsigned int k = 0; k < 6; ++k)
+                      {
+                        const double  a = strain_rows[k * n_local + i];
+                        const double *b = &stress_rows[k * n_local];
+                        if (a != 0)
+                          for (unsigned int j = 0; j < n_local; ++j)
+                            row[j] += a * b[j];
+                      }
+                  }
               }
           }
+      }
+  }
+
+
+  template <int dim>
+  bool
+  Analysis<dim>::factorise_tangent()
+  {
+    const unsigned int n       = dof_handler.n_dofs();
+    const unsigned int n_cell  = fe.n_dofs_per_cell();
+    const unsigned int n_modes = kinematics.n_modes();
+    const unsigned int n_cells = tria.n_active_cells();
+
+    // The cell matrices in parallel, then added in cell order (the same
+    // sums on any number of threads).
+    const unsigned int n_chunks = n_point_loop_chunks();
+    tasks.clear();
+    for (unsigned int k = 0; k < n_chunks; ++k)
+      tasks.push_back(Threads::new_task([this, k, n_chunks, n_cells]() {
+        compute_cell_tangents(k * n_cells / n_chunks,
+                              (k + 1) * n_cells / n_chunks);
+        return 0u;
+      }));
+    for (auto &task : tasks)
+      task.join();
+
+    std::vector<types::global_dof_index> dofs(n_modes * n_cell);
+    newton_tangent = 0;
+    for (unsigned int c = 0; c < n_cells; ++c)
+      {
         for (unsigned int m = 0; m < n_modes; ++m)
           for (unsigned int i = 0; i < n_cell; ++i)
             dofs[m * n_cell + i] = m * n + cell_dofs[c * n_cell + i];
-        newton_constraints.distribute_local_to_global(cell_matrix,
+        newton_constraints.distribute_local_to_global(newton_cell_matrices[c],
                                                       dofs,
                                                       newton_tangent);
       }

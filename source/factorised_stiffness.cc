@@ -33,10 +33,15 @@ namespace thinlayer
           cholmod_l_free_dense(d, &common);
       if (factor)
         cholmod_l_free_factor(&factor, &common);
+      analysed_pattern = nullptr;
     }
 
     cholmod_common  common;
     cholmod_factor *factor = nullptr;
+    /// The sparsity pattern the symbolic analysis in factor was made for:
+    /// refactorising a matrix on the same pattern (Newton's tangent, every
+    /// iteration) reuses it and only redoes the numbers.
+    const SparsityPattern *analysed_pattern = nullptr;
     // Reused by every solve, so that it allocates nothing.
     cholmod_dense *x = nullptr, *y = nullptr, *e = nullptr;
   };
@@ -60,7 +65,9 @@ namespace thinlayer
         return;
       }
 
-    cholmod->clear();
+    const SparsityPattern *pattern = &matrix.get_sparsity_pattern();
+    if (cholmod->analysed_pattern != pattern)
+      cholmod->clear();
     cholmod_common &c = cholmod->common;
     const auto      n = matrix.m();
 
@@ -90,15 +97,22 @@ namespace thinlayer
       }
     column_start[n] = k;
 
-    cholmod->factor = cholmod_l_analyze(A, &c);
-    const bool ok   = cholmod->factor != nullptr &&
+    if (cholmod->factor == nullptr)
+      {
+        cholmod->factor           = cholmod_l_analyze(A, &c);
+        cholmod->analysed_pattern = pattern;
+      }
+    const bool ok = cholmod->factor != nullptr &&
                     cholmod_l_factorize(A, cholmod->factor, &c) &&
                     c.status == CHOLMOD_OK;
     cholmod_l_free_sparse(&A, &c);
     if (!ok)
-      throw std::runtime_error("CHOLMOD could not factorise the stiffness "
-                               "matrix: it is singular or not positive "
-                               "definite");
+      {
+        cholmod->clear(); // a failed factor is analysed afresh next time
+        throw std::runtime_error("CHOLMOD could not factorise the stiffness "
+                                 "matrix: it is singular or not positive "
+                                 "definite");
+      }
   }
 
 

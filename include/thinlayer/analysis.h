@@ -10,6 +10,7 @@
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
@@ -314,6 +315,11 @@ namespace thinlayer
     void
     setup_newton_system();
 
+    /// The cell matrices of the consistent tangent of the active cells
+    /// [@p begin, @p end) into newton_cell_matrices.
+    void
+    compute_cell_tangents(const unsigned int begin, const unsigned int end);
+
     /// Assemble and factorise the consistent tangent, coupling the modes;
     /// false if the factorisation fails (a singular tangent at a mechanism).
     bool
@@ -441,6 +447,8 @@ namespace thinlayer
     SparsityPattern                      newton_sparsity;
     SparseMatrix<double>                 newton_tangent;
     std::unique_ptr<FactorisedStiffness> newton_factorisation;
+    /// Each cell's matrix of the tangent, computed in parallel.
+    std::vector<FullMatrix<double>> newton_cell_matrices;
     /// The modes' residuals, then corrections, one after the other.
     Vector<double> newton_vector;
 

@@ -36,7 +36,10 @@ namespace thinlayer
 
     /**
      * Factorise @p matrix. Throws std::runtime_error if it is singular (or,
-     * for CHOLMOD, not positive definite).
+     * for CHOLMOD, not positive definite). CHOLMOD keeps the symbolic
+     * analysis (ordering, elimination tree) of the last matrix and reuses it
+     * when the next one has the same SparsityPattern object, whose pattern
+     * must then not have changed.
      */
     void
     factorize(const SparseMatrix<double> &matrix);
