@@ -158,6 +158,22 @@ namespace thinlayer
       cell_internal_forces.assign(slot_size, 0.);
     cell_has_body_loads.assign(tria.n_active_cells(), 0);
     tasks.reserve(n_point_loop_chunks());
+    {
+      const unsigned int n_cell  = fe.n_dofs_per_cell();
+      const unsigned int n_local = modes.size() * n_cell;
+      ChunkScratch       scratch;
+      scratch.du.resize(n_local);
+      scratch.mode_strain.resize(modes.size() * n_parts);
+      if (parameters.method == SolutionMethod::newton)
+        {
+          scratch.strain.resize(n_local);
+          scratch.stress.resize(n_local);
+          scratch.part2.resize(n_cell);
+          scratch.strain_rows.resize(6 * n_local);
+          scratch.stress_rows.resize(6 * n_local);
+        }
+      chunk_scratch.assign(n_point_loop_chunks(), scratch);
+    }
 
     stacked_increment.reinit(n * kinematics.n_modes());
     stacked_correction.reinit(n * kinematics.n_modes());
@@ -557,14 +573,16 @@ namespace thinlayer
     const bool         viscoplastic =
       (parameters.method == SolutionMethod::viscoplastic);
 
-    // The task list keeps its capacity: nothing is allocated here.
+    // The task list keeps its capacity and each chunk has its work space
+    // (chunk_scratch); only the task objects themselves are new.
     tasks.clear();
     for (unsigned int k = 0; k < n_chunks; ++k)
       tasks.push_back(
         Threads::new_task([this, k, n_chunks, n_cells, store_tangents]() {
           return update_stresses(k * n_cells / n_chunks,
                                  (k + 1) * n_cells / n_chunks,
-                                 store_tangents);
+                                 store_tangents,
+                                 chunk_scratch[k]);
         }));
     unsigned int n_yielding = 0;
     for (auto &task : tasks)
@@ -602,17 +620,18 @@ namespace thinlayer
   unsigned int
   Analysis<dim>::update_stresses(const unsigned int begin,
                                  const unsigned int end,
-                                 const bool         store_tangents)
+                                 const bool         store_tangents,
+                                 ChunkScratch      &scratch)
   {
     const bool viscoplastic =
       (parameters.method == SolutionMethod::viscoplastic);
-    const unsigned int                 n          = fe.n_dofs_per_cell();
-    const unsigned int                 n_q        = quadrature.size();
-    const unsigned int                 n_modes    = kinematics.n_modes();
-    const unsigned int                 n_stations = kinematics.n_stations();
-    unsigned int                       n_yielding = 0;
-    std::vector<double>                du(n_modes * n);
-    std::vector<SymmetricTensor<2, 3>> mode_strain(n_modes * n_parts);
+    const unsigned int                  n           = fe.n_dofs_per_cell();
+    const unsigned int                  n_q         = quadrature.size();
+    const unsigned int                  n_modes     = kinematics.n_modes();
+    const unsigned int                  n_stations  = kinematics.n_stations();
+    unsigned int                        n_yielding  = 0;
+    std::vector<double>                &du          = scratch.du;
+    std::vector<SymmetricTensor<2, 3>> &mode_strain = scratch.mode_strain;
 
     for (unsigned int c = begin; c < end; ++c)
       {
@@ -1125,7 +1144,8 @@ namespace thinlayer
   template <int dim>
   void
   Analysis<dim>::compute_cell_tangents(const unsigned int begin,
-                                       const unsigned int end)
+                                       const unsigned int end,
+                                       ChunkScratch      &scratch)
   {
     const unsigned int n_cell     = fe.n_dofs_per_cell();
     const unsigned int n_q        = quadrature.size();
@@ -1136,9 +1156,11 @@ namespace thinlayer
     // T2 B2) and the tangent applied to it; then both as 6 rows of raw
     // components, the strains' shear rows doubled and weighted, so that
     // the cell matrix takes a rank-6 update with contiguous rows.
-    std::vector<SymmetricTensor<2, 3>> strain(n_local), stress(n_local),
-      part2(n_cell);
-    std::vector<double> strain_rows(6 * n_local), stress_rows(6 * n_local);
+    std::vector<SymmetricTensor<2, 3>> &strain      = scratch.strain;
+    std::vector<SymmetricTensor<2, 3>> &stress      = scratch.stress;
+    std::vector<SymmetricTensor<2, 3>> &part2       = scratch.part2;
+    std::vector<double>                &strain_rows = scratch.strain_rows;
+    std::vector<double>                &stress_rows = scratch.stress_rows;
 
     for (unsigned int c = begin; c < end; ++c)
       {
@@ -1211,7 +1233,8 @@ namespace thinlayer
     for (unsigned int k = 0; k < n_chunks; ++k)
       tasks.push_back(Threads::new_task([this, k, n_chunks, n_cells]() {
         compute_cell_tangents(k * n_cells / n_chunks,
-                              (k + 1) * n_cells / n_chunks);
+                              (k + 1) * n_cells / n_chunks,
+                              chunk_scratch[k]);
         return 0u;
       }));
     for (auto &task : tasks)

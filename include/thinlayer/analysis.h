@@ -315,10 +315,26 @@ namespace thinlayer
     void
     setup_newton_system();
 
+    /// Work space of one chunk of the point loop (and of Newton's cell
+    /// tangents), allocated once in setup().
+    struct ChunkScratch
+    {
+      /// The cell's nodal increments, per mode.
+      std::vector<double> du;
+      /// The strain parts of each mode at a point.
+      std::vector<SymmetricTensor<2, 3>> mode_strain;
+      /// compute_cell_tangents(): per mode and DoF, strain and stress; as
+      /// six rows of raw components.
+      std::vector<SymmetricTensor<2, 3>> strain, stress, part2;
+      std::vector<double>                strain_rows, stress_rows;
+    };
+
     /// The cell matrices of the consistent tangent of the active cells
     /// [@p begin, @p end) into newton_cell_matrices.
     void
-    compute_cell_tangents(const unsigned int begin, const unsigned int end);
+    compute_cell_tangents(const unsigned int begin,
+                          const unsigned int end,
+                          ChunkScratch      &scratch);
 
     /// Assemble and factorise the consistent tangent, coupling the modes;
     /// false if the factorisation fails (a singular tangent at a mechanism).
@@ -358,7 +374,8 @@ namespace thinlayer
     unsigned int
     update_stresses(const unsigned int begin,
                     const unsigned int end,
-                    const bool         store_tangents);
+                    const bool         store_tangents,
+                    ChunkScratch      &scratch);
 
     void
     update_internal_forces();
@@ -433,6 +450,8 @@ namespace thinlayer
     std::vector<unsigned char> cell_has_body_loads;
     /// The point loop's tasks, one per chunk (kept to reuse the storage).
     std::vector<Threads::Task<unsigned int>> tasks;
+    /// One per chunk.
+    std::vector<ChunkScratch> chunk_scratch;
 
     /// Newton: the consistent tangent at every point and station.
     std::vector<SymmetricTensor<4, 3>> tangents;
