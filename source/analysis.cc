@@ -1096,6 +1096,20 @@ namespace thinlayer
 
   template <int dim>
   void
+  Analysis<dim>::newton_cell_dofs(
+    const unsigned int                    c,
+    std::vector<types::global_dof_index> &dofs) const
+  {
+    const unsigned int n      = dof_handler.n_dofs();
+    const unsigned int n_cell = fe.n_dofs_per_cell();
+    for (unsigned int m = 0; m < kinematics.n_modes(); ++m)
+      for (unsigned int i = 0; i < n_cell; ++i)
+        dofs[m * n_cell + i] = m * n + cell_dofs[c * n_cell + i];
+  }
+
+
+  template <int dim>
+  void
   Analysis<dim>::setup_newton_system()
   {
     const unsigned int n       = dof_handler.n_dofs();
@@ -1116,9 +1130,7 @@ namespace thinlayer
     std::vector<types::global_dof_index> dofs(n_modes * n_cell);
     for (unsigned int c = 0; c < tria.n_active_cells(); ++c)
       {
-        for (unsigned int m = 0; m < n_modes; ++m)
-          for (unsigned int i = 0; i < n_cell; ++i)
-            dofs[m * n_cell + i] = m * n + cell_dofs[c * n_cell + i];
+        newton_cell_dofs(c, dofs);
         newton_constraints.add_entries_local_to_global(dofs,
                                                        dsp,
                                                        /*keep=*/true);
@@ -1221,7 +1233,6 @@ namespace thinlayer
   bool
   Analysis<dim>::factorise_tangent()
   {
-    const unsigned int n       = dof_handler.n_dofs();
     const unsigned int n_cell  = fe.n_dofs_per_cell();
     const unsigned int n_modes = kinematics.n_modes();
     const unsigned int n_cells = tria.n_active_cells();
@@ -1244,9 +1255,7 @@ namespace thinlayer
     newton_tangent = 0;
     for (unsigned int c = 0; c < n_cells; ++c)
       {
-        for (unsigned int m = 0; m < n_modes; ++m)
-          for (unsigned int i = 0; i < n_cell; ++i)
-            dofs[m * n_cell + i] = m * n + cell_dofs[c * n_cell + i];
+        newton_cell_dofs(c, dofs);
         newton_constraints.distribute_local_to_global(newton_cell_matrices[c],
                                                       dofs,
                                                       newton_tangent);

@@ -311,6 +311,11 @@ namespace thinlayer
     ResidualNorms
     evaluate_residual(const double target, const bool store_tangents);
 
+    /// The indices in Newton's system of cell @p c's DoFs, mode by mode.
+    void
+    newton_cell_dofs(const unsigned int                    c,
+                     std::vector<types::global_dof_index> &dofs) const;
+
     /// Newton: set up newton_constraints, newton_sparsity and the matrix.
     void
     setup_newton_system();
