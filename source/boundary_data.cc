@@ -68,23 +68,24 @@ namespace thinlayer
   } // namespace
 
 
-  BoundaryData::BoundaryData(const Parameters &p, const Kinematics &kinematics)
+  BoundaryData::BoundaryData(
+    const std::map<types::boundary_id, BoundaryParameters> &boundaries,
+    const std::map<std::string, double>                    &constants,
+    const Kinematics                                       &kinematics)
     : kinematics(kinematics)
   {
-    const unsigned int n = kinematics.n_components();
-    for (const auto &[id, b] : p.boundaries)
+    const unsigned int n       = kinematics.n_components();
+    const bool         fourier = kinematics.is_fourier();
+    for (const auto &[id, b] : boundaries)
       {
         Condition        &c = conditions[id];
         std::vector<bool> mask(b.constrained_components);
         mask.resize(n, false);
-        c.constrained = ComponentMask(mask);
-        c.displacement =
-          make_function(b.displacement, n, p.fourier, p.geometry_parameters);
-        c.traction =
-          make_function(b.traction, n, p.fourier, p.geometry_parameters);
-        c.pressure =
-          make_function(b.pressure, 1, p.fourier, p.geometry_parameters);
-        c.loaded = !(is_zero(b.traction) && is_zero(b.pressure));
+        c.constrained  = ComponentMask(mask);
+        c.displacement = make_function(b.displacement, n, fourier, constants);
+        c.traction     = make_function(b.traction, n, fourier, constants);
+        c.pressure     = make_function(b.pressure, 1, fourier, constants);
+        c.loaded       = !(is_zero(b.traction) && is_zero(b.pressure));
       }
   }
 

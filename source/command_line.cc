@@ -81,7 +81,7 @@ namespace thinlayer
     try
       {
         const Parameters parameters = ParameterReader().read(file, overrides);
-        if (parameters.sweep.empty())
+        if (parameters.sweep.values.empty())
           run_scene(parameters, out);
         else
           run_sweep(file, overrides, parameters, out);

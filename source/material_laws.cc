@@ -1,5 +1,6 @@
 #include <thinlayer/elasticity.h>
 #include <thinlayer/material_law.h>
+#include <thinlayer/parameters.h>
 
 #include <algorithm>
 #include <array>

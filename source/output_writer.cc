@@ -2,6 +2,7 @@
 
 #include <thinlayer/elasticity.h>
 #include <thinlayer/output_writer.h>
+#include <thinlayer/text_format.h>
 
 #include <cmath>
 #include <filesystem>
@@ -11,97 +12,9 @@
 
 namespace thinlayer
 {
-  namespace
-  {
-    std::string
-    quoted(const std::string &s)
-    {
-      std::string out = "\"";
-      for (const char c : s)
-        {
-          if (c == '"' || c == '\\')
-            out += '\\';
-          if (c == '\n')
-            out += "\\n";
-          else
-            out += c;
-        }
-      return out + "\"";
-    }
-
-    std::string
-    number(const double value)
-    {
-      if (!std::isfinite(value))
-        return "null";
-      std::ostringstream out;
-      out << std::setprecision(10) << value;
-      return out.str();
-    }
-  } // namespace
-
-
-  JsonObject &
-  JsonObject::add(const std::string &key, const double value)
-  {
-    members.emplace_back(key, number(value));
-    return *this;
-  }
-
-
-  JsonObject &
-  JsonObject::add(const std::string &key, const std::string &value)
-  {
-    members.emplace_back(key, quoted(value));
-    return *this;
-  }
-
-
-  JsonObject &
-  JsonObject::add(const std::string &key, const bool value)
-  {
-    members.emplace_back(key, value ? "true" : "false");
-    return *this;
-  }
-
-
-  JsonObject &
-  JsonObject::add_integer(const std::string &key, const unsigned long value)
-  {
-    members.emplace_back(key, std::to_string(value));
-    return *this;
-  }
-
-
-  JsonObject &
-  JsonObject::add(const std::string &key, const JsonObject &value)
-  {
-    members.emplace_back(key, value.str(2));
-    return *this;
-  }
-
-
-  std::string
-  JsonObject::str(const unsigned int indent) const
-  {
-    const std::string pad(indent, ' ');
-    std::string       out = "{\n";
-    for (unsigned int i = 0; i < members.size(); ++i)
-      {
-        // Nested objects carry their own indentation relative to us.
-        std::string value = members[i].second;
-        for (std::size_t p = value.find('\n'); p != std::string::npos;
-             p             = value.find('\n', p + 1))
-          value.insert(p + 1, pad);
-        out += pad + "  " + quoted(members[i].first) + ": " + value +
-               (i + 1 < members.size() ? ",\n" : "\n");
-      }
-    return out + pad + "}";
-  }
-
-
-  OutputWriter::OutputWriter(const std::string &directory)
-    : directory(directory)
+  OutputWriter::OutputWriter(const OutputParameters &parameters)
+    : directory(parameters.directory)
+    , vtu_subdivisions(parameters.vtu_subdivisions)
   {
     std::filesystem::create_directories(directory);
     history.open(directory + "/history.csv");
@@ -114,9 +27,11 @@ namespace thinlayer
   void
   OutputWriter::write_history_row(const HistoryRow &row)
   {
-    const auto optional = [](const double v) {
-      return std::isfinite(v) ? number(v) : std::string();
-    };
+    // Loads and displacements as null where not finite, as summary.json
+    // has them; a yield ratio that does not exist (no material can
+    // yield) as empty.
+    const auto number   = text_format::json_number;
+    const auto optional = text_format::csv_number;
     history << row.step << ',' << number(row.load_factor) << ','
             << number(row.load) << ',' << number(row.displacement.mean) << ','
             << number(row.displacement.min) << ','
@@ -134,7 +49,7 @@ namespace thinlayer
   OutputWriter::write_fields(const unsigned int   step,
                              const double         load_factor,
                              const Analysis<dim> &analysis,
-                             const Parameters    &parameters)
+                             const double         theta)
   {
     const auto        &dof_handler = analysis.get_dof_handler();
     const auto        &tria        = dof_handler.get_triangulation();
@@ -198,8 +113,7 @@ namespace thinlayer
     data_out.attach_dof_handler(dof_handler);
     // In-plane displacement as a vector; u_theta (Fourier) as a scalar. At
     // the monitored angle, which for Fourier is where the field is cut.
-    const Vector<double> u =
-      analysis.displacement_at(parameters.displacement_angle);
+    const Vector<double>     u = analysis.displacement_at(theta);
     std::vector<std::string> displacement_names(dim, "displacement");
     std::vector<DataComponentInterpretation::DataComponentInterpretation>
       interpretation(dim,
@@ -228,7 +142,7 @@ namespace thinlayer
       }
     data_out.add_data_vector(material, "material_id");
     data_out.build_patches(analysis.get_mapping(),
-                           parameters.vtu_subdivisions,
+                           vtu_subdivisions,
                            DataOut<dim>::curved_inner_cells);
 
     std::ostringstream name;
@@ -278,13 +192,6 @@ namespace thinlayer
 
 
   void
-  OutputWriter::write_summary(const JsonObject &summary)
-  {
-    write_file("summary.json", summary.str() + "\n");
-  }
-
-
-  void
   OutputWriter::write_file(const std::string &name,
                            const std::string &content) const
   {
@@ -312,5 +219,5 @@ namespace thinlayer
   OutputWriter::write_fields(const unsigned int,
                              const double,
                              const Analysis<2> &,
-                             const Parameters &);
+                             const double);
 } // namespace thinlayer

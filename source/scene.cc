@@ -55,13 +55,13 @@ namespace thinlayer
     std::string
     mesh_geometry(const Parameters &p)
     {
-      const std::string geo = geometry_text(p.mesh_file);
-      for (const auto &[name, value] : p.geometry_parameters)
+      const std::string geo = geometry_text(p.mesh.file);
+      for (const auto &[name, value] : p.mesh.geometry_parameters)
         if (!std::regex_search(geo, std::regex("\\b" + name + "\\b")))
           throw InputError(p.parameter_file,
                            "Mesh/Geometry parameters",
                            "'" + name + "' is not a parameter of " +
-                             p.mesh_file);
+                             p.mesh.file);
 
       char directory_template[] = "/tmp/thinlayer-gmsh-XXXXXX";
       if (mkdtemp(directory_template) == nullptr)
@@ -74,10 +74,10 @@ namespace thinlayer
       command << shell_quote(THINLAYER_GMSH_EXECUTABLE)
               << " -2 -format msh22 -nt 1";
       command.precision(17);
-      for (const auto &[name, value] : p.geometry_parameters)
+      for (const auto &[name, value] : p.mesh.geometry_parameters)
         command << " -setnumber " << name << ' ' << value;
       command << " -o " << shell_quote(msh_file) << ' '
-              << shell_quote(p.mesh_file) << " > " << shell_quote(log_file)
+              << shell_quote(p.mesh.file) << " > " << shell_quote(log_file)
               << " 2>&1";
       const int status = std::system(command.str().c_str());
 
@@ -93,7 +93,7 @@ namespace thinlayer
       std::filesystem::remove_all(directory);
 
       if (status != 0 || !errors.empty())
-        throw InputError(p.mesh_file,
+        throw InputError(p.mesh.file,
                          "",
                          "gmsh could not mesh this geometry:" +
                            (errors.empty() ? std::string(" exit status ") +
@@ -116,22 +116,22 @@ namespace thinlayer
 
   Scene::Scene(const Parameters &p)
   {
-    if (!std::filesystem::is_regular_file(p.mesh_file) ||
-        !std::ifstream(p.mesh_file))
+    if (!std::filesystem::is_regular_file(p.mesh.file) ||
+        !std::ifstream(p.mesh.file))
       throw InputError(p.parameter_file,
                        "Mesh/File",
-                       "cannot read the mesh file '" + p.mesh_file + "'");
+                       "cannot read the mesh file '" + p.mesh.file + "'");
 
     const std::string extension =
-      std::filesystem::path(p.mesh_file).extension().string();
+      std::filesystem::path(p.mesh.file).extension().string();
     if (extension == ".geo")
       msh = mesh_geometry(p);
     else if (extension == ".msh")
-      msh = read_file(p.mesh_file);
+      msh = read_file(p.mesh.file);
     else
       throw InputError(p.parameter_file,
                        "Mesh/File",
-                       "expected a .geo or .msh file, got '" + p.mesh_file +
+                       "expected a .geo or .msh file, got '" + p.mesh.file +
                          "'");
 
     try
@@ -145,17 +145,17 @@ namespace thinlayer
       {
         std::ostringstream message;
         e.print_info(message);
-        throw InputError(p.mesh_file,
+        throw InputError(p.mesh.file,
                          "",
                          "cannot read the mesh: " + message.str());
       }
     if (tria.n_active_cells() == 0)
-      throw InputError(p.mesh_file,
+      throw InputError(p.mesh.file,
                        "",
                        "the mesh has no 2D cells: are all surfaces in a "
                        "physical group?");
     if (!tria.all_reference_cells_are_hyper_cube())
-      throw InputError(p.mesh_file,
+      throw InputError(p.mesh.file,
                        "",
                        "expected quadrilateral cells only (use Recombine "
                        "Surface or Mesh.RecombineAll in the .geo)");
@@ -190,7 +190,7 @@ namespace thinlayer
             mesh_boundaries.insert(face->boundary_id());
       }
 
-    if (p.fourier)
+    if (p.kinematics.fourier)
       {
         // The mesh is the r-z plane: r = x >= 0, and faces on the axis need
         // the per-harmonic axis conditions.
@@ -212,8 +212,8 @@ namespace thinlayer
               std::abs(face->vertex(0)[0]) <= 1e-12 * size &&
               std::abs(face->vertex(1)[0]) <= 1e-12 * size)
             on_axis.insert(face->boundary_id());
-        if (!on_axis.empty() &&
-            on_axis.count(static_cast<unsigned int>(p.axis_boundary_id)) == 0)
+        if (!on_axis.empty() && on_axis.count(static_cast<unsigned int>(
+                                  p.kinematics.axis_boundary_id)) == 0)
           throw InputError(p.parameter_file,
                            "Kinematics/Axis boundary id",
                            "the mesh reaches the axis r = 0 on boundary id " +
@@ -246,28 +246,30 @@ namespace thinlayer
                            std::to_string(id) +
                            " on its boundary (its boundary ids: " +
                            describe(mesh_boundaries, true) + ")");
-    if (p.displacement_measure == DisplacementMeasureType::boundary_average &&
-        mesh_boundaries.count(p.displacement_boundary_id) == 0)
+    if (p.monitors.displacement_measure ==
+          MonitorParameters::DisplacementMeasure::boundary_average &&
+        mesh_boundaries.count(p.monitors.displacement_boundary_id) == 0)
       throw InputError(p.parameter_file,
                        "Monitors/Displacement boundary id",
                        "the mesh has no boundary id " +
-                         std::to_string(p.displacement_boundary_id) +
+                         std::to_string(p.monitors.displacement_boundary_id) +
                          " (its boundary ids: " +
                          describe(mesh_boundaries, true) + ")");
-    if (p.load_measure == LoadMeasure::stress_average &&
-        mesh_materials.count(p.load_material_id) == 0)
+    if (p.monitors.load_measure ==
+          MonitorParameters::LoadMeasure::stress_average &&
+        mesh_materials.count(p.monitors.load_material_id) == 0)
       throw InputError(p.parameter_file,
                        "Monitors/Load material id",
                        "the mesh has no material id " +
-                         std::to_string(p.load_material_id) +
+                         std::to_string(p.monitors.load_material_id) +
                          " (its material ids: " + describe(mesh_materials) +
                          ")");
-    if (p.load_measure == LoadMeasure::reaction &&
-        mesh_boundaries.count(p.load_boundary_id) == 0)
+    if (p.monitors.load_measure == MonitorParameters::LoadMeasure::reaction &&
+        mesh_boundaries.count(p.monitors.load_boundary_id) == 0)
       throw InputError(p.parameter_file,
                        "Monitors/Load boundary id",
                        "the mesh has no boundary id " +
-                         std::to_string(p.load_boundary_id) +
+                         std::to_string(p.monitors.load_boundary_id) +
                          " (its boundary ids: " +
                          describe(mesh_boundaries, true) + ")");
   }

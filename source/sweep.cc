@@ -1,6 +1,7 @@
 #include <thinlayer/input_error.h>
 #include <thinlayer/run.h>
 #include <thinlayer/sweep.h>
+#include <thinlayer/text_format.h>
 
 #include <cmath>
 #include <cstdio>
@@ -19,11 +20,11 @@ namespace thinlayer
                   const std::string               &directory)
     {
       std::vector<std::string> overrides;
-      auto                     geometry       = base.geometry_parameters;
+      auto                     geometry       = base.mesh.geometry_parameters;
       bool                     geometry_swept = false;
-      for (unsigned int k = 0; k < base.sweep.size(); ++k)
+      for (unsigned int k = 0; k < base.sweep.values.size(); ++k)
         {
-          const auto &[name, values] = base.sweep[k];
+          const auto &[name, values] = base.sweep.values[k];
           const std::string &value   = values[combination[k]];
           if (name.find('/') != std::string::npos)
             overrides.push_back(name + "=" + value);
@@ -47,28 +48,58 @@ namespace thinlayer
       return overrides;
     }
 
-    /// A CSV field, quoted where it holds a comma or a quote (RFC 4180).
-    std::string
-    csv_text(const std::string &text)
+
+    /// All combinations of the sweep's values, first name slowest.
+    std::vector<std::vector<unsigned int>>
+    all_combinations(const SweepParameters &sweep)
     {
-      if (text.find_first_of(",\"\n") == std::string::npos)
-        return text;
-      std::string quoted = "\"";
-      for (const char c : text)
-        quoted += (c == '"')    ? std::string("\"\"")
-                  : (c == '\n') ? std::string(" ")
-                                : std::string(1, c);
-      return quoted + "\"";
+      std::vector<std::vector<unsigned int>> combinations(1);
+      for (const auto &[name, values] : sweep.values)
+        {
+          std::vector<std::vector<unsigned int>> extended;
+          for (const auto &c : combinations)
+            for (unsigned int v = 0; v < values.size(); ++v)
+              {
+                extended.push_back(c);
+                extended.back().push_back(v);
+              }
+          combinations.swap(extended);
+        }
+      return combinations;
     }
 
+
+    /// "alpha=30, Solver/Tolerance=1e-3": the values of @p combination.
     std::string
-    csv_number(const double value)
+    describe(const SweepParameters           &sweep,
+             const std::vector<unsigned int> &combination)
     {
-      if (!std::isfinite(value))
-        return "";
-      char buffer[32];
-      std::snprintf(buffer, sizeof(buffer), "%.10g", value);
-      return buffer;
+      std::string values;
+      for (unsigned int k = 0; k < sweep.values.size(); ++k)
+        values += (k ? ", " : "") + sweep.values[k].first + "=" +
+                  sweep.values[k].second[combination[k]];
+      return values;
+    }
+
+
+    /// One line of progress for a finished run.
+    void
+    print_run(const RunSummary &s, std::ostream &out)
+    {
+      char line[160];
+      std::snprintf(line,
+                    sizeof(line),
+                    "last converged load %.5g%s, %u iterations to it",
+                    s.last_converged_load,
+                    s.converged ? "" : " (then failed)",
+                    s.converged_iterations);
+      out << line;
+      if (std::isfinite(s.relative_error))
+        out << ", relative error "
+            << text_format::printf("%+.3e", s.relative_error);
+      if (!s.warnings.empty())
+        out << " (" << s.warnings << ')';
+      out << std::endl; // progress: one line per run, as it ends
     }
   } // namespace
 
@@ -79,33 +110,12 @@ namespace thinlayer
             const Parameters               &base,
             std::ostream                   &out)
   {
-    // All combinations, first name slowest.
-    std::vector<std::vector<unsigned int>> combinations(1);
-    for (const auto &[name, values] : base.sweep)
-      {
-        std::vector<std::vector<unsigned int>> extended;
-        for (const auto &c : combinations)
-          for (unsigned int v = 0; v < values.size(); ++v)
-            {
-              extended.push_back(c);
-              extended.back().push_back(v);
-            }
-        combinations.swap(extended);
-      }
-
-    // "alpha=30, Solver/Tolerance=1e-3": the values of run r.
-    const auto describe = [&](const unsigned int r) {
-      std::string values;
-      for (unsigned int k = 0; k < base.sweep.size(); ++k)
-        values += (k ? ", " : "") + base.sweep[k].first + "=" +
-                  base.sweep[k].second[combinations[r][k]];
-      return values;
-    };
-
-    const auto directory_of = [&](const unsigned int run) {
+    const SweepParameters &sweep        = base.sweep;
+    const auto             combinations = all_combinations(sweep);
+    const auto             directory_of = [&](const unsigned int run) {
       char name[32];
       std::snprintf(name, sizeof(name), "/run-%03u", run + 1);
-      return base.output_directory + name;
+      return base.output.directory + name;
     };
 
     // Check every run's parameters before anything is written.
@@ -124,73 +134,47 @@ namespace thinlayer
           {
             throw InputError(file,
                              "Sweep/Values",
-                             "the run with " + describe(r) +
+                             "the run with " +
+                               describe(sweep, combinations[r]) +
                                " is invalid: " + e.what());
           }
       }
 
-    std::filesystem::create_directories(base.output_directory);
-    std::ofstream csv(base.output_directory + "/sweep.csv");
+    std::filesystem::create_directories(base.output.directory);
+    std::ofstream csv(base.output.directory + "/sweep.csv");
     csv << "run";
-    for (const auto &[name, values] : base.sweep)
-      csv << ',' << csv_text(name);
-    csv << ",converged,last_converged_load,first_failed_load,reference_load,"
-           "relative_error,cells,dofs,equations,load_steps,total_iterations,"
-           "wall_seconds,warnings,error\n";
+    for (const auto &[name, values] : sweep.values)
+      csv << ',' << text_format::csv_field(name);
+    csv << ',' << RunSummary::csv_header() << ",error\n";
 
     out << "thinlayer: sweep of " << combinations.size() << " runs into "
-        << base.output_directory << '\n';
+        << base.output.directory << '\n';
     for (unsigned int r = 0; r < combinations.size(); ++r)
       {
-        const std::string values = describe(r);
-
         csv << r + 1;
-        for (unsigned int k = 0; k < base.sweep.size(); ++k)
-          csv << ',' << csv_text(base.sweep[k].second[combinations[r][k]]);
+        for (unsigned int k = 0; k < sweep.values.size(); ++k)
+          csv << ','
+              << text_format::csv_field(
+                   sweep.values[k].second[combinations[r][k]]);
 
+        out << "  run " << r + 1 << '/' << combinations.size() << ": "
+            << describe(sweep, combinations[r]) << ": ";
         std::ostringstream run_output;
         try
           {
             const Parameters p = ParameterReader().read(file, run_overrides[r]);
             const RunSummary s = run_scene(p, run_output);
-            csv << ',' << (s.converged ? 1 : 0) << ','
-                << csv_number(s.last_converged_load) << ','
-                << csv_number(s.first_failed_load) << ','
-                << csv_number(s.reference_load) << ','
-                << csv_number(s.relative_error) << ',' << s.cells << ','
-                << s.dofs << ',' << s.equations << ',' << s.load_steps << ','
-                << s.total_iterations << ',' << csv_number(s.wall_seconds)
-                << ',' << csv_text(s.warnings) << ",\n";
-
-            char line[160];
-            std::snprintf(line,
-                          sizeof(line),
-                          "last converged load %.5g%s, %u iterations to it",
-                          s.last_converged_load,
-                          s.converged ? "" : " (then failed)",
-                          s.converged_iterations);
-            out << "  run " << r + 1 << '/' << combinations.size() << ": "
-                << values << ": " << line;
-            if (std::isfinite(s.relative_error))
-              {
-                std::snprintf(line,
-                              sizeof(line),
-                              ", relative error %+.3e",
-                              s.relative_error);
-                out << line;
-              }
-            if (!s.warnings.empty())
-              out << " (" << s.warnings << ')';
-            out << std::endl; // progress: one line per run, as it ends
+            csv << ',' << s.csv_row() << ",\n";
+            print_run(s, out);
           }
         catch (const std::exception &e)
           {
-            csv << ",0,,,,,,,,,,,," << csv_text(e.what()) << '\n';
-            out << "  run " << r + 1 << '/' << combinations.size() << ": "
-                << values << ": error: " << e.what() << std::endl;
+            csv << ',' << RunSummary::csv_error_row() << ','
+                << text_format::csv_field(e.what()) << '\n';
+            out << "error: " << e.what() << std::endl;
           }
         csv << std::flush;
       }
-    out << "  results in " << base.output_directory << "/sweep.csv\n";
+    out << "  results in " << base.output.directory << "/sweep.csv\n";
   }
 } // namespace thinlayer

@@ -32,7 +32,14 @@ namespace thinlayer
   class BoundaryData
   {
   public:
-    BoundaryData(const Parameters &parameters, const Kinematics &kinematics);
+    /**
+     * The conditions of the @p boundaries sections, whose expressions may
+     * use the geometry parameters @p constants.
+     */
+    BoundaryData(
+      const std::map<types::boundary_id, BoundaryParameters> &boundaries,
+      const std::map<std::string, double>                    &constants,
+      const Kinematics                                       &kinematics);
 
     /**
      * Add homogeneous constraints for every constrained component (the

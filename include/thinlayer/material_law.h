@@ -3,13 +3,13 @@
 
 #include <deal.II/base/symmetric_tensor.h>
 
-#include <thinlayer/parameters.h>
-
 #include <memory>
 
 namespace thinlayer
 {
   using namespace dealii;
+
+  struct MaterialParameters;
 
   /**
    * The stress invariants the yield criteria are written in (tension

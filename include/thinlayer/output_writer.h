@@ -4,6 +4,9 @@
 #include <deal.II/base/data_out_base.h>
 
 #include <thinlayer/analysis.h>
+#include <thinlayer/monitors.h>
+#include <thinlayer/parameters.h>
+#include <thinlayer/solution_method.h>
 
 #include <fstream>
 #include <map>
@@ -28,52 +31,32 @@ namespace thinlayer
   };
 
   /**
-   * A small JSON object writer: enough for summary.json, with NaN written
-   * as null so that scripts see "no value" rather than a number.
-   */
-  class JsonObject
-  {
-  public:
-    JsonObject &
-    add(const std::string &key, const double value);
-    JsonObject &
-    add(const std::string &key, const std::string &value);
-    JsonObject &
-    add(const std::string &key, const bool value);
-    JsonObject &
-    add_integer(const std::string &key, const unsigned long value);
-    JsonObject &
-    add(const std::string &key, const JsonObject &value);
-
-    /// The object as text, indented by @p indent spaces.
-    std::string
-    str(const unsigned int indent = 0) const;
-
-  private:
-    std::vector<std::pair<std::string, std::string>> members;
-  };
-
-  /**
    * The files of one run in its output directory: history.csv (one row per
    * load step, flushed as it goes so a long run can be watched),
-   * fields-NNNN.vtu with fields.pvd for ParaView, summary.json at the end.
-   * The directory is created by the constructor, so construct it only once
-   * all input has been checked.
+   * fields-NNNN.vtu with fields.pvd for ParaView, and whole files such as
+   * summary.json at the end. The directory of the Output section is created
+   * by the constructor, so construct it only once all input has been
+   * checked.
    */
   class OutputWriter
   {
   public:
-    explicit OutputWriter(const std::string &directory);
+    explicit OutputWriter(const OutputParameters &parameters);
 
     void
     write_history_row(const HistoryRow &row);
 
+    /**
+     * The fields of load step @p step as fields-NNNN.vtu, and fields.pvd
+     * listing every step so far. For Fourier kinematics the displacement
+     * is the one in the cut at angle @p theta.
+     */
     template <int dim>
     void
     write_fields(const unsigned int   step,
                  const double         load_factor,
                  const Analysis<dim> &analysis,
-                 const Parameters    &parameters);
+                 const double         theta);
 
     /**
      * Vertex positions, displacements and the last step's displacement
@@ -87,9 +70,6 @@ namespace thinlayer
     write_displacements(const Analysis<dim> &analysis,
                         const double         theta) const;
 
-    void
-    write_summary(const JsonObject &summary);
-
     /// Any other file (the mesh, the parameters), written whole.
     void
     write_file(const std::string &name, const std::string &content) const;
@@ -99,6 +79,7 @@ namespace thinlayer
 
   private:
     std::string                                 directory;
+    unsigned int                                vtu_subdivisions;
     std::ofstream                               history;
     std::vector<std::pair<double, std::string>> pvd_records;
   };

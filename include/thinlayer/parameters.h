@@ -4,14 +4,81 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/types.h>
 
+#include <thinlayer/name_table.h>
+
 #include <iosfwd>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace thinlayer
 {
   using namespace dealii;
+
+  /**
+   * @file
+   * The parameter file, one struct per section in the style of deal.II's
+   * step-44: each declares its entries (declare()) and reads them back
+   * (parse()) side by side, and checks them while reading, so that code
+   * that receives a section can trust it. Every check names the file, the
+   * entry and what was expected (InputError). Each component of the code
+   * receives only the sections it needs.
+   *
+   * Enumerations have one NameTable each, which gives the entry's
+   * Patterns::Selection, its parsing and the name written into results.
+   */
+
+  /// "Mesh": the gmsh file and the values of its geometry parameters.
+  struct MeshParameters
+  {
+    /// The mesh or geometry file, resolved relative to the parameter file.
+    std::string file;
+    /// Values of the .geo file's DefineConstant[] parameters; also
+    /// constants in every expression of the parameter file.
+    std::map<std::string, double> geometry_parameters;
+
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm, const std::string &parameter_file);
+  };
+
+
+  /// "Kinematics": plane strain, or Fourier harmonics of an axisymmetric
+  /// body.
+  struct KinematicsParameters
+  {
+    bool fourier;
+    /// Fourier: the harmonics, the series and the stations (radians).
+    /// Plane strain: harmonic 0 and one station at 0.
+    std::vector<unsigned int> harmonics;
+    bool                      antisymmetric;
+    std::vector<double>       station_angles;
+    /// Fourier: the boundary id of the axis r = 0, or -1 if the mesh does
+    /// not reach it.
+    int axis_boundary_id;
+
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm, const std::string &parameter_file);
+  };
+
+
+  /// "Discretisation": the element and its Gauss points.
+  struct DiscretisationParameters
+  {
+    /// true: 8-node serendipity (constrained Q2); false: 9-node Q2.
+    bool         serendipity;
+    unsigned int gauss_points_per_direction;
+
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm);
+  };
+
 
   enum class YieldCriterion
   {
@@ -22,8 +89,8 @@ namespace thinlayer
   };
 
   /**
-   * One material id (a gmsh physical surface): isotropic elasticity and an
-   * elastic-perfectly plastic yield criterion.
+   * "Material <id>", one per material id (a gmsh physical surface):
+   * isotropic elasticity and an elastic-perfectly plastic yield criterion.
    */
   struct MaterialParameters
   {
@@ -36,49 +103,26 @@ namespace thinlayer
     /// phi and psi, in degrees.
     double friction_angle;
     double dilation_angle;
+
+    static const NameTable<YieldCriterion> yield_criterion_names;
+
+    /// The section's name: "Material <id>".
+    static std::string
+    section(const unsigned int id);
+    static void
+    declare(ParameterHandler &prm, const unsigned int id);
+    void
+    parse(ParameterHandler  &prm,
+          const std::string &parameter_file,
+          const unsigned int id);
   };
 
-  /// The direct solver of the constant stiffness.
-  enum class LinearSolver
-  {
-    cholmod,
-    umfpack
-  };
-
-  /**
-   * How the elasto-plastic equations of a load step are solved.
-   */
-  enum class SolutionMethod
-  {
-    /// The paper's: constant stiffness, viscoplastic strain iterations.
-    viscoplastic,
-    /// Constant stiffness, return mapping, the stress excess as body loads.
-    initial_stress,
-    /// Initial stress with Anderson acceleration on the same factor.
-    accelerated_initial_stress,
-    /// Consistent tangent, line search, load-step cut-back.
-    newton
-  };
 
   /**
-   * When an iteration of the constant-stiffness method has converged.
-   */
-  enum class ConvergenceCriterion
-  {
-    /// The paper's: no body load, divided by the largest, changed by more
-    /// than the tolerance between two iterations.
-    body_loads,
-    /// The same test on the displacement increment of the step.
-    displacements,
-    /// Return-mapping methods: the out-of-balance force against the
-    /// largest external or internal force (reactions included).
-    residual
-  };
-
-  /**
-   * Conditions on one boundary id (a gmsh physical curve). Prescribed
-   * displacements, tractions and pressures are all given per unit load
-   * factor, so that one load programme scales all of them together.
+   * "Boundary <id>", one per boundary id (a gmsh physical curve).
+   * Prescribed displacements, tractions and pressures are all given per
+   * unit load factor, so that one load programme scales all of them
+   * together.
    */
   struct BoundaryParameters
   {
@@ -93,37 +137,194 @@ namespace thinlayer
     std::string traction;
     /// Normal pressure, positive when it pushes into the body.
     std::string pressure;
+
+    /// The section's name: "Boundary <id>".
+    static std::string
+    section(const unsigned int id);
+    static void
+    declare(ParameterHandler &prm, const unsigned int id);
+    /// The expressions are checked against the kinematics' variables and
+    /// the geometry parameters.
+    void
+    parse(ParameterHandler           &prm,
+          const std::string          &parameter_file,
+          const unsigned int          id,
+          const KinematicsParameters &kinematics,
+          const MeshParameters       &mesh);
   };
 
-  /**
-   * How the "load" column of history.csv is measured.
-   */
-  enum class LoadMeasure
+
+  /// "Loading": the load programme.
+  struct LoadingParameters
   {
-    /// The load factor times a scale (e.g. a traction times an area).
-    load_factor,
-    /// The sum of reactions on a boundary id in one direction.
-    reaction,
-    /// The average of a stress component over a material id.
-    stress_average
+    /// Increments of the load factor, one per load step.
+    std::vector<double> load_increments;
+
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm, const std::string &parameter_file);
   };
 
-  /**
-   * How the "displacement" column of history.csv is measured.
-   */
-  enum class DisplacementMeasureType
+
+  /// "Solver": how the elasto-plastic equations of a load step are solved.
+  struct SolverParameters
   {
-    /// Length-weighted average over a boundary id.
-    boundary_average,
-    /// The value at a point.
-    point
+    /// The solution methods; each is a class of its own (see
+    /// create_solution_method()).
+    enum class Method
+    {
+      /// The paper's: constant stiffness, viscoplastic strain iterations.
+      viscoplastic,
+      /// Constant stiffness, return mapping, the stress excess as body
+      /// loads.
+      initial_stress,
+      /// Initial stress with Anderson acceleration on the same factor.
+      accelerated_initial_stress,
+      /// Consistent tangent, line search, load-step cut-back.
+      newton
+    };
+
+    /// When the iterations of a load step have converged.
+    enum class ConvergenceCriterion
+    {
+      /// The paper's: no body load, divided by the largest, changed by
+      /// more than the tolerance between two iterations.
+      body_loads,
+      /// The same test on the displacement increment of the step.
+      displacements,
+      /// Return-mapping methods: the out-of-balance force against the
+      /// largest external or internal force (reactions included).
+      residual
+    };
+
+    /// The direct solver of the constant stiffness.
+    enum class LinearSolver
+    {
+      cholmod,
+      umfpack
+    };
+
+    static const NameTable<Method>               method_names;
+    static const NameTable<ConvergenceCriterion> criterion_names;
+    static const NameTable<LinearSolver>         linear_solver_names;
+
+    Method               method;
+    unsigned int         anderson_depth;
+    unsigned int         max_cut_backs;
+    unsigned int         max_newton_iterations;
+    ConvergenceCriterion convergence_criterion;
+    double               tolerance;
+    unsigned int         max_iterations;
+    bool                 continue_after_failure;
+    LinearSolver         linear_solver;
+
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm, const std::string &parameter_file);
   };
+
+
+  /// "Monitors": what the load and displacement columns of history.csv
+  /// measure.
+  struct MonitorParameters
+  {
+    enum class LoadMeasure
+    {
+      /// The load factor times a scale (e.g. a traction times an area).
+      load_factor,
+      /// The sum of reactions on a boundary id in one direction.
+      reaction,
+      /// The average of a stress component over a material id.
+      stress_average
+    };
+
+    enum class DisplacementMeasure
+    {
+      /// Length-weighted average over a boundary id.
+      boundary_average,
+      /// The value at a point.
+      point
+    };
+
+    static const NameTable<LoadMeasure>         load_measure_names;
+    static const NameTable<DisplacementMeasure> displacement_measure_names;
+
+    LoadMeasure        load_measure;
+    double             load_scale;
+    types::boundary_id load_boundary_id;
+    unsigned int       load_component;
+    types::material_id load_material_id;
+    /// (i, j) of the averaged stress component.
+    std::pair<unsigned int, unsigned int> load_stress_component;
+    DisplacementMeasure                   displacement_measure;
+    /// Fourier: the angle (radians) at which displacements are monitored.
+    double              displacement_angle;
+    std::vector<double> displacement_point;
+    types::boundary_id  displacement_boundary_id;
+    unsigned int        displacement_component;
+    double              displacement_scale;
+
+    static void
+    declare(ParameterHandler &prm);
+    /// Reactions and stress averages are plane-strain measures so far.
+    void
+    parse(ParameterHandler           &prm,
+          const std::string          &parameter_file,
+          const KinematicsParameters &kinematics);
+  };
+
+
+  /// "Reference": the analytic value of the load the run is compared with.
+  struct ReferenceParameters
+  {
+    /// Evaluated from the geometry parameters; NaN where none is declared.
+    double analytic_load;
+
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler     &prm,
+          const std::string    &parameter_file,
+          const MeshParameters &mesh);
+  };
+
+
+  /**
+   * "Sweep": the runs are the cartesian product of these value lists. A
+   * name with a '/' is an entry ("Solver/Tolerance"), any other name a
+   * geometry parameter. Empty: a single run.
+   */
+  struct SweepParameters
+  {
+    std::vector<std::pair<std::string, std::vector<std::string>>> values;
+
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm, const std::string &parameter_file);
+  };
+
+
+  /// "Output": where results go and which.
+  struct OutputParameters
+  {
+    std::string  directory;
+    bool         write_vtu;
+    unsigned int vtu_subdivisions;
+    bool         print_timing;
+
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm, const std::string &parameter_file);
+  };
+
 
   /**
    * Everything one analysis needs, read from a parameter file (plus
-   * command-line overrides) by ParameterReader. Plain data: validation
-   * happens while reading, so code that receives a Parameters object can
-   * trust it.
+   * command-line overrides) by ParameterReader: one member per section.
    */
   struct Parameters
   {
@@ -134,77 +335,19 @@ namespace thinlayer
     /// the record of what ran.
     std::string effective_parameters;
 
-    // Mesh
-    /// The mesh or geometry file, resolved relative to the parameter file.
-    std::string                   mesh_file;
-    std::map<std::string, double> geometry_parameters;
-
-    // Kinematics
-    bool fourier;
-    /// Fourier: the harmonics, the series and the stations (radians).
-    std::vector<unsigned int> harmonics;
-    bool                      antisymmetric;
-    std::vector<double>       station_angles;
-    /// Fourier: the boundary id of the axis r = 0, or -1 if the mesh does
-    /// not reach it.
-    int axis_boundary_id;
-
-    // Discretisation
-    /// true: 8-node serendipity (constrained Q2); false: 9-node Q2.
-    bool         serendipity;
-    unsigned int gauss_points_per_direction;
-
-    // Materials and boundaries, by id
+    MeshParameters                                   mesh;
+    KinematicsParameters                             kinematics;
+    DiscretisationParameters                         discretisation;
     std::map<types::material_id, MaterialParameters> materials;
     std::map<types::boundary_id, BoundaryParameters> boundaries;
-
-    // Loading: increments of the load factor, one per load step.
-    std::vector<double> load_increments;
-
-    // Solver
-    SolutionMethod       method;
-    unsigned int         anderson_depth;
-    unsigned int         max_cut_backs;
-    unsigned int         max_newton_iterations;
-    ConvergenceCriterion convergence_criterion;
-    double               tolerance;
-    unsigned int         max_iterations;
-    bool                 continue_after_failure;
-    LinearSolver         linear_solver;
-
-    // Monitors
-    LoadMeasure        load_measure;
-    double             load_scale;
-    types::boundary_id load_boundary_id;
-    unsigned int       load_component;
-    types::material_id load_material_id;
-    /// (i, j) of the averaged stress component.
-    std::pair<unsigned int, unsigned int> load_stress_component;
-    DisplacementMeasureType               displacement_measure;
-    /// Fourier: the angle (radians) at which displacements are monitored.
-    double              displacement_angle;
-    std::vector<double> displacement_point;
-    types::boundary_id  displacement_boundary_id;
-    unsigned int        displacement_component;
-    double              displacement_scale;
-
-    // Reference: the analytic value of the load the run is compared with,
-    // evaluated from the geometry parameters; NaN where none is declared.
-    double reference_load;
-
-    /**
-     * Sweep: the runs are the cartesian product of these value lists. A
-     * name with a '/' is an entry ("Solver/Tolerance"), any other name a
-     * geometry parameter. Empty: a single run.
-     */
-    std::vector<std::pair<std::string, std::vector<std::string>>> sweep;
-
-    // Output
-    std::string  output_directory;
-    bool         write_vtu;
-    unsigned int vtu_subdivisions;
-    bool         print_timing;
+    LoadingParameters                                loading;
+    SolverParameters                                 solver;
+    MonitorParameters                                monitors;
+    ReferenceParameters                              reference;
+    SweepParameters                                  sweep;
+    OutputParameters                                 output;
   };
+
 
   /**
    * Reads parameter files into Parameters. Per-id sections ("Material 3",

@@ -1,0 +1,50 @@
+#ifndef thinlayer_parameter_checks_h
+#define thinlayer_parameter_checks_h
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <map>
+#include <string>
+
+namespace thinlayer
+{
+  using namespace dealii;
+
+  /**
+   * @file
+   * Checks that more than one parameter section makes of its entries, each
+   * throwing InputError with the file, the entry and what was expected.
+   */
+
+  /**
+   * The message part of a deal.II exception on one line, without the
+   * source location that means nothing to a user.
+   */
+  std::string
+  message_of(const ExceptionBase &exception);
+
+  /**
+   * Checks that @p expressions, ';'-separated, are @p n_components function
+   * expressions (or one for all) of x, y (of r, z, theta where @p fourier)
+   * and the @p constants, so that a typo is reported when the file is read,
+   * naming @p entry, and not in the middle of a run.
+   */
+  void
+  check_expressions(const std::string                   &expressions,
+                    const unsigned int                   n_components,
+                    const bool                           fourier,
+                    const std::map<std::string, double> &constants,
+                    const std::string                   &file,
+                    const std::string                   &entry);
+
+  /// The entry @p name of the current subsection @p section, which must be
+  /// > 0.
+  double
+  positive(const ParameterHandler &prm,
+           const std::string      &name,
+           const std::string      &file,
+           const std::string      &section);
+} // namespace thinlayer
+
+#endif

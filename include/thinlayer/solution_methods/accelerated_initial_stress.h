@@ -1,0 +1,48 @@
+#ifndef thinlayer_solution_methods_accelerated_initial_stress_h
+#define thinlayer_solution_methods_accelerated_initial_stress_h
+
+#include <deal.II/lac/vector.h>
+
+#include <thinlayer/anderson_acceleration.h>
+#include <thinlayer/solution_methods/return_mapping_method.h>
+
+namespace thinlayer
+{
+  /**
+   * The initial-stress method with Anderson acceleration
+   * (AndersonAcceleration, Solver/Anderson depth previous iterates) of the
+   * step increments of all modes at once: still one elastic factorisation,
+   * plus a small least-squares problem per iteration, which extrapolates
+   * along the slow creep of plain constant-stiffness iterations near
+   * collapse.
+   */
+  template <int dim>
+  class AcceleratedInitialStressMethod : public ReturnMappingMethod<dim>
+  {
+  public:
+    AcceleratedInitialStressMethod(const SolverParameters &parameters,
+                                   Analysis<dim>          &analysis);
+
+    void
+    initialize() override;
+
+  protected:
+    bool
+    iterate(const double   target,
+            ResidualNorms &norms,
+            StepResult    &result) override;
+
+    /// Forgets the acceleration history: each attempt starts afresh.
+    void
+    start_attempt() override;
+
+  private:
+    AndersonAcceleration anderson;
+    /// The step increments of all modes, one after the other, and their
+    /// corrections: the vectors Anderson acceleration works on.
+    Vector<double> stacked_increment;
+    Vector<double> stacked_correction;
+  };
+} // namespace thinlayer
+
+#endif

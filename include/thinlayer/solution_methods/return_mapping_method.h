@@ -1,0 +1,108 @@
+#ifndef thinlayer_solution_methods_return_mapping_method_h
+#define thinlayer_solution_methods_return_mapping_method_h
+
+#include <deal.II/lac/vector.h>
+
+#include <thinlayer/analysis.h>
+#include <thinlayer/solution_method.h>
+
+#include <vector>
+
+namespace thinlayer
+{
+  /**
+   * What the return-mapping methods (initial stress, accelerated initial
+   * stress, Newton) share: they iterate on the out-of-balance force
+   * r = lambda f - int B^T sigma, every point's stress coming from the
+   * return mapping of its elastic trial stress sigma_0 + D (strain of the
+   * step) (Analysis::evaluate_residual()). This class runs the attempts at
+   * a load step, cutting it back where the method allows, and tests
+   * convergence; a derived class supplies one iteration, the correction of
+   * the step's displacement increment.
+   *
+   * Convergence: the out-of-balance force against the stress excess (the
+   * paper's body-load test: for the initial-stress method r is exactly the
+   * change of those body loads between iterations) or against the largest
+   * force, or the last change of the step's displacements against their
+   * size; and, whatever the criterion, once the residual is at rounding
+   * level (elastic steps).
+   */
+  template <int dim>
+  class ReturnMappingMethod : public SolutionMethod<dim>
+  {
+  public:
+    ReturnMappingMethod(const SolverParameters &parameters,
+                        Analysis<dim>          &analysis);
+
+    /// Allocates the work vectors; a derived class that overrides this
+    /// calls it first.
+    void
+    initialize() override;
+
+    /**
+     * Attempts at the step: a converged attempt short of the target (after
+     * a cut-back) is accepted in the body and the rest of the step tried
+     * again; a failed one is halved up to max_cut_backs() times.
+     */
+    StepResult
+    solve_step(const double new_load_factor) override;
+
+  protected:
+    /**
+     * One iteration towards the load factor @p target: from the modes'
+     * residuals (and @p norms, their norms), set each mode's correction,
+     * call remember_increments() before changing the step increments, and
+     * leave the new increments with their residual norms in @p norms.
+     * Counts into @p result. False if the iteration cannot go on (a
+     * singular tangent): the attempt has then failed.
+     */
+    virtual bool
+    iterate(const double target, ResidualNorms &norms, StepResult &result) = 0;
+
+    /// Iterations per attempt (Solver/Maximum iterations).
+    virtual unsigned int
+    max_iterations() const;
+
+    /// How often a failed attempt may be halved (none).
+    virtual unsigned int
+    max_cut_backs() const;
+
+    /// At the start of every attempt.
+    virtual void
+    start_attempt();
+
+    /// When the body's state has been accepted (and at the start of the
+    /// step): keep what a cut-back must return to.
+    virtual void
+    keep_accepted_state();
+
+    /// Before a cut-back attempt: return to the kept state.
+    virtual void
+    restore_accepted_state();
+
+    /// Each mode's correction K_m^-1 r_m with its elastic factor.
+    void
+    elastic_corrections();
+
+    /// Keep each mode's step increment, for the displacement criterion.
+    void
+    remember_increments();
+
+    const SolverParameters &parameters;
+    Analysis<dim>          &analysis;
+    /// Per mode: the correction of the step increment, and the step
+    /// increment before it.
+    std::vector<Vector<double>> correction;
+    std::vector<Vector<double>> previous_increment;
+
+  private:
+    /// Iterations from the accepted state to @p target; true if converged.
+    bool
+    attempt(const double target, StepResult &result);
+
+    bool
+    converged(const ResidualNorms &norms);
+  };
+} // namespace thinlayer
+
+#endif

@@ -1,0 +1,41 @@
+#ifndef thinlayer_text_format_h
+#define thinlayer_text_format_h
+
+#include <string>
+
+namespace thinlayer
+{
+  /**
+   * How numbers and text are written into results, in one place so that
+   * every writer (screen, history.csv, sweep.csv, summary.json) quotes and
+   * rounds the same way.
+   */
+  namespace text_format
+  {
+    /// @p value formatted by the printf pattern @p pattern (one number).
+    std::string
+    printf(const char *pattern, const double value);
+
+    /// Ten significant digits (%.10g); "null" where not finite, JSON's
+    /// "no value".
+    std::string
+    json_number(const double value);
+
+    /// A JSON string literal: quoted, with quotes, backslashes and control
+    /// characters escaped.
+    std::string
+    json_string(const std::string &text);
+
+    /// Ten significant digits (%.10g); empty where not finite, so that
+    /// scripts read a missing value rather than a number.
+    std::string
+    csv_number(const double value);
+
+    /// A CSV field, quoted where it holds a comma, a quote or a line break
+    /// (RFC 4180; line breaks become spaces).
+    std::string
+    csv_field(const std::string &text);
+  } // namespace text_format
+} // namespace thinlayer
+
+#endif

@@ -1,0 +1,108 @@
+#include <deal.II/base/function_parser.h>
+
+#include <thinlayer/input_error.h>
+#include <thinlayer/parameter_checks.h>
+
+#include <cctype>
+#include <iostream>
+#include <sstream>
+
+namespace thinlayer
+{
+  namespace
+  {
+    /**
+     * Silences std::cerr while alive: muparser's diagnostics go there, and
+     * we report the error ourselves, once, naming the entry.
+     */
+    class SilencedErrorStream
+    {
+    public:
+      SilencedErrorStream()
+        : saved(std::cerr.rdbuf(sink.rdbuf()))
+      {}
+      ~SilencedErrorStream()
+      {
+        std::cerr.rdbuf(saved);
+      }
+
+    private:
+      std::ostringstream sink;
+      std::streambuf    *saved;
+    };
+  } // namespace
+
+  std::string
+  message_of(const ExceptionBase &exception)
+  {
+    std::ostringstream out;
+    exception.print_info(out);
+    // deal.II lays its messages out over indented lines; one line reads
+    // better after our "error in 'file', entry '...':" prefix.
+    std::string text;
+    for (const char c : out.str())
+      if (!std::isspace(static_cast<unsigned char>(c)))
+        text += c;
+      else if (!text.empty() && text.back() != ' ')
+        text += ' ';
+    while (!text.empty() && text.back() == ' ')
+      text.pop_back();
+    return text;
+  }
+
+
+  void
+  check_expressions(const std::string                   &expressions,
+                    const unsigned int                   n_components,
+                    const bool                           fourier,
+                    const std::map<std::string, double> &constants,
+                    const std::string                   &file,
+                    const std::string                   &entry)
+  {
+    const auto parts = Utilities::split_string_list(expressions, ';');
+    if (parts.size() != 1 && parts.size() != n_components)
+      throw InputError(file,
+                       entry,
+                       "expected " + std::to_string(n_components) +
+                         " expressions separated by ';' (or one for all), "
+                         "got " +
+                         std::to_string(parts.size()));
+    const SilencedErrorStream silence;
+    try
+      {
+        FunctionParser<3> f(1);
+        auto              all_constants = constants;
+        all_constants["pi"]             = numbers::PI;
+        for (const auto &p : parts)
+          {
+            f.initialize(fourier ? "r,z,theta" : "x,y,unused_z",
+                         p,
+                         all_constants);
+            (void)f.value(Point<3>(1, 0, 0));
+          }
+      }
+    catch (const ExceptionBase &e)
+      {
+        throw InputError(file,
+                         entry,
+                         std::string("expected function expressions of ") +
+                           (fourier ? "r, z, theta" : "x, y") +
+                           " and the geometry parameters: " + message_of(e));
+      }
+  }
+
+
+  double
+  positive(const ParameterHandler &prm,
+           const std::string      &name,
+           const std::string      &file,
+           const std::string      &section)
+  {
+    const double value = prm.get_double(name);
+    if (!(value > 0))
+      throw InputError(file,
+                       section + "/" + name,
+                       "expected a value > 0, got " + prm.get(name));
+    return value;
+  }
+} // namespace thinlayer

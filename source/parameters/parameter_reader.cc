@@ -1,0 +1,201 @@
+#include <deal.II/base/utilities.h>
+
+#include <thinlayer/input_error.h>
+#include <thinlayer/parameter_checks.h>
+#include <thinlayer/parameters.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+
+namespace thinlayer
+{
+  namespace
+  {
+
+    /**
+     * The names of per-id sections ("Material 3") that the parameter text
+     * opens, and that the overrides address ("Material 3/...").
+     */
+    std::set<types::global_dof_index>
+    ids_of_sections(const std::string              &text,
+                    const std::vector<std::string> &overrides,
+                    const std::string              &kind)
+    {
+      std::set<types::global_dof_index> ids;
+      const std::regex                  in_file("^\\s*subsection\\s+" + kind +
+                               "\\s+([0-9]+)\\s*(#.*)?$");
+      std::istringstream                lines(text);
+      std::string                       line;
+      std::smatch                       match;
+      while (std::getline(lines, line))
+        if (std::regex_match(line, match, in_file))
+          ids.insert(std::stoul(match[1]));
+
+      const std::regex in_override("^\\s*" + kind + "\\s+([0-9]+)\\s*/.*");
+      for (const auto &o : overrides)
+        if (std::regex_match(o, match, in_override))
+          ids.insert(std::stoul(match[1]));
+      return ids;
+    }
+
+
+    void
+    apply_override(ParameterHandler &prm, const std::string &override_text)
+    {
+      const auto equal = override_text.find('=');
+      if (equal == std::string::npos)
+        throw InputError("command line",
+                         override_text,
+                         "expected -s \"Section/Entry=value\"");
+      const std::string path = Utilities::trim(override_text.substr(0, equal));
+      const std::string value =
+        Utilities::trim(override_text.substr(equal + 1));
+      const auto parts = Utilities::split_string_list(path, '/');
+      if (parts.size() < 2)
+        throw InputError("command line",
+                         path,
+                         "expected a path 'Section/Entry'");
+      for (unsigned int i = 0; i + 1 < parts.size(); ++i)
+        prm.enter_subsection(parts[i]);
+      try
+        {
+          prm.set(parts.back(), value);
+        }
+      catch (const ExceptionBase &e)
+        {
+          for (unsigned int i = 0; i + 1 < parts.size(); ++i)
+            prm.leave_subsection();
+          throw InputError("command line", path, message_of(e));
+        }
+      for (unsigned int i = 0; i + 1 < parts.size(); ++i)
+        prm.leave_subsection();
+    }
+
+
+    /// The sections every file has, in the order --print-parameters shows
+    /// them, and the per-id sections the file opens.
+    void
+    declare_sections(ParameterHandler                        &prm,
+                     const std::set<types::global_dof_index> &material_ids,
+                     const std::set<types::global_dof_index> &boundary_ids)
+    {
+      MeshParameters::declare(prm);
+      KinematicsParameters::declare(prm);
+      DiscretisationParameters::declare(prm);
+      LoadingParameters::declare(prm);
+      SolverParameters::declare(prm);
+      MonitorParameters::declare(prm);
+      ReferenceParameters::declare(prm);
+      SweepParameters::declare(prm);
+      OutputParameters::declare(prm);
+      for (const auto id : material_ids)
+        MaterialParameters::declare(prm, id);
+      for (const auto id : boundary_ids)
+        BoundaryParameters::declare(prm, id);
+    }
+
+
+    /// Every section, in an order in which each finds the sections it
+    /// depends on already read.
+    Parameters
+    parse_sections(ParameterHandler                        &prm,
+                   const std::string                       &file,
+                   const std::set<types::global_dof_index> &material_ids,
+                   const std::set<types::global_dof_index> &boundary_ids)
+    {
+      Parameters p;
+      p.parameter_file = file;
+      p.mesh.parse(prm, file);
+      p.kinematics.parse(prm, file);
+      p.discretisation.parse(prm);
+      if (material_ids.empty())
+        throw InputError(file,
+                         "Material <id>",
+                         "expected at least one 'subsection Material <id>' "
+                         "for the physical surfaces of the mesh");
+      for (const auto id : material_ids)
+        p.materials[id].parse(prm, file, id);
+      for (const auto id : boundary_ids)
+        p.boundaries[id].parse(prm, file, id, p.kinematics, p.mesh);
+      p.loading.parse(prm, file);
+      p.solver.parse(prm, file);
+      p.monitors.parse(prm, file, p.kinematics);
+      p.reference.parse(prm, file, p.mesh);
+      p.sweep.parse(prm, file);
+      p.output.parse(prm, file);
+      return p;
+    }
+  } // namespace
+
+
+  Parameters
+  ParameterReader::read(const std::string              &file,
+                        const std::vector<std::string> &overrides) const
+  {
+    std::ifstream in(file);
+    if (!in)
+      throw InputError(file, "", "cannot open the parameter file");
+    std::stringstream text;
+    text << in.rdbuf();
+    return read_from_string(text.str(), file, overrides);
+  }
+
+
+  Parameters
+  ParameterReader::read_from_string(
+    const std::string              &text,
+    const std::string              &file,
+    const std::vector<std::string> &overrides) const
+  {
+    const auto material_ids = ids_of_sections(text, overrides, "Material");
+    const auto boundary_ids = ids_of_sections(text, overrides, "Boundary");
+
+    ParameterHandler prm;
+    declare_sections(prm, material_ids, boundary_ids);
+    try
+      {
+        std::istringstream in(text);
+        prm.parse_input(in, file);
+      }
+    catch (const ExceptionBase &e)
+      {
+        throw InputError(file, "", message_of(e));
+      }
+    for (const auto &o : overrides)
+      apply_override(prm, o);
+
+    Parameters parameters =
+      parse_sections(prm, file, material_ids, boundary_ids);
+    // The record names the mesh by its absolute path, so that it can be
+    // run again from anywhere.
+    prm.enter_subsection("Mesh");
+    prm.set("File",
+            std::filesystem::absolute(parameters.mesh.file)
+              .lexically_normal()
+              .string());
+    prm.leave_subsection();
+    std::ostringstream effective;
+    effective << "# The parameters of this run: " << file;
+    for (const auto &o : overrides)
+      effective << " -s \"" << o << '"';
+    effective << '\n';
+    prm.print_parameters(effective, ParameterHandler::ShortPRM);
+    parameters.effective_parameters = effective.str();
+    return parameters;
+  }
+
+
+  void
+  ParameterReader::print_parameters(std::ostream &out) const
+  {
+    ParameterHandler prm;
+    declare_sections(prm, {1}, {1});
+    out
+      << "# thinlayer parameters. 'Material <id>' and 'Boundary <id>' may be\n"
+      << "# repeated for every physical surface and curve id of the mesh.\n";
+    prm.print_parameters(out, ParameterHandler::PRM);
+  }
+} // namespace thinlayer

@@ -1,0 +1,508 @@
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/utilities.h>
+
+#include <thinlayer/input_error.h>
+#include <thinlayer/parameter_checks.h>
+#include <thinlayer/parameters.h>
+
+#include <cmath>
+#include <limits>
+#include <regex>
+
+// The sections that describe a run of the model: loading, solver,
+// monitors, reference, sweep and output.
+
+namespace thinlayer
+{
+  namespace
+  {
+    std::vector<double>
+    parse_increments(const std::string &text, const std::string &file)
+    {
+      const std::string   entry = "Loading/Load increments";
+      std::vector<double> result;
+      const std::regex    repeated(
+        "\\s*([0-9]+)\\s*\\*\\s*([-+0-9.eE]+)\\s*|\\s*([-+0-9.eE]+)\\s*");
+      for (const auto &item : Utilities::split_string_list(text, ','))
+        {
+          std::smatch match;
+          if (!std::regex_match(item, match, repeated))
+            throw InputError(file,
+                             entry,
+                             "expected a number or 'n*number', got '" + item +
+                               "'");
+          try
+            {
+              if (match[1].matched)
+                result.insert(result.end(),
+                              std::stoul(match[1]),
+                              std::stod(match[2]));
+              else
+                result.push_back(std::stod(match[3]));
+            }
+          catch (const std::exception &)
+            {
+              throw InputError(file,
+                               entry,
+                               "expected a number or 'n*number', got '" + item +
+                                 "'");
+            }
+        }
+      if (result.empty())
+        throw InputError(file, entry, "expected at least one increment");
+      return result;
+    }
+
+
+    std::vector<std::pair<std::string, std::vector<std::string>>>
+    parse_sweep(const std::string &text, const std::string &file)
+    {
+      std::vector<std::pair<std::string, std::vector<std::string>>> sweep;
+      const std::regex name("[A-Za-z_][A-Za-z0-9_]*|[^/=]+(/[^/=]+)+");
+      for (const auto &item : Utilities::split_string_list(text, ';'))
+        {
+          const auto        equal = item.find('=');
+          const std::string key =
+            Utilities::trim(item.substr(0, std::min(equal, item.size())));
+          if (equal == std::string::npos || !std::regex_match(key, name))
+            throw InputError(file,
+                             "Sweep/Values",
+                             "expected 'name = v1, v2, ...' (a geometry "
+                             "parameter or Section/Entry), got '" +
+                               item + "'");
+          // Values are comma-separated; braces group a value that is a
+          // list itself ("Kinematics/Harmonics = {1}, {1, 3}").
+          std::vector<std::string> values;
+          std::string              current;
+          int                      depth = 0;
+          for (const char ch : item.substr(equal + 1) + ",")
+            {
+              if (ch == '{')
+                ++depth;
+              else if (ch == '}')
+                --depth;
+              else if (ch == ',' && depth == 0)
+                {
+                  if (!Utilities::trim(current).empty())
+                    values.push_back(Utilities::trim(current));
+                  current.clear();
+                }
+              else
+                current += ch;
+            }
+          if (depth != 0)
+            throw InputError(file,
+                             "Sweep/Values",
+                             "unbalanced braces in '" + item + "'");
+          if (values.empty())
+            throw InputError(file,
+                             "Sweep/Values",
+                             "expected at least one value for '" + key + "'");
+          if (key.find('/') == std::string::npos)
+            for (const auto &v : values)
+              {
+                std::size_t used = 0;
+                try
+                  {
+                    std::stod(v, &used);
+                  }
+                catch (const std::exception &)
+                  {}
+                if (used == 0 || used != v.size())
+                  throw InputError(file,
+                                   "Sweep/Values",
+                                   "expected numbers for the geometry "
+                                   "parameter '" +
+                                     key + "', got '" + v + "'");
+              }
+          sweep.emplace_back(key, values);
+        }
+      return sweep;
+    }
+  } // namespace
+
+
+  void
+  LoadingParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Loading");
+    prm.declare_entry(
+      "Load increments",
+      "1",
+      Patterns::Anything(),
+      "Increments of the load factor, one per load step, comma-separated; "
+      "'n*d' repeats the increment d n times (e.g. '0.5, 10*0.05'). All "
+      "tractions, pressures and prescribed displacements scale with the "
+      "load factor.");
+    prm.leave_subsection();
+  }
+
+
+  void
+  LoadingParameters::parse(ParameterHandler &prm, const std::string &file)
+  {
+    prm.enter_subsection("Loading");
+    load_increments = parse_increments(prm.get("Load increments"), file);
+    prm.leave_subsection();
+  }
+
+
+  const NameTable<SolverParameters::Method> SolverParameters::method_names = {
+    {Method::viscoplastic, "viscoplastic"},
+    {Method::initial_stress, "initial stress"},
+    {Method::accelerated_initial_stress, "accelerated initial stress"},
+    {Method::newton, "newton"}};
+
+  const NameTable<SolverParameters::ConvergenceCriterion>
+    SolverParameters::criterion_names = {
+      {ConvergenceCriterion::body_loads, "body loads"},
+      {ConvergenceCriterion::displacements, "displacements"},
+      {ConvergenceCriterion::residual, "residual"}};
+
+  const NameTable<SolverParameters::LinearSolver>
+    SolverParameters::linear_solver_names = {{LinearSolver::cholmod, "cholmod"},
+                                             {LinearSolver::umfpack,
+                                              "umfpack"}};
+
+
+  void
+  SolverParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Solver");
+    prm.declare_entry(
+      "Method",
+      "viscoplastic",
+      Patterns::Selection(method_names.pattern()),
+      "viscoplastic: the paper's constant-stiffness viscoplastic strain "
+      "iterations; initial stress: constant stiffness, each point "
+      "return-mapped, the stress excess as body loads; accelerated initial "
+      "stress: the same with Anderson acceleration, still one factorisation; "
+      "newton: the consistent tangent, refactorised every iteration, with "
+      "a line search and load-step cut-back.");
+    prm.declare_entry("Anderson depth",
+                      "5",
+                      Patterns::Integer(1, 50),
+                      "Accelerated initial stress: how many previous "
+                      "iterates the Anderson update combines.");
+    prm.declare_entry("Maximum cut-backs",
+                      "4",
+                      Patterns::Integer(0, 20),
+                      "Newton: how often a load step that does not "
+                      "converge is halved before it counts as failed "
+                      "(collapse).");
+    prm.declare_entry("Maximum Newton iterations",
+                      "25",
+                      Patterns::Integer(1),
+                      "Newton: iterations per attempt at a load step before "
+                      "it is cut back (Maximum iterations applies to the "
+                      "constant-stiffness methods).");
+    prm.declare_entry("Convergence criterion",
+                      "body loads",
+                      Patterns::Selection(criterion_names.pattern()),
+                      "body loads: the paper's test, no body load "
+                      "(divided by the largest) changes by more than the "
+                      "tolerance between two iterations; for the "
+                      "return-mapping methods that change is the "
+                      "out-of-balance force and the body loads the stress "
+                      "excess int B^T (trial stress - stress); "
+                      "displacements: the same test on the step's "
+                      "displacement increment (its last correction "
+                      "against its size); residual (return-mapping methods "
+                      "only): max |out-of-balance force| against the "
+                      "largest external or internal force, reactions "
+                      "included. Newton needs residual or displacements: "
+                      "past collapse its stress excess grows without bound "
+                      "and the body-load test would pass.");
+    prm.declare_entry("Tolerance",
+                      "1e-4",
+                      Patterns::Double(0),
+                      "TOL of the convergence criterion. Thin interfaces "
+                      "need tight values (the paper's main finding).");
+    prm.declare_entry("Maximum iterations",
+                      "250",
+                      Patterns::Integer(1),
+                      "Iterations per load step; a step that reaches the "
+                      "limit has failed (collapse).");
+    prm.declare_entry("Linear solver",
+                      "cholmod",
+                      Patterns::Selection(linear_solver_names.pattern()),
+                      "The direct solver of the stiffness, factorised once "
+                      "per analysis: cholmod (sparse Cholesky, the stiffness "
+                      "being symmetric positive definite) or umfpack (LU).");
+    prm.declare_entry("Continue after failure",
+                      "false",
+                      Patterns::Bool(),
+                      "Go on with the next load step after a failed one "
+                      "(true), or stop the analysis there (false).");
+    prm.leave_subsection();
+  }
+
+
+  void
+  SolverParameters::parse(ParameterHandler &prm, const std::string &file)
+  {
+    prm.enter_subsection("Solver");
+    method                = method_names.value(prm.get("Method"));
+    anderson_depth        = prm.get_integer("Anderson depth");
+    max_cut_backs         = prm.get_integer("Maximum cut-backs");
+    max_newton_iterations = prm.get_integer("Maximum Newton iterations");
+    convergence_criterion =
+      criterion_names.value(prm.get("Convergence criterion"));
+    if (method == Method::viscoplastic &&
+        convergence_criterion == ConvergenceCriterion::residual)
+      throw InputError(file,
+                       "Solver/Convergence criterion",
+                       "'body loads' or 'displacements' for the "
+                       "viscoplastic method, whose stresses are in "
+                       "equilibrium at every iteration (its out-of-balance "
+                       "is the change of the body loads), not 'residual'");
+    if (method == Method::newton &&
+        convergence_criterion == ConvergenceCriterion::body_loads)
+      throw InputError(file,
+                       "Solver/Convergence criterion",
+                       "'residual' or 'displacements' for Newton, not "
+                       "'body loads': past collapse the stress excess "
+                       "grows without bound and that test would pass");
+    tolerance              = positive(prm, "Tolerance", file, "Solver");
+    max_iterations         = prm.get_integer("Maximum iterations");
+    continue_after_failure = prm.get_bool("Continue after failure");
+    linear_solver = linear_solver_names.value(prm.get("Linear solver"));
+    prm.leave_subsection();
+  }
+
+
+  const NameTable<MonitorParameters::LoadMeasure>
+    MonitorParameters::load_measure_names = {
+      {LoadMeasure::load_factor, "load factor"},
+      {LoadMeasure::reaction, "reaction"},
+      {LoadMeasure::stress_average, "stress average"}};
+
+  const NameTable<MonitorParameters::DisplacementMeasure>
+    MonitorParameters::displacement_measure_names = {
+      {DisplacementMeasure::boundary_average, "boundary average"},
+      {DisplacementMeasure::point, "point"}};
+
+
+  void
+  MonitorParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Monitors");
+    prm.declare_entry("Load measure",
+                      "load factor",
+                      Patterns::Selection(load_measure_names.pattern()),
+                      "What the 'load' column reports: the load factor; "
+                      "the sum of reactions on 'Load boundary id' in "
+                      "'Load component'; or the average of 'Load stress "
+                      "component' over 'Load material id'. Each is "
+                      "multiplied by 'Load scale' (e.g. a length).");
+    prm.declare_entry("Load scale",
+                      "1",
+                      Patterns::Double(),
+                      "Factor applied to the load measure (e.g. the area a "
+                      "unit traction acts on, or -1 for a sign).");
+    prm.declare_entry("Load boundary id",
+                      "0",
+                      Patterns::Integer(0),
+                      "Boundary id whose reactions are summed.");
+    prm.declare_entry("Load component",
+                      "y",
+                      Patterns::Selection("x|y"),
+                      "Direction of the summed reactions.");
+    prm.declare_entry("Load material id",
+                      "0",
+                      Patterns::Integer(0),
+                      "Material id over which a stress is averaged.");
+    prm.declare_entry("Load stress component",
+                      "xx",
+                      Patterns::Selection("xx|yy|zz|xy"),
+                      "The averaged stress component (tension positive).");
+    prm.declare_entry("Displacement measure",
+                      "boundary average",
+                      Patterns::Selection(displacement_measure_names.pattern()),
+                      "What the 'displacement' column reports: the "
+                      "average over 'Displacement boundary id', or the "
+                      "value at 'Displacement point'.");
+    prm.declare_entry("Displacement angle",
+                      "0",
+                      Patterns::Double(0, 360),
+                      "Fourier: the angle (degrees) at which the "
+                      "displacement is monitored; x is then the Cartesian "
+                      "component in the direction theta = 0, y the one "
+                      "along the axis.");
+    prm.declare_entry("Displacement point",
+                      "0, 0",
+                      Patterns::List(Patterns::Double(), 2, 2),
+                      "The point x, y for the point measure.");
+    prm.declare_entry("Displacement boundary id",
+                      "0",
+                      Patterns::Integer(0),
+                      "Boundary id over which the displacement is "
+                      "averaged (length-weighted); min and max over its "
+                      "nodes are reported too.");
+    prm.declare_entry("Displacement component",
+                      "y",
+                      Patterns::Selection("x|y"),
+                      "Component of the monitored displacement.");
+    prm.declare_entry("Displacement scale",
+                      "1",
+                      Patterns::Double(),
+                      "Factor applied to the monitored displacement (e.g. "
+                      "-1 to report settlement as positive).");
+    prm.leave_subsection();
+  }
+
+
+  void
+  MonitorParameters::parse(ParameterHandler           &prm,
+                           const std::string          &file,
+                           const KinematicsParameters &kinematics)
+  {
+    prm.enter_subsection("Monitors");
+    load_measure     = load_measure_names.value(prm.get("Load measure"));
+    load_material_id = prm.get_integer("Load material id");
+    const std::string component = prm.get("Load stress component");
+    load_stress_component       = {component[0] == 'x' ? 0u : 1u,
+                             component[1] == 'x'   ? 0u
+                                   : component[1] == 'y' ? 1u
+                                                         : 2u};
+    if (component == "zz")
+      load_stress_component = {2u, 2u};
+    displacement_angle =
+      prm.get_double("Displacement angle") * numbers::PI / 180;
+    if (kinematics.fourier && load_measure != LoadMeasure::load_factor)
+      throw InputError(file,
+                       "Monitors/Load measure",
+                       "expected 'load factor' with Fourier kinematics "
+                       "(reactions and stress averages are plane-strain "
+                       "measures so far)");
+    displacement_measure =
+      displacement_measure_names.value(prm.get("Displacement measure"));
+    displacement_point.clear();
+    for (const auto &x :
+         Utilities::split_string_list(prm.get("Displacement point")))
+      displacement_point.push_back(std::stod(x));
+    load_scale               = prm.get_double("Load scale");
+    load_boundary_id         = prm.get_integer("Load boundary id");
+    load_component           = (prm.get("Load component") == "x") ? 0 : 1;
+    displacement_boundary_id = prm.get_integer("Displacement boundary id");
+    displacement_component = (prm.get("Displacement component") == "x") ? 0 : 1;
+    displacement_scale     = prm.get_double("Displacement scale");
+    prm.leave_subsection();
+  }
+
+
+  void
+  ReferenceParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Reference");
+    prm.declare_entry(
+      "Analytic load",
+      "",
+      Patterns::Anything(),
+      "Closed-form value the final load is compared with, as an "
+      "expression of the geometry parameters (e.g. "
+      "'1/(sin(alpha*pi/180)*cos(alpha*pi/180))'); empty for none.");
+    prm.leave_subsection();
+  }
+
+
+  void
+  ReferenceParameters::parse(ParameterHandler     &prm,
+                             const std::string    &file,
+                             const MeshParameters &mesh)
+  {
+    prm.enter_subsection("Reference");
+    const std::string reference = prm.get("Analytic load");
+    analytic_load               = std::numeric_limits<double>::quiet_NaN();
+    if (!Utilities::trim(reference).empty())
+      {
+        check_expressions(reference,
+                          1,
+                          false,
+                          mesh.geometry_parameters,
+                          file,
+                          "Reference/Analytic load");
+        FunctionParser<2> f(1);
+        auto              constants = mesh.geometry_parameters;
+        constants["pi"]             = numbers::PI;
+        f.initialize("x,y", reference, constants);
+        analytic_load = f.value(Point<2>());
+        if (!std::isfinite(analytic_load) || analytic_load == 0)
+          throw InputError(file,
+                           "Reference/Analytic load",
+                           "expected a finite, non-zero value, got " +
+                             std::to_string(analytic_load));
+      }
+    prm.leave_subsection();
+  }
+
+
+  void
+  SweepParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Sweep");
+    prm.declare_entry(
+      "Values",
+      "",
+      Patterns::Anything(),
+      "Rerun the scene for every combination of values: "
+      "'name = v1, v2, ...; name = ...'. A name with a '/' is an entry "
+      "('Solver/Tolerance = 1e-3, 1e-6'), any other a geometry parameter "
+      "('alpha = 10, 20, 30'). Braces group a value that is a list "
+      "('Kinematics/Harmonics = {1}, {1, 3}'). Each run writes into run-NNN "
+      "of the output "
+      "directory, and sweep.csv there gets one row per run. Empty: one "
+      "run.");
+    prm.leave_subsection();
+  }
+
+
+  void
+  SweepParameters::parse(ParameterHandler &prm, const std::string &file)
+  {
+    prm.enter_subsection("Sweep");
+    values = parse_sweep(prm.get("Values"), file);
+    prm.leave_subsection();
+  }
+
+
+  void
+  OutputParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    prm.declare_entry("Directory",
+                      "output",
+                      Patterns::Anything(),
+                      "Where results go, relative to the working "
+                      "directory; created if missing.");
+    prm.declare_entry("Write VTU",
+                      "true",
+                      Patterns::Bool(),
+                      "Write VTU/PVD fields for ParaView at every step.");
+    prm.declare_entry("VTU subdivisions",
+                      "2",
+                      Patterns::Integer(1, 8),
+                      "Patches per cell edge in VTU output (2 shows the "
+                      "quadratic fields).");
+    prm.declare_entry("Print timing",
+                      "true",
+                      Patterns::Bool(),
+                      "Print wall time and the timer table on screen "
+                      "(timings always go to summary.json).");
+    prm.leave_subsection();
+  }
+
+
+  void
+  OutputParameters::parse(ParameterHandler &prm, const std::string &file)
+  {
+    prm.enter_subsection("Output");
+    directory = prm.get("Directory");
+    if (directory.empty())
+      throw InputError(file, "Output/Directory", "expected a directory");
+    write_vtu        = prm.get_bool("Write VTU");
+    vtu_subdivisions = prm.get_integer("VTU subdivisions");
+    print_timing     = prm.get_bool("Print timing");
+    prm.leave_subsection();
+  }
+} // namespace thinlayer

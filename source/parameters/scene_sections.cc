@@ -1,0 +1,442 @@
+#include <deal.II/base/utilities.h>
+
+#include <thinlayer/input_error.h>
+#include <thinlayer/parameter_checks.h>
+#include <thinlayer/parameters.h>
+
+#include <algorithm>
+#include <cmath>
+#include <regex>
+
+// The sections that describe the model: mesh, kinematics, discretisation,
+// materials and boundaries.
+
+namespace thinlayer
+{
+  namespace
+  {
+    std::string
+    directory_of(const std::string &file)
+    {
+      const auto slash = file.find_last_of('/');
+      return slash == std::string::npos ? std::string(".")
+                                        : file.substr(0, slash);
+    }
+
+    /// Parse 'name=value, name=value' (the geometry parameters).
+    std::map<std::string, double>
+    parse_geometry_parameters(const std::string &text, const std::string &file)
+    {
+      const std::string             entry = "Mesh/Geometry parameters";
+      std::map<std::string, double> result;
+      const std::regex              identifier("[A-Za-z_][A-Za-z0-9_]*");
+      for (const auto &pair : Utilities::split_string_list(text, ','))
+        {
+          const auto equal = pair.find('=');
+          if (equal == std::string::npos)
+            throw InputError(file,
+                             entry,
+                             "expected 'name=value' pairs, got '" + pair + "'");
+          const std::string name  = Utilities::trim(pair.substr(0, equal));
+          const std::string value = Utilities::trim(pair.substr(equal + 1));
+          if (!std::regex_match(name, identifier))
+            throw InputError(file,
+                             entry,
+                             "expected a parameter name (letters, digits, "
+                             "'_'), got '" +
+                               name + "'");
+          if (name == "x" || name == "y" || name == "z" || name == "pi")
+            throw InputError(file,
+                             entry,
+                             "'" + name +
+                               "' is reserved for expressions; choose "
+                               "another parameter name");
+          try
+            {
+              std::size_t used = 0;
+              result[name]     = std::stod(value, &used);
+              if (used != value.size())
+                throw std::invalid_argument(value);
+            }
+          catch (const std::exception &)
+            {
+              throw InputError(file,
+                               entry,
+                               "expected a number for '" + name + "', got '" +
+                                 value + "'");
+            }
+        }
+      return result;
+    }
+
+
+    std::vector<bool>
+    parse_components(const std::string &text,
+                     const bool         fourier,
+                     const std::string &file,
+                     const std::string &entry)
+    {
+      const std::vector<std::string> names =
+        fourier ? std::vector<std::string>{"r", "z", "theta"}
+                : std::vector<std::string>{"x", "y"};
+      std::vector<bool> result(names.size(), false);
+      for (const auto &c : Utilities::split_string_list(text, ','))
+        {
+          const auto k = std::find(names.begin(), names.end(), c);
+          if (k == names.end())
+            throw InputError(
+              file,
+              entry,
+              std::string("expected a comma-separated list of ") +
+                (fourier ? "r, z, theta" : "x, y") + ", got '" + c + "'");
+          result[k - names.begin()] = true;
+        }
+      return result;
+    }
+  } // namespace
+
+
+  void
+  MeshParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh");
+    prm.declare_entry("File",
+                      "",
+                      Patterns::Anything(),
+                      "A gmsh geometry (.geo, meshed with gmsh) or mesh "
+                      "(.msh), relative to this parameter file. Physical "
+                      "surfaces become material ids, physical curves "
+                      "boundary ids; cells must be quadrilaterals.");
+    prm.declare_entry(
+      "Geometry parameters",
+      "",
+      Patterns::Anything(),
+      "Values for the DefineConstant[] parameters of the .geo file, as "
+      "'name=value, name=value'. They are also constants in every "
+      "expression of this file.");
+    prm.leave_subsection();
+  }
+
+
+  void
+  MeshParameters::parse(ParameterHandler  &prm,
+                        const std::string &parameter_file)
+  {
+    prm.enter_subsection("Mesh");
+    const std::string mesh = prm.get("File");
+    if (mesh.empty())
+      throw InputError(parameter_file,
+                       "Mesh/File",
+                       "expected a .geo or .msh file");
+    file =
+      (mesh.front() == '/') ? mesh : directory_of(parameter_file) + "/" + mesh;
+    geometry_parameters =
+      parse_geometry_parameters(prm.get("Geometry parameters"), parameter_file);
+    prm.leave_subsection();
+  }
+
+
+  void
+  KinematicsParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Kinematics");
+    prm.declare_entry("Type",
+                      "plane strain",
+                      Patterns::Selection("plane strain|fourier"),
+                      "plane strain: the mesh is a cross-section, "
+                      "components x, y. fourier: the mesh is the r-z plane "
+                      "of an axisymmetric body (x = r >= 0, y = z the "
+                      "axis) and the load need not be axisymmetric: the "
+                      "displacement is a sum of Fourier harmonics, "
+                      "components r, z, theta.");
+    prm.declare_entry("Harmonics",
+                      "1",
+                      Patterns::List(Patterns::Integer(0), 1),
+                      "Fourier: the harmonics n in the series (a lateral "
+                      "load on a disc is n = 1; 1, 3 as in the paper).");
+    prm.declare_entry("Series",
+                      "symmetric",
+                      Patterns::Selection("symmetric|antisymmetric"),
+                      "Fourier: symmetric about theta = 0 (u_r, u_z with "
+                      "cos n theta, u_theta with sin n theta), or "
+                      "antisymmetric (cos and sin swapped; n = 0 is "
+                      "torsion).");
+    prm.declare_entry("Stations",
+                      "0, 45, 90, 135, 180",
+                      Patterns::List(Patterns::Double(0, 180), 2),
+                      "Fourier: the angles (degrees, from 0 to 180, "
+                      "equally spaced for an exact projection) at which "
+                      "the material is evaluated.");
+    prm.declare_entry("Axis boundary id",
+                      "-1",
+                      Patterns::Integer(-1),
+                      "Fourier: the boundary id on the axis r = 0, where "
+                      "each harmonic gets the conditions that keep the "
+                      "field single-valued; -1 if the mesh does not reach "
+                      "the axis.");
+    prm.leave_subsection();
+  }
+
+
+  void
+  KinematicsParameters::parse(ParameterHandler  &prm,
+                              const std::string &parameter_file)
+  {
+    const std::string &file = parameter_file;
+    prm.enter_subsection("Kinematics");
+    fourier = (prm.get("Type") == "fourier");
+    harmonics.clear();
+    for (const auto &n : Utilities::split_string_list(prm.get("Harmonics")))
+      {
+        const unsigned int h = std::stoul(n);
+        if (std::find(harmonics.begin(), harmonics.end(), h) != harmonics.end())
+          throw InputError(file,
+                           "Kinematics/Harmonics",
+                           "expected each harmonic once, got " + n + " twice");
+        harmonics.push_back(h);
+      }
+    antisymmetric = (prm.get("Series") == "antisymmetric");
+    station_angles.clear();
+    for (const auto &a : Utilities::split_string_list(prm.get("Stations")))
+      station_angles.push_back(std::stod(a) * numbers::PI / 180);
+    for (unsigned int s = 1; s < station_angles.size(); ++s)
+      if (!(station_angles[s] > station_angles[s - 1]))
+        throw InputError(file,
+                         "Kinematics/Stations",
+                         "expected increasing angles, got " +
+                           prm.get("Stations"));
+    if (std::abs(station_angles.front()) > 1e-12 ||
+        std::abs(station_angles.back() - numbers::PI) > 1e-12)
+      throw InputError(file,
+                       "Kinematics/Stations",
+                       "expected angles from 0 to 180 degrees, got " +
+                         prm.get("Stations"));
+    axis_boundary_id = prm.get_integer("Axis boundary id");
+    if (!fourier)
+      {
+        harmonics      = {0};
+        station_angles = {0};
+      }
+    prm.leave_subsection();
+  }
+
+
+  void
+  DiscretisationParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Discretisation");
+    prm.declare_entry("Element",
+                      "Q8",
+                      Patterns::Selection("Q8|Q9"),
+                      "Q8: 8-node serendipity quadrilateral (a Q2 element "
+                      "whose centre node is constrained); Q9: Lagrangian "
+                      "9-node quadrilateral.");
+    prm.declare_entry("Gauss points per direction",
+                      "2",
+                      Patterns::Integer(2, 3),
+                      "2: reduced 2x2 integration, as in the paper; 3: full "
+                      "3x3 integration.");
+    prm.leave_subsection();
+  }
+
+
+  void
+  DiscretisationParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Discretisation");
+    serendipity                = (prm.get("Element") == "Q8");
+    gauss_points_per_direction = prm.get_integer("Gauss points per direction");
+    prm.leave_subsection();
+  }
+
+
+  const NameTable<YieldCriterion> MaterialParameters::yield_criterion_names = {
+    {YieldCriterion::elastic, "elastic"},
+    {YieldCriterion::tresca, "tresca"},
+    {YieldCriterion::von_mises, "von mises"},
+    {YieldCriterion::mohr_coulomb, "mohr-coulomb"}};
+
+
+  std::string
+  MaterialParameters::section(const unsigned int id)
+  {
+    return "Material " + std::to_string(id);
+  }
+
+
+  void
+  MaterialParameters::declare(ParameterHandler &prm, const unsigned int id)
+  {
+    prm.enter_subsection(section(id));
+    prm.declare_entry("Name",
+                      "",
+                      Patterns::Anything(),
+                      "A name for this material id (the gmsh physical "
+                      "surface with the same number), used in output.");
+    prm.declare_entry("Young's modulus",
+                      "1e5",
+                      Patterns::Double(),
+                      "Young's modulus E (> 0).");
+    prm.declare_entry("Poisson's ratio",
+                      "0.3",
+                      Patterns::Double(),
+                      "Poisson's ratio nu, in (-1, 0.5).");
+    prm.declare_entry("Yield criterion",
+                      "elastic",
+                      Patterns::Selection(yield_criterion_names.pattern()),
+                      "elastic: never yields; tresca: (sigma_1 - sigma_3)/2 "
+                      "= c; von mises: sqrt(3 J2) = sqrt(3) c (matched to "
+                      "Tresca in plane strain); mohr-coulomb: c, friction "
+                      "and dilation angles. Perfectly plastic.");
+    prm.declare_entry("Cohesion",
+                      "0",
+                      Patterns::Double(0),
+                      "Shear strength c: the adhesion C_w of an interface, "
+                      "the undrained strength c_u of a Tresca soil.");
+    prm.declare_entry("Friction angle",
+                      "0",
+                      Patterns::Double(0, 89),
+                      "Mohr-Coulomb friction angle phi in degrees.");
+    prm.declare_entry("Dilation angle",
+                      "0",
+                      Patterns::Double(0, 89),
+                      "Mohr-Coulomb dilation angle psi in degrees, at most "
+                      "phi (psi = phi is associated flow).");
+    prm.leave_subsection();
+  }
+
+
+  void
+  MaterialParameters::parse(ParameterHandler  &prm,
+                            const std::string &file,
+                            const unsigned int id)
+  {
+    const std::string section = MaterialParameters::section(id);
+    prm.enter_subsection(section);
+    name           = prm.get("Name");
+    youngs_modulus = positive(prm, "Young's modulus", file, section);
+    poissons_ratio = prm.get_double("Poisson's ratio");
+    if (!(poissons_ratio > -1 && poissons_ratio < 0.5))
+      throw InputError(file,
+                       section + "/Poisson's ratio",
+                       "expected a value in (-1, 0.5), got " +
+                         prm.get("Poisson's ratio"));
+    const std::string criterion = prm.get("Yield criterion");
+    yield_criterion             = yield_criterion_names.value(criterion);
+    cohesion                    = prm.get_double("Cohesion");
+    friction_angle              = prm.get_double("Friction angle");
+    dilation_angle              = prm.get_double("Dilation angle");
+    if ((yield_criterion == YieldCriterion::tresca ||
+         yield_criterion == YieldCriterion::von_mises) &&
+        !(cohesion > 0))
+      throw InputError(file,
+                       section + "/Cohesion",
+                       "expected a value > 0 for the " + criterion +
+                         " criterion, got " + prm.get("Cohesion"));
+    if (yield_criterion == YieldCriterion::mohr_coulomb &&
+        !(cohesion > 0 || friction_angle > 0))
+      throw InputError(file,
+                       section + "/Friction angle",
+                       "expected a friction angle > 0 where the "
+                       "cohesion is 0 (the material would have no "
+                       "strength)");
+    if (dilation_angle > friction_angle)
+      throw InputError(file,
+                       section + "/Dilation angle",
+                       "expected at most the friction angle (" +
+                         prm.get("Friction angle") + "), got " +
+                         prm.get("Dilation angle"));
+    prm.leave_subsection();
+  }
+
+
+  std::string
+  BoundaryParameters::section(const unsigned int id)
+  {
+    return "Boundary " + std::to_string(id);
+  }
+
+
+  void
+  BoundaryParameters::declare(ParameterHandler &prm, const unsigned int id)
+  {
+    prm.enter_subsection(section(id));
+    prm.declare_entry("Name",
+                      "",
+                      Patterns::Anything(),
+                      "A name for this boundary id (the gmsh physical curve "
+                      "with the same number), used in output.");
+    prm.declare_entry("Constrained components",
+                      "",
+                      Patterns::Anything(),
+                      "Comma-separated components whose displacement is "
+                      "prescribed here: any of x, y in plane strain; of r, "
+                      "z, theta for Fourier kinematics (every harmonic); "
+                      "empty for none.");
+    prm.declare_entry(
+      "Displacement",
+      "0",
+      Patterns::Anything(),
+      "Prescribed displacement per unit load factor of the constrained "
+      "components: one function expression of x, y (and the geometry "
+      "parameters) per component, separated by ';', or one expression "
+      "for all components. For Fourier kinematics: the Cartesian "
+      "components x; y; z (z along the axis) as expressions of r, z, "
+      "theta, decomposed into the harmonics. Where boundary ids share a "
+      "node, the lowest "
+      "id's value wins.");
+    prm.declare_entry("Traction",
+                      "0",
+                      Patterns::Anything(),
+                      "Cartesian traction per unit load factor: expressions "
+                      "as for the displacement (for Fourier kinematics "
+                      "decomposed into the harmonics; a uniform horizontal "
+                      "traction on a disc loads harmonic 1 only).");
+    prm.declare_entry("Pressure",
+                      "0",
+                      Patterns::Anything(),
+                      "Normal pressure per unit load factor, positive into "
+                      "the body: one expression of x, y (r, z, theta for "
+                      "Fourier kinematics).");
+    prm.leave_subsection();
+  }
+
+
+  void
+  BoundaryParameters::parse(ParameterHandler           &prm,
+                            const std::string          &file,
+                            const unsigned int          id,
+                            const KinematicsParameters &kinematics,
+                            const MeshParameters       &mesh)
+  {
+    const std::string section = BoundaryParameters::section(id);
+    const bool        fourier = kinematics.fourier;
+    prm.enter_subsection(section);
+    name = prm.get("Name");
+    constrained_components =
+      parse_components(prm.get("Constrained components"),
+                       fourier,
+                       file,
+                       section + "/Constrained components");
+    displacement                 = prm.get("Displacement");
+    traction                     = prm.get("Traction");
+    pressure                     = prm.get("Pressure");
+    const unsigned int n_vector  = fourier ? 3 : 2;
+    const auto        &constants = mesh.geometry_parameters;
+    check_expressions(displacement,
+                      n_vector,
+                      fourier,
+                      constants,
+                      file,
+                      section + "/Displacement");
+    check_expressions(
+      traction, n_vector, fourier, constants, file, section + "/Traction");
+    check_expressions(
+      pressure, 1, fourier, constants, file, section + "/Pressure");
+    if (Utilities::split_string_list(pressure, ';').size() != 1)
+      throw InputError(file,
+                       section + "/Pressure",
+                       "expected a single expression");
+    prm.leave_subsection();
+  }
+} // namespace thinlayer

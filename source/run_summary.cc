@@ -1,0 +1,166 @@
+#include <thinlayer/run_summary.h>
+#include <thinlayer/text_format.h>
+
+#include <limits>
+#include <string>
+
+namespace thinlayer
+{
+  namespace
+  {
+    /// Writes the figures as the members of a JSON object.
+    struct JsonWriter
+    {
+      std::string text;
+
+      void
+      member(const std::string &name, const std::string &json_value)
+      {
+        text += (text.empty() ? "{\n" : ",\n") + std::string("  ") +
+                text_format::json_string(name) + ": " + json_value;
+      }
+
+      void
+      operator()(const std::string &name, const double value)
+      {
+        member(name, text_format::json_number(value));
+      }
+
+      void
+      operator()(const std::string &name, const unsigned int value)
+      {
+        member(name, std::to_string(value));
+      }
+
+      void
+      operator()(const std::string &name, const bool value)
+      {
+        member(name, value ? "true" : "false");
+      }
+
+      void
+      operator()(const std::string &name, const std::string &value)
+      {
+        member(name, text_format::json_string(value));
+      }
+
+      void
+      operator()(const std::string                   &name,
+                 const std::map<std::string, double> &values)
+      {
+        std::string object;
+        for (const auto &[key, value] : values)
+          object += (object.empty() ? "{\n" : ",\n") + std::string("    ") +
+                    text_format::json_string(key) + ": " +
+                    text_format::json_number(value);
+        member(name, object.empty() ? "{\n  }" : object + "\n  }");
+      }
+    };
+
+
+    /// Writes the names or the values of the single-valued figures as CSV
+    /// fields (nested figures are left to summary.json).
+    struct CsvWriter
+    {
+      enum class Content
+      {
+        names,
+        values,
+        /// A run that stopped with an error: not converged, no values.
+        error
+      };
+      Content     content;
+      std::string text;
+
+      void
+      field(const std::string &name, const std::string &value)
+      {
+        text += (text.empty() ? "" : ",") +
+                (content == Content::names    ? text_format::csv_field(name)
+                 : content == Content::values ? value
+                                              : std::string());
+      }
+
+      void
+      operator()(const std::string &name, const double value)
+      {
+        field(name, text_format::csv_number(value));
+      }
+
+      void
+      operator()(const std::string &name, const unsigned int value)
+      {
+        field(name, std::to_string(value));
+      }
+
+      void
+      operator()(const std::string &name, const bool value)
+      {
+        if (content == Content::error)
+          text += (text.empty() ? "0" : ",0");
+        else
+          field(name, value ? "1" : "0");
+      }
+
+      void
+      operator()(const std::string &name, const std::string &value)
+      {
+        field(name, text_format::csv_field(value));
+      }
+
+      void
+      operator()(const std::string &, const std::map<std::string, double> &)
+      {}
+    };
+  } // namespace
+
+
+  RunSummary::RunSummary()
+    : last_converged_load(std::numeric_limits<double>::quiet_NaN())
+    , first_failed_load(std::numeric_limits<double>::quiet_NaN())
+    , reference_load(std::numeric_limits<double>::quiet_NaN())
+    , relative_error(std::numeric_limits<double>::quiet_NaN())
+    , final_displacement(std::numeric_limits<double>::quiet_NaN())
+    , final_displacement_min(std::numeric_limits<double>::quiet_NaN())
+    , final_displacement_max(std::numeric_limits<double>::quiet_NaN())
+    , seconds_per_substitution(std::numeric_limits<double>::quiet_NaN())
+    , seconds_per_iteration(std::numeric_limits<double>::quiet_NaN())
+    , wall_seconds(std::numeric_limits<double>::quiet_NaN())
+  {}
+
+
+  std::string
+  RunSummary::json() const
+  {
+    JsonWriter writer;
+    visit(writer);
+    return writer.text + "\n}\n";
+  }
+
+
+  std::string
+  RunSummary::csv_header()
+  {
+    CsvWriter writer{CsvWriter::Content::names, ""};
+    RunSummary().visit(writer);
+    return writer.text;
+  }
+
+
+  std::string
+  RunSummary::csv_row() const
+  {
+    CsvWriter writer{CsvWriter::Content::values, ""};
+    visit(writer);
+    return writer.text;
+  }
+
+
+  std::string
+  RunSummary::csv_error_row()
+  {
+    CsvWriter writer{CsvWriter::Content::error, ""};
+    RunSummary().visit(writer);
+    return writer.text;
+  }
+} // namespace thinlayer

@@ -1,0 +1,180 @@
+#include <thinlayer/solution_methods/return_mapping_method.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace thinlayer
+{
+  template <int dim>
+  ReturnMappingMethod<dim>::ReturnMappingMethod(
+    const SolverParameters &parameters,
+    Analysis<dim>          &analysis)
+    : parameters(parameters)
+    , analysis(analysis)
+  {}
+
+
+  template <int dim>
+  void
+  ReturnMappingMethod<dim>::initialize()
+  {
+    const Vector<double> zero(analysis.get_dof_handler().n_dofs());
+    correction.assign(analysis.n_modes(), zero);
+    previous_increment.assign(analysis.n_modes(), zero);
+  }
+
+
+  template <int dim>
+  unsigned int
+  ReturnMappingMethod<dim>::max_iterations() const
+  {
+    return parameters.max_iterations;
+  }
+
+
+  template <int dim>
+  unsigned int
+  ReturnMappingMethod<dim>::max_cut_backs() const
+  {
+    return 0;
+  }
+
+
+  template <int dim>
+  void
+  ReturnMappingMethod<dim>::start_attempt()
+  {}
+
+
+  template <int dim>
+  void
+  ReturnMappingMethod<dim>::keep_accepted_state()
+  {}
+
+
+  template <int dim>
+  void
+  ReturnMappingMethod<dim>::restore_accepted_state()
+  {}
+
+
+  template <int dim>
+  StepResult
+  ReturnMappingMethod<dim>::solve_step(const double new_load_factor)
+  {
+    StepResult   result{0, false, 0, 0};
+    const double total = new_load_factor - analysis.load_factor();
+    keep_accepted_state();
+
+    double size = total;
+    while (true)
+      {
+        const double start = analysis.load_factor();
+        const bool   last =
+          std::abs(start + size - new_load_factor) <= 1e-12 * std::abs(total);
+        const double target = last ? new_load_factor : start + size;
+        if (attempt(target, result))
+          {
+            if (last)
+              {
+                result.converged = true;
+                break;
+              }
+            // A converged part of a cut-back step.
+            analysis.accept_step(target);
+            keep_accepted_state();
+            size = std::min(size, new_load_factor - target);
+            continue;
+          }
+        if (result.cut_backs == max_cut_backs())
+          break; // failed: the last attempt's state is kept
+        ++result.cut_backs;
+        size /= 2;
+        restore_accepted_state();
+      }
+    return result;
+  }
+
+
+  template <int dim>
+  bool
+  ReturnMappingMethod<dim>::attempt(const double target, StepResult &result)
+  {
+    const double dlambda = target - analysis.load_factor();
+    for (unsigned int m = 0; m < analysis.n_modes(); ++m)
+      {
+        ModeState &mode     = analysis.mode(m);
+        mode.step_increment = mode.unit_prescribed_displacement;
+        mode.step_increment *= dlambda;
+      }
+    start_attempt();
+
+    ResidualNorms norms = analysis.evaluate_residual(target);
+    for (unsigned int k = 0; k < max_iterations(); ++k)
+      {
+        ++result.iterations;
+        if (!iterate(target, norms, result))
+          return false;
+        result.plastic_points = norms.n_yielding;
+        if (converged(norms))
+          return true;
+      }
+    return false;
+  }
+
+
+  template <int dim>
+  bool
+  ReturnMappingMethod<dim>::converged(const ResidualNorms &norms)
+  {
+    using Criterion        = SolverParameters::ConvergenceCriterion;
+    const double tolerance = parameters.tolerance;
+    if (norms.max <= 1e-10 * norms.forces)
+      return true;
+    switch (parameters.convergence_criterion)
+      {
+        case Criterion::body_loads:
+          return norms.max <= tolerance * norms.body_loads;
+        case Criterion::residual:
+          return norms.max <= tolerance * norms.forces;
+          case Criterion::displacements: {
+            double change = 0, size = 0;
+            for (unsigned int m = 0; m < analysis.n_modes(); ++m)
+              {
+                previous_increment[m] -= analysis.mode(m).step_increment;
+                change = std::max(change, previous_increment[m].linfty_norm());
+                size =
+                  std::max(size, analysis.mode(m).step_increment.linfty_norm());
+              }
+            return change <= tolerance * size;
+          }
+      }
+    return false;
+  }
+
+
+  template <int dim>
+  void
+  ReturnMappingMethod<dim>::elastic_corrections()
+  {
+    for (unsigned int m = 0; m < analysis.n_modes(); ++m)
+      {
+        ModeState &mode = analysis.mode(m);
+        correction[m]   = mode.residual;
+        mode.factorisation.solve(correction[m]);
+        mode.constraints.distribute(correction[m]);
+      }
+  }
+
+
+  template <int dim>
+  void
+  ReturnMappingMethod<dim>::remember_increments()
+  {
+    for (unsigned int m = 0; m < analysis.n_modes(); ++m)
+      previous_increment[m] = analysis.mode(m).step_increment;
+  }
+
+
+  template class ReturnMappingMethod<2>;
+} // namespace thinlayer
