@@ -172,6 +172,120 @@ namespace thinlayer
 
 
     /**
+     * What a return onto planes of the Mohr-Coulomb surface in
+     * principal-stress space needs: the principal trial stresses, the
+     * principal elasticity, the friction and dilation angles' sines, the
+     * strength c cos(phi) and the rounding slack of the tests.
+     */
+    struct PrincipalReturnData
+    {
+      const std::array<double, 3> &trial;
+      const double (&elasticity)[3][3];
+      double sin_phi;
+      double sin_psi;
+      double strength;
+      double slack;
+    };
+
+
+    /// Normal (or flow, with sin(psi)) of the plane of principal stresses
+    /// i > j: (e_i - e_j)/2 + (e_i + e_j)/2 sin(angle).
+    std::array<double, 3>
+    principal_plane(const unsigned int i,
+                    const unsigned int j,
+                    const double       sin_angle)
+    {
+      std::array<double, 3> v{{0, 0, 0}};
+      v[i] = 0.5 * (1 + sin_angle);
+      v[j] = 0.5 * (-1 + sin_angle);
+      return v;
+    }
+
+
+    double
+    dot(const std::array<double, 3> &a, const std::array<double, 3> &b)
+    {
+      return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    }
+
+
+    /**
+     * The return of the principal trial stresses onto the @p k (one or
+     * two) planes @p active: with perfect plasticity the planes are linear
+     * in the principal stresses, so it is one linear solve for the plastic
+     * multipliers. Fills @p sigma and the principal tangent
+     * @p P = d sigma / d trial; false if a multiplier is negative or, with
+     * @p check_order, the ordering s1 >= s2 >= s3 breaks.
+     */
+    bool
+    return_to_planes(
+      const unsigned int                                          k,
+      const std::array<std::pair<unsigned int, unsigned int>, 2> &active,
+      const bool                                                  check_order,
+      const PrincipalReturnData                                  &data,
+      std::array<double, 3>                                      &sigma,
+      double (&P)[3][3])
+    {
+      const std::array<double, 3> &st = data.trial;
+      const auto D_times = [&data](const std::array<double, 3> &v) {
+        std::array<double, 3> w;
+        for (unsigned int i = 0; i < 3; ++i)
+          w[i] = data.elasticity[i][0] * v[0] + data.elasticity[i][1] * v[1] +
+                 data.elasticity[i][2] * v[2];
+        return w;
+      };
+      std::array<std::array<double, 3>, 2> n, Dm;
+      for (unsigned int a = 0; a < k; ++a)
+        {
+          n[a] =
+            principal_plane(active[a].first, active[a].second, data.sin_phi);
+          Dm[a] = D_times(
+            principal_plane(active[a].first, active[a].second, data.sin_psi));
+        }
+      // A(a, b) = n_a . D m_b, and the multipliers A^-1 F_trial.
+      double A[2][2], Ainv[2][2], gamma[2];
+      for (unsigned int a = 0; a < k; ++a)
+        for (unsigned int b = 0; b < k; ++b)
+          A[a][b] = dot(n[a], Dm[b]);
+      if (k == 1)
+        Ainv[0][0] = 1 / A[0][0];
+      else
+        {
+          const double det = A[0][0] * A[1][1] - A[0][1] * A[1][0];
+          Ainv[0][0]       = A[1][1] / det;
+          Ainv[1][1]       = A[0][0] / det;
+          Ainv[0][1]       = -A[0][1] / det;
+          Ainv[1][0]       = -A[1][0] / det;
+        }
+      for (unsigned int a = 0; a < k; ++a)
+        {
+          gamma[a] = 0;
+          for (unsigned int b = 0; b < k; ++b)
+            gamma[a] += Ainv[a][b] * (dot(n[b], st) - data.strength);
+          if (gamma[a] < -data.slack / A[a][a])
+            return false;
+        }
+      sigma = st;
+      for (unsigned int a = 0; a < k; ++a)
+        for (unsigned int i = 0; i < 3; ++i)
+          sigma[i] -= gamma[a] * Dm[a][i];
+      if (check_order && (sigma[1] > sigma[0] + data.slack ||
+                          sigma[2] > sigma[1] + data.slack))
+        return false;
+      // d sigma / d trial = I - sum_ab D m_a Ainv_ab n_b^T.
+      for (unsigned int i = 0; i < 3; ++i)
+        for (unsigned int j = 0; j < 3; ++j)
+          {
+            P[i][j] = (i == j) ? 1 : 0;
+            for (unsigned int a = 0; a < k; ++a)
+              for (unsigned int b = 0; b < k; ++b)
+                P[i][j] -= Dm[a][i] * Ainv[a][b] * n[b][j];
+          }
+      return true;
+    }
+
+
+    /**
      * Mohr-Coulomb with cohesion c, friction angle phi and, for the plastic
      * potential, dilation angle psi:
      *   F = sigma_m sin(phi) + sigma_bar (cos(theta)/sqrt(3)
@@ -308,31 +422,12 @@ namespace thinlayer
           for (unsigned int j = 0; j < 3; ++j)
             Dp[i][j] = K - 2 * G / 3 + (i == j ? 2 * G : 0);
 
-        // Normal and flow of the plane of principal stresses i > j.
-        const auto plane = [](const unsigned int i,
-                              const unsigned int j,
-                              const double       sin_angle) {
-          std::array<double, 3> v{{0, 0, 0}};
-          v[i] = 0.5 * (1 + sin_angle);
-          v[j] = 0.5 * (-1 + sin_angle);
-          return v;
-        };
-        const auto dot = [](const std::array<double, 3> &a,
-                            const std::array<double, 3> &b) {
-          return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-        };
-        const auto D_times = [&Dp](const std::array<double, 3> &v) {
-          std::array<double, 3> w;
-          for (unsigned int i = 0; i < 3; ++i)
-            w[i] = Dp[i][0] * v[0] + Dp[i][1] * v[1] + Dp[i][2] * v[2];
-          return w;
-        };
         const double scale    = std::abs(st[0]) + std::abs(st[2]) + cohesion;
         const double slack    = 1e-12 * scale;
         const double strength = cohesion * cos_phi;
 
         // Tries the return onto the planes @p active (one or two); fills
-        // sigma and the principal tangent; false if a multiplier is
+        // sigma and the principal tangent P; false if a multiplier is
         // negative or the ordering breaks.
         std::array<double, 3> sigma;
         double                P[3][3];
@@ -341,53 +436,12 @@ namespace thinlayer
             const unsigned int                                          k,
             const std::array<std::pair<unsigned int, unsigned int>, 2> &active,
             const bool check_order) {
-            std::array<std::array<double, 3>, 2> n, Dm;
-            for (unsigned int a = 0; a < k; ++a)
-              {
-                n[a] = plane(active[a].first, active[a].second, sin_phi);
-                Dm[a] =
-                  D_times(plane(active[a].first, active[a].second, sin_psi));
-              }
-            // A(a, b) = n_a . D m_b, and the multipliers A^-1 F_trial.
-            double A[2][2], Ainv[2][2], gamma[2];
-            for (unsigned int a = 0; a < k; ++a)
-              for (unsigned int b = 0; b < k; ++b)
-                A[a][b] = dot(n[a], Dm[b]);
-            if (k == 1)
-              Ainv[0][0] = 1 / A[0][0];
-            else
-              {
-                const double det = A[0][0] * A[1][1] - A[0][1] * A[1][0];
-                Ainv[0][0]       = A[1][1] / det;
-                Ainv[1][1]       = A[0][0] / det;
-                Ainv[0][1]       = -A[0][1] / det;
-                Ainv[1][0]       = -A[1][0] / det;
-              }
-            for (unsigned int a = 0; a < k; ++a)
-              {
-                gamma[a] = 0;
-                for (unsigned int b = 0; b < k; ++b)
-                  gamma[a] += Ainv[a][b] * (dot(n[b], st) - strength);
-                if (gamma[a] < -slack / A[a][a])
-                  return false;
-              }
-            sigma = st;
-            for (unsigned int a = 0; a < k; ++a)
-              for (unsigned int i = 0; i < 3; ++i)
-                sigma[i] -= gamma[a] * Dm[a][i];
-            if (check_order &&
-                (sigma[1] > sigma[0] + slack || sigma[2] > sigma[1] + slack))
-              return false;
-            // d sigma / d trial = I - sum_ab D m_a Ainv_ab n_b^T.
-            for (unsigned int i = 0; i < 3; ++i)
-              for (unsigned int j = 0; j < 3; ++j)
-                {
-                  P[i][j] = (i == j) ? 1 : 0;
-                  for (unsigned int a = 0; a < k; ++a)
-                    for (unsigned int b = 0; b < k; ++b)
-                      P[i][j] -= Dm[a][i] * Ainv[a][b] * n[b][j];
-                }
-            return true;
+            return return_to_planes(k,
+                                    active,
+                                    check_order,
+                                    {st, Dp, sin_phi, sin_psi, strength, slack},
+                                    sigma,
+                                    P);
           };
 
         ReturnRegion region = ReturnRegion::surface;

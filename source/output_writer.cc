@@ -44,6 +44,76 @@ namespace thinlayer
   }
 
 
+  namespace
+  {
+    /**
+     * Cell averages of the point fields: the stresses live at Gauss points
+     * with their plastic history, not at nodes. Stress components at the
+     * first station; the equivalent stress, the equivalent plastic strain
+     * and the yield ratio at every station. The yield ratio is the cell's
+     * maximum, to show where drift into illegal stress space is.
+     */
+    struct CellFields
+    {
+      template <int dim>
+      explicit CellFields(const Analysis<dim> &analysis);
+
+      /// (i, j) of the four stress components written.
+      static constexpr unsigned int components[4][2] = {{0, 0},
+                                                        {1, 1},
+                                                        {2, 2},
+                                                        {0, 1}};
+      std::vector<Vector<double>>   stress;
+      std::vector<Vector<double>>   equivalent, plastic_strain, yield_ratio;
+      Vector<double>                material;
+    };
+
+
+    template <int dim>
+    CellFields::CellFields(const Analysis<dim> &analysis)
+    {
+      const auto        &tria = analysis.get_dof_handler().get_triangulation();
+      const unsigned int n_q  = analysis.n_quadrature_points();
+      const unsigned int n_cells = tria.n_active_cells();
+      const unsigned int n_s     = analysis.get_kinematics().n_stations();
+      stress.assign(4, Vector<double>(n_cells));
+      equivalent.assign(n_s, Vector<double>(n_cells));
+      plastic_strain.assign(n_s, Vector<double>(n_cells));
+      yield_ratio.assign(n_s, Vector<double>(n_cells));
+      material.reinit(n_cells);
+      for (const auto &cell : tria.active_cell_iterators())
+        {
+          const unsigned int c   = cell->active_cell_index();
+          const MaterialLaw &law = analysis.material_law(c);
+          for (unsigned int s = 0; s < n_s; ++s)
+            {
+              yield_ratio[s][c] = law.can_yield()
+                                    ? std::numeric_limits<double>::lowest()
+                                    : std::numeric_limits<double>::quiet_NaN();
+              for (unsigned int q = 0; q < n_q; ++q)
+                {
+                  const PointState &state = analysis.point_state(c, q, s);
+                  if (s == 0)
+                    for (unsigned int k = 0; k < 4; ++k)
+                      stress[k][c] +=
+                        state.stress[components[k][0]][components[k][1]] / n_q;
+                  equivalent[s][c] += equivalent_stress(state.stress) / n_q;
+                  // Equivalent plastic strain sqrt(2/3 e:e).
+                  plastic_strain[s][c] +=
+                    std::sqrt(2. / 3. *
+                              (state.plastic_strain * state.plastic_strain)) /
+                    n_q;
+                  if (law.can_yield())
+                    yield_ratio[s][c] = std::max(yield_ratio[s][c],
+                                                 law.yield_ratio(state.stress));
+                }
+            }
+          material[c] = cell->material_id();
+        }
+    }
+  } // namespace
+
+
   template <int dim>
   void
   OutputWriter::write_fields(const unsigned int   step,
@@ -51,18 +121,10 @@ namespace thinlayer
                              const Analysis<dim> &analysis,
                              const double         theta)
   {
-    const auto        &dof_handler = analysis.get_dof_handler();
-    const auto        &tria        = dof_handler.get_triangulation();
-    const Kinematics  &kinematics  = analysis.get_kinematics();
-    const unsigned int n_q         = analysis.n_quadrature_points();
-    const unsigned int n_cells     = tria.n_active_cells();
-    const bool         fourier     = kinematics.is_fourier();
-
-    // Cell averages of the point stresses: the stresses live at Gauss
-    // points with their plastic history, not at nodes. The yield ratio is
-    // the cell's maximum, to show where drift into illegal stress space is.
-    // Stress components at the first station; the plastic fields at every
-    // station (suffixed with its angle for Fourier kinematics).
+    const auto                    &dof_handler = analysis.get_dof_handler();
+    const Kinematics              &kinematics  = analysis.get_kinematics();
+    const bool                     fourier     = kinematics.is_fourier();
+    const CellFields               fields(analysis);
     const std::vector<std::string> names =
       fourier ? std::vector<std::string>{"stress_rr",
                                          "stress_zz",
@@ -72,42 +134,6 @@ namespace thinlayer
                                          "stress_yy",
                                          "stress_zz",
                                          "stress_xy"};
-    const unsigned int components[][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}};
-    std::vector<Vector<double>> stress(4, Vector<double>(n_cells));
-    const unsigned int          n_s = kinematics.n_stations();
-    std::vector<Vector<double>> equivalent(n_s, Vector<double>(n_cells)),
-      plastic_strain(n_s, Vector<double>(n_cells)),
-      yield_ratio(n_s, Vector<double>(n_cells));
-    Vector<double> material(n_cells);
-    for (const auto &cell : tria.active_cell_iterators())
-      {
-        const unsigned int c   = cell->active_cell_index();
-        const MaterialLaw &law = analysis.material_law(c);
-        for (unsigned int s = 0; s < n_s; ++s)
-          {
-            yield_ratio[s][c] = law.can_yield()
-                                  ? std::numeric_limits<double>::lowest()
-                                  : std::numeric_limits<double>::quiet_NaN();
-            for (unsigned int q = 0; q < n_q; ++q)
-              {
-                const PointState &state = analysis.point_state(c, q, s);
-                if (s == 0)
-                  for (unsigned int k = 0; k < 4; ++k)
-                    stress[k][c] +=
-                      state.stress[components[k][0]][components[k][1]] / n_q;
-                equivalent[s][c] += equivalent_stress(state.stress) / n_q;
-                // Equivalent plastic strain sqrt(2/3 e:e).
-                plastic_strain[s][c] +=
-                  std::sqrt(2. / 3. *
-                            (state.plastic_strain * state.plastic_strain)) /
-                  n_q;
-                if (law.can_yield())
-                  yield_ratio[s][c] =
-                    std::max(yield_ratio[s][c], law.yield_ratio(state.stress));
-              }
-          }
-        material[c] = cell->material_id();
-      }
 
     DataOut<dim> data_out;
     data_out.attach_dof_handler(dof_handler);
@@ -129,18 +155,20 @@ namespace thinlayer
                              DataOut<dim>::type_dof_data,
                              interpretation);
     for (unsigned int k = 0; k < 4; ++k)
-      data_out.add_data_vector(stress[k], names[k]);
-    for (unsigned int s = 0; s < n_s; ++s)
+      data_out.add_data_vector(fields.stress[k], names[k]);
+    for (unsigned int s = 0; s < kinematics.n_stations(); ++s)
       {
         const std::string suffix =
           fourier ? "_" + std::to_string(static_cast<int>(std::round(
                             kinematics.station_angle(s) * 180 / numbers::PI)))
                   : std::string();
-        data_out.add_data_vector(equivalent[s], "equivalent_stress" + suffix);
-        data_out.add_data_vector(plastic_strain[s], "plastic_strain" + suffix);
-        data_out.add_data_vector(yield_ratio[s], "yield_ratio" + suffix);
+        data_out.add_data_vector(fields.equivalent[s],
+                                 "equivalent_stress" + suffix);
+        data_out.add_data_vector(fields.plastic_strain[s],
+                                 "plastic_strain" + suffix);
+        data_out.add_data_vector(fields.yield_ratio[s], "yield_ratio" + suffix);
       }
-    data_out.add_data_vector(material, "material_id");
+    data_out.add_data_vector(fields.material, "material_id");
     data_out.build_patches(analysis.get_mapping(),
                            vtu_subdivisions,
                            DataOut<dim>::curved_inner_cells);

@@ -69,10 +69,20 @@ namespace thinlayer
           }
       }
 
+    pack(all_shape_strains, n_cells * n_q, n_modes);
+  }
+
+
+  void
+  StrainOperator::pack(
+    const std::vector<SymmetricTensor<2, 3>> &all_shape_strains,
+    const unsigned int                        n_points,
+    const unsigned int                        n_modes)
+  {
+    const unsigned int n = n_cell_dofs;
     // The non-zero pattern of each mode's and part's operator, over all
     // points, grouped by component.
-    const unsigned int n_points = n_cells * n_q;
-    const std::size_t  stride   = std::size_t(n_modes) * n * parts;
+    const std::size_t stride = std::size_t(n_modes) * n * parts;
     patterns.resize(n_modes * parts);
     entry_dof.clear();
     std::vector<unsigned int> entry_source; // (m * n + i) * parts + part

@@ -130,6 +130,16 @@ namespace thinlayer
     }
 
   private:
+    /**
+     * Keep of @p all_shape_strains (every strain part at every one of
+     * @p n_points points, for @p n_modes modes) the non-zero pattern of
+     * each mode's and part's operator and its values at every point.
+     */
+    void
+    pack(const std::vector<SymmetricTensor<2, 3>> &all_shape_strains,
+         const unsigned int                        n_points,
+         const unsigned int                        n_modes);
+
     /// The non-zero entries of one mode's and part's operator, grouped by
     /// component: entries [component_begin[k], component_begin[k+1]).
     struct Pattern
