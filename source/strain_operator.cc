@@ -122,24 +122,6 @@ namespace thinlayer
   }
 
 
-  void
-  StrainOperator::shape_strains(const unsigned int     point,
-                                const unsigned int     m,
-                                const unsigned int     part,
-                                SymmetricTensor<2, 3> *B) const
-  {
-    const Pattern &pattern = patterns[m * parts + part];
-    const double  *v       = point_values(point);
-    for (unsigned int i = 0; i < n_cell_dofs; ++i)
-      B[i] = 0;
-    for (unsigned int k = 0; k < 6; ++k)
-      for (unsigned int e = pattern.component_begin[k];
-           e < pattern.component_begin[k + 1];
-           ++e)
-        B[entry_dof[e]].access_raw_entry(k) = v[e];
-  }
-
-
   template void
   StrainOperator::reinit(const DoFHandler<2> &,
                          const Mapping<2> &,

@@ -81,7 +81,18 @@ namespace thinlayer
     shape_strains(const unsigned int     point,
                   const unsigned int     m,
                   const unsigned int     part,
-                  SymmetricTensor<2, 3> *B) const;
+                  SymmetricTensor<2, 3> *B) const
+    {
+      const Pattern &pattern = patterns[m * parts + part];
+      const double  *v       = point_values(point);
+      for (unsigned int i = 0; i < n_cell_dofs; ++i)
+        B[i] = 0;
+      for (unsigned int k = 0; k < 6; ++k)
+        for (unsigned int e = pattern.component_begin[k];
+             e < pattern.component_begin[k + 1];
+             ++e)
+          B[entry_dof[e]].access_raw_entry(k) = v[e];
+    }
 
     /// The strain part @p part of mode @p m at @p point for the cell's
     /// nodal values @p u of that mode: sum_i u_i B_i.

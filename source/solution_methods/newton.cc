@@ -174,6 +174,7 @@ namespace thinlayer
     const unsigned int    n_modes    = kinematics.n_modes();
     const unsigned int    n_stations = kinematics.n_stations();
     const unsigned int    n_local    = n_modes * n_cell;
+    const bool            two_parts  = (B.n_parts() == 2);
     // Per mode: the strain of each shape function at a station (T1 B1 +
     // T2 B2) and the tangent applied to it; then both as 6 rows of raw
     // components, the strains' shear rows doubled and weighted, so that
@@ -201,12 +202,12 @@ namespace thinlayer
                   {
                     SymmetricTensor<2, 3> *e = &strain[m * n_cell];
                     B.shape_strains(p, m, 0, e);
-                    if (B.n_parts() == 2)
+                    if (two_parts)
                       B.shape_strains(p, m, 1, part2.data());
                     for (unsigned int i = 0; i < n_cell; ++i)
                       {
                         e[i] *= kinematics.T1(m, s);
-                        if (B.n_parts() == 2)
+                        if (two_parts)
                           e[i] += kinematics.T2(m, s) * part2[i];
                         stress[m * n_cell + i] = C * e[i];
                       }
