@@ -54,7 +54,9 @@ namespace thinlayer
                     parameters.mesh.geometry_parameters,
                     kinematics)
     , time_step(std::numeric_limits<double>::infinity())
-    , accepted_load_factor(0)
+    , accepted_lambda(0)
+    , current_lambda(0)
+    , pending(false)
     , substitution_time(0)
   {
     static_assert(dim == 2,
@@ -380,10 +382,15 @@ namespace thinlayer
   Analysis<dim>::solve(const double new_load_factor)
   {
     StepResult result = method->solve_step(new_load_factor);
+    current_lambda    = new_load_factor;
+    pending           = true;
 
-    // The step's state is kept even if it failed, so that the mechanism at
-    // failure can be seen.
-    accept_step(new_load_factor);
+    for (const auto &mode : modes)
+      if (!std::isfinite(mode->step_increment.l1_norm()))
+        {
+          result.non_finite = true;
+          result.converged  = false;
+        }
     result.max_yield_ratio = std::numeric_limits<double>::quiet_NaN();
     for (unsigned int p = 0; p < history.size(); ++p)
       {
@@ -403,6 +410,15 @@ namespace thinlayer
 
   template <int dim>
   void
+  Analysis<dim>::accept_step()
+  {
+    Assert(pending, ExcMessage("There is no pending step to accept."));
+    accept_step(current_lambda);
+  }
+
+
+  template <int dim>
+  void
   Analysis<dim>::accept_step(const double load_factor)
   {
     for (auto &mode : modes)
@@ -414,7 +430,53 @@ namespace thinlayer
           state.plastic_strain += state.step_plastic_strain;
           state.step_plastic_strain = 0;
         }
-    accepted_load_factor = load_factor;
+    accepted_lambda = load_factor;
+    current_lambda  = load_factor;
+    pending         = false;
+    method->state_accepted();
+  }
+
+
+  template <int dim>
+  void
+  Analysis<dim>::reject_step()
+  {
+    for (auto &mode : modes)
+      mode->step_increment = 0;
+    for (PointHistory *point : history)
+      for (PointState &state : point->stations)
+        {
+          state.stress              = state.converged_stress;
+          state.step_plastic_strain = 0;
+        }
+    current_lambda = accepted_lambda;
+    pending        = false;
+    point_loop.compute_internal_forces(modes);
+    method->state_rejected();
+  }
+
+
+  template <int dim>
+  double
+  Analysis<dim>::secant_stiffness_ratio() const
+  {
+    const double   dlambda      = current_lambda - accepted_lambda;
+    double         elastic_work = 0, work = 0;
+    Vector<double> load(dof_handler.n_dofs()),
+      elastic_increment(dof_handler.n_dofs());
+    for (const auto &mode : modes)
+      {
+        load = mode->unit_rhs;
+        load *= dlambda;
+        mode->constraints.condense(load);
+        elastic_increment = load;
+        mode->factorisation.solve(elastic_increment);
+        elastic_work += load * elastic_increment;
+        work += load * mode->step_increment;
+      }
+    if (elastic_work == 0)
+      return std::numeric_limits<double>::quiet_NaN();
+    return elastic_work / work;
   }
 
 
@@ -465,10 +527,24 @@ namespace thinlayer
           increment ? modes[m]->step_increment : modes[m]->solution;
         const double t1 = kinematics.T1_at(m, theta);
         const double t2 = kinematics.T2_at(m, theta);
+        // A pending step's state is the accepted one plus its increment.
+        const bool add_increment = pending && !increment;
         for (unsigned int i = 0; i < u.size(); ++i)
-          u[i] += (dof_component[i] < 2 ? t1 : t2) * v[i];
+          u[i] += (dof_component[i] < 2 ? t1 : t2) *
+                  (add_increment ? v[i] + modes[m]->step_increment[i] : v[i]);
       }
     return u;
+  }
+
+
+  template <int dim>
+  bool
+  Analysis<dim>::has_external_load() const
+  {
+    for (const auto &mode : modes)
+      if (mode->unit_load.linfty_norm() > 0)
+        return true;
+    return false;
   }
 
 
@@ -476,7 +552,15 @@ namespace thinlayer
   double
   Analysis<dim>::load_factor() const
   {
-    return accepted_load_factor;
+    return current_lambda;
+  }
+
+
+  template <int dim>
+  double
+  Analysis<dim>::accepted_load_factor() const
+  {
+    return accepted_lambda;
   }
 
 

@@ -18,28 +18,30 @@ namespace thinlayer
   {
     std::filesystem::create_directories(directory);
     history.open(directory + "/history.csv");
-    history << "step,load_factor,load,displacement,displacement_min,"
-               "displacement_max,iterations,converged,max_yield_ratio,"
-               "plastic_points,cut_backs,factorisations\n";
+    history << "step,attempt,load_factor,load,displacement,displacement_min,"
+               "displacement_max,iterations,converged,accepted,"
+               "max_yield_ratio,plastic_points,cut_backs,factorisations,"
+               "stiffness_ratio,growth_ratio,non_finite\n";
   }
 
 
   void
   OutputWriter::write_history_row(const HistoryRow &row)
   {
-    // Loads and displacements as null where not finite, as summary.json
-    // has them; a yield ratio that does not exist (no material can
-    // yield) as empty.
-    const auto number   = text_format::json_number;
-    const auto optional = text_format::csv_number;
-    history << row.step << ',' << number(row.load_factor) << ','
-            << number(row.load) << ',' << number(row.displacement.mean) << ','
-            << number(row.displacement.min) << ','
+    // A value that is not a finite number (a yield ratio where no
+    // material can yield, a diverged step) as empty.
+    const auto number = text_format::csv_number;
+    history << row.step << ',' << row.attempt << ',' << number(row.load_factor)
+            << ',' << number(row.load) << ',' << number(row.displacement.mean)
+            << ',' << number(row.displacement.min) << ','
             << number(row.displacement.max) << ',' << row.result.iterations
             << ',' << (row.result.converged ? 1 : 0) << ','
-            << optional(row.result.max_yield_ratio) << ','
+            << (row.accepted ? 1 : 0) << ','
+            << number(row.result.max_yield_ratio) << ','
             << row.result.plastic_points << ',' << row.result.cut_backs << ','
-            << row.result.factorisations << '\n'
+            << row.result.factorisations << ',' << number(row.stiffness_ratio)
+            << ',' << number(row.result.growth_ratio) << ','
+            << (row.result.non_finite ? 1 : 0) << '\n'
             << std::flush;
   }
 

@@ -1,6 +1,7 @@
 #include <deal.II/base/timer.h>
 
 #include <thinlayer/analysis.h>
+#include <thinlayer/load_stepping.h>
 #include <thinlayer/monitors.h>
 #include <thinlayer/output_writer.h>
 #include <thinlayer/run.h>
@@ -22,21 +23,6 @@ namespace thinlayer
     {
       return std::filesystem::path(path).filename().string();
     }
-
-
-    /// What the load programme leaves behind.
-    struct ProgrammeResult
-    {
-      bool         converged           = true;
-      bool         any_step_converged  = false;
-      double       last_converged_load = 0;
-      double       first_failed_load = std::numeric_limits<double>::quiet_NaN();
-      unsigned int total_iterations  = 0;
-      unsigned int converged_iterations = 0;
-      unsigned int steps_run            = 0;
-      DisplacementMeasure displacement{0, 0, 0};
-      DisplacementMeasure converged_displacement{0, 0, 0};
-    };
 
 
     /// The model and its size, on screen. File names only: the full paths
@@ -71,77 +57,378 @@ namespace thinlayer
     }
 
 
-    /// The load programme, step by step, each step's row and fields
-    /// written as it ends, and one line of progress on screen.
-    ProgrammeResult
-    run_load_programme(const Parameters  &p,
-                       Analysis<2>       &analysis,
-                       const Monitors<2> &monitors,
-                       OutputWriter      &writer,
-                       TimerOutput       &timer,
-                       std::ostream      &out)
+    /**
+     * A failed step under load is a collapse only with a mechanism as
+     * evidence: its secant stiffness along the increment below this
+     * fraction of the elastic one, i.e. displacements at least ten times
+     * the elastic response to the same load increment.
+     */
+    constexpr double mechanism_stiffness_ratio = 0.1;
+
+    /**
+     * Or, for a step stopped by its iteration limit, the change of its
+     * displacement still growing linearly: at the end at least this many
+     * times the change at half the limit (2 for linear growth; a step
+     * converging at rate rho gives 1 + rho^(N/2)).
+     */
+    constexpr double mechanism_growth_ratio = 1.8;
+
+    /**
+     * Under prescribed displacement the load has reached its plateau when
+     * the last step's load change per load factor is below this fraction
+     * of the first step's.
+     */
+    constexpr double plateau_stiffness_ratio = 0.01;
+
+
+    /// What the load programme leaves behind.
+    struct ProgrammeResult
     {
-      ProgrammeResult run;
-      double          load_factor = 0;
-      for (unsigned int step = 1; step <= p.loading.load_increments.size();
-           ++step)
+      bool         converged           = true;
+      bool         any_step_converged  = false;
+      double       last_converged_load = 0;
+      double       first_failed_load = std::numeric_limits<double>::quiet_NaN();
+      unsigned int total_iterations  = 0;
+      unsigned int converged_iterations = 0;
+      unsigned int steps_run            = 0;
+      unsigned int attempts             = 0;
+      unsigned int steps_with_drift     = 0;
+      DisplacementMeasure displacement{0, 0, 0};
+      DisplacementMeasure converged_displacement{0, 0, 0};
+      /// The load per load factor of the first and of the last converged
+      /// step, for the plateau under prescribed displacement.
+      double first_stiffness = std::numeric_limits<double>::quiet_NaN();
+      double last_stiffness  = std::numeric_limits<double>::quiet_NaN();
+      double last_converged_load_factor = 0;
+
+      /// How a run that a failed step ended, ended.
+      bool   stopped            = false;
+      bool   non_finite         = false;
+      double failed_load_factor = std::numeric_limits<double>::quiet_NaN();
+      double stiffness_ratio    = std::numeric_limits<double>::quiet_NaN();
+      double growth_ratio       = std::numeric_limits<double>::quiet_NaN();
+      /// Where a probe beyond the failed step showed the mechanism.
+      double probe_load_factor = std::numeric_limits<double>::quiet_NaN();
+    };
+
+
+    /// One line of progress on screen for an attempt, as it ends. A failed
+    /// step's state is no equilibrium, and its numbers depend on rounding:
+    /// they go to history.csv (where the mechanism can be seen), not here.
+    void
+    print_attempt(const unsigned int       step,
+                  const double             load_factor,
+                  const double             load,
+                  const double             displacement,
+                  const StepResult        &result,
+                  const LoadStepping::Next next,
+                  std::ostream            &out)
+    {
+      out << "  step " << printf("%4.0f", step) << "  load factor "
+          << printf("%10.4g", load_factor);
+      if (result.converged)
+        out << "  load " << printf("%12.5e", load) << "  displacement "
+            << printf("%12.5e", displacement) << "  iterations "
+            << printf("%4.0f", result.iterations) << "  converged";
+      else if (next == LoadStepping::Next::retry)
+        out << "  failed: cut back (its state is in history.csv)";
+      else if (result.non_finite)
+        out << "  FAILED: not a finite number";
+      else
+        out << "  FAILED to converge (its state is in history.csv)";
+      out << std::endl;
+    }
+
+
+    /// Whether a failed attempt shows a mechanism.
+    bool
+    shows_mechanism(const double stiffness_ratio, const double growth_ratio)
+    {
+      return (stiffness_ratio >= 0 &&
+              stiffness_ratio < mechanism_stiffness_ratio) ||
+             growth_ratio >= mechanism_growth_ratio;
+    }
+
+
+    /**
+     * The load programme, attempt by attempt (LoadStepping), each
+     * attempt's row and fields written as it ends, and one line of progress
+     * on screen.
+     */
+    class Programme
+    {
+    public:
+      Programme(const Parameters  &p,
+                Analysis<2>       &analysis,
+                const Monitors<2> &monitors,
+                OutputWriter      &writer,
+                TimerOutput       &timer,
+                std::ostream      &out)
+        : p(p)
+        , analysis(analysis)
+        , monitors(monitors)
+        , writer(writer)
+        , timer(timer)
+        , out(out)
+      {}
+
+      ProgrammeResult
+      run();
+
+    private:
+      struct Attempt
+      {
+        unsigned int step;
+        double       load_factor;
+        StepResult   result;
+        double       load;
+        /// Failed attempts: Analysis::secant_stiffness_ratio().
+        double stiffness_ratio;
+      };
+
+      /// Solve the step to @p load_factor and measure it.
+      Attempt
+      attempt(const unsigned int step, const double load_factor);
+
+      /// Its row in history.csv, its fields unless it is to be retried,
+      /// and its line on screen.
+      void
+      record(const Attempt &a, const LoadStepping::Next next);
+
+      /// Take a converged attempt's figures and accept its state.
+      void
+      accept(const Attempt &a);
+
+      /**
+       * Automatic stepping ended at a failed step that shows no mechanism:
+       * at the limit load itself a method converges slowly rather than
+       * creeps. Try the same step once more beyond it, from the accepted
+       * state; a mechanism there is the evidence. The probe is never
+       * accepted.
+       */
+      void
+      probe_beyond(const Attempt &failed);
+
+      const Parameters  &p;
+      Analysis<2>       &analysis;
+      const Monitors<2> &monitors;
+      OutputWriter      &writer;
+      TimerOutput       &timer;
+      std::ostream      &out;
+      ProgrammeResult    result;
+    };
+
+
+    ProgrammeResult
+    Programme::run()
+    {
+      LoadStepping stepping(p.loading, p.solver.continue_after_failure);
+      while (!stepping.finished())
         {
-          load_factor += p.loading.load_increments[step - 1];
+          const Attempt a = attempt(stepping.step(), stepping.target());
+          const LoadStepping::Next next = stepping.report(a.result);
+          record(a, next);
+          if (next == LoadStepping::Next::retry)
+            {
+              analysis.reject_step();
+              continue;
+            }
+          ++result.steps_run;
+          if (a.result.converged)
+            {
+              accept(a);
+              continue;
+            }
+          // Non-convergence is a result, not an error.
+          if (result.converged)
+            result.first_failed_load = a.load;
+          result.converged = false;
+          if (next == LoadStepping::Next::accept_failed)
+            {
+              analysis.accept_step();
+              continue;
+            }
+          result.stopped            = true;
+          result.non_finite         = a.result.non_finite;
+          result.failed_load_factor = a.load_factor;
+          result.stiffness_ratio    = a.stiffness_ratio;
+          result.growth_ratio       = a.result.growth_ratio;
+          if (stepping.automatic() && !a.result.non_finite &&
+              analysis.has_external_load() &&
+              !shows_mechanism(a.stiffness_ratio, a.result.growth_ratio))
+            probe_beyond(a);
+          break;
+        }
+      return result;
+    }
 
-          StepResult result;
-          double     load;
-          {
-            TimerOutput::Scope scope(timer, "load steps");
-            result           = analysis.solve(load_factor);
-            load             = monitors.load();
-            run.displacement = monitors.displacement();
-          }
-          run.total_iterations += result.iterations;
-          ++run.steps_run;
 
+    Programme::Attempt
+    Programme::attempt(const unsigned int step, const double load_factor)
+    {
+      Attempt a{step, load_factor, {}, 0, 0};
+      {
+        TimerOutput::Scope scope(timer, "load steps");
+        a.result            = analysis.solve(load_factor);
+        a.load              = monitors.load();
+        result.displacement = monitors.displacement();
+      }
+      if (!std::isfinite(a.load) || !std::isfinite(result.displacement.mean))
+        {
+          a.result.non_finite = true;
+          a.result.converged  = false;
+        }
+      result.total_iterations += a.result.iterations;
+      ++result.attempts;
+      a.stiffness_ratio = a.result.converged
+                            ? std::numeric_limits<double>::quiet_NaN()
+                            : analysis.secant_stiffness_ratio();
+      return a;
+    }
+
+
+    void
+    Programme::record(const Attempt &a, const LoadStepping::Next next)
+    {
+      {
+        TimerOutput::Scope scope(timer, "output");
+        writer.write_history_row({a.step,
+                                  result.attempts,
+                                  a.load_factor,
+                                  a.load,
+                                  result.displacement,
+                                  a.result,
+                                  next == LoadStepping::Next::accept ||
+                                    next == LoadStepping::Next::accept_failed,
+                                  a.stiffness_ratio});
+        if (next != LoadStepping::Next::retry)
           {
-            TimerOutput::Scope scope(timer, "output");
-            writer.write_history_row(
-              {step, load_factor, load, run.displacement, result});
             if (p.output.write_vtu)
-              writer.write_fields(step,
-                                  load_factor,
+              writer.write_fields(a.step,
+                                  a.load_factor,
                                   analysis,
                                   p.monitors.displacement_angle);
             writer.write_displacements(analysis, p.monitors.displacement_angle);
           }
+      }
+      print_attempt(a.step,
+                    a.load_factor,
+                    a.load,
+                    result.displacement.mean,
+                    a.result,
+                    next,
+                    out);
+    }
 
-          // Progress: one line per step, as it ends. A failed step's state
-          // is no equilibrium, and its numbers depend on rounding: they go
-          // to history.csv (where the mechanism can be seen), not here.
-          out << "  step " << printf("%4.0f", step) << "  load factor "
-              << printf("%10.4g", load_factor);
-          if (result.converged)
-            out << "  load " << printf("%12.5e", load) << "  displacement "
-                << printf("%12.5e", run.displacement.mean) << "  iterations "
-                << printf("%4.0f", result.iterations) << "  converged";
-          else
-            out << "  FAILED to converge (its state is in history.csv)";
-          out << std::endl;
 
-          if (result.converged)
-            {
-              run.last_converged_load    = load;
-              run.converged_displacement = run.displacement;
-              run.converged_iterations   = run.total_iterations;
-              run.any_step_converged     = true;
-            }
-          else
-            {
-              // Non-convergence is a result (collapse), not an error.
-              if (run.converged)
-                run.first_failed_load = load;
-              run.converged = false;
-              if (!p.solver.continue_after_failure)
-                break;
-            }
+    void
+    Programme::accept(const Attempt &a)
+    {
+      const double stiffness =
+        (a.load - result.last_converged_load) /
+        (a.load_factor - result.last_converged_load_factor);
+      if (!result.any_step_converged)
+        result.first_stiffness = stiffness;
+      result.last_stiffness             = stiffness;
+      result.last_converged_load        = a.load;
+      result.last_converged_load_factor = a.load_factor;
+      result.converged_displacement     = result.displacement;
+      result.converged_iterations       = result.total_iterations;
+      result.any_step_converged         = true;
+      if (a.result.max_yield_ratio > 10 * p.solver.tolerance)
+        ++result.steps_with_drift;
+      analysis.accept_step();
+    }
+
+
+    void
+    Programme::probe_beyond(const Attempt &failed)
+    {
+      analysis.reject_step();
+      const double probe_load_factor =
+        failed.load_factor +
+        (failed.load_factor - result.last_converged_load_factor);
+      const Attempt probe = attempt(failed.step + 1, probe_load_factor);
+      record(probe, LoadStepping::Next::stop);
+      if (!probe.result.converged &&
+          shows_mechanism(probe.stiffness_ratio, probe.result.growth_ratio))
+        {
+          result.probe_load_factor = probe_load_factor;
+          result.stiffness_ratio   = probe.stiffness_ratio;
+          result.growth_ratio      = probe.result.growth_ratio;
         }
-      return run;
+    }
+
+
+    /// What the failed step that ended the run shows of a mechanism.
+    std::string
+    evidence(const ProgrammeResult &run)
+    {
+      std::string text = "the failed step's secant stiffness is " +
+                         printf("%.2g", run.stiffness_ratio) +
+                         " of the elastic one";
+      if (std::isfinite(run.growth_ratio))
+        text += ", and its displacement change grew by a factor " +
+                printf("%.3g", run.growth_ratio) +
+                " over the second half of its iterations";
+      return text;
+    }
+
+
+    /**
+     * How the run ended (RunSummary::outcome), the reason, and the
+     * collapse load where there is one.
+     */
+    void
+    judge_outcome(const Analysis<2>     &analysis,
+                  const ProgrammeResult &run,
+                  RunSummary            &s)
+    {
+      const auto at = [](const double load_factor) {
+        return " at load factor " + printf("%.6g", load_factor);
+      };
+      if (!run.stopped)
+        {
+          s.outcome = run.converged ? "completed" : "not converged";
+          s.reason  = run.converged
+                        ? "every load step converged"
+                        : "steps that failed were accepted (Solver/Continue "
+                          "after failure)";
+          if (!analysis.has_external_load() && run.converged &&
+              std::abs(run.last_stiffness) <=
+                plateau_stiffness_ratio * std::abs(run.first_stiffness))
+            {
+              s.collapse_load = run.last_converged_load;
+              s.reason += "; the load reached its plateau";
+            }
+          return;
+        }
+      s.outcome = "not converged";
+      if (run.non_finite)
+        s.reason =
+          "values that are not finite numbers" + at(run.failed_load_factor);
+      else if (!analysis.has_external_load())
+        s.reason = "the step failed" + at(run.failed_load_factor) +
+                   " under prescribed displacement, where a failed step is "
+                   "no collapse";
+      else if (shows_mechanism(run.stiffness_ratio, run.growth_ratio))
+        {
+          s.outcome         = "collapse";
+          s.collapse_load   = run.last_converged_load;
+          const bool probed = std::isfinite(run.probe_load_factor);
+          s.reason =
+            "a mechanism" +
+            (probed ? " beyond the failed step" + at(run.failed_load_factor) +
+                        ", shown by a probe" + at(run.probe_load_factor)
+                    : at(run.failed_load_factor)) +
+            ": " + evidence(run) + "; the collapse load factor lies between " +
+            printf("%.6g", run.last_converged_load_factor) + " and " +
+            printf("%.6g",
+                   probed ? run.probe_load_factor : run.failed_load_factor);
+        }
+      else
+        s.reason = "the step failed" + at(run.failed_load_factor) +
+                   " with no mechanism shown: " + evidence(run);
     }
 
 
@@ -149,7 +436,7 @@ namespace thinlayer
     void
     print_outcome(const Parameters      &p,
                   const ProgrammeResult &run,
-                  const double           relative_error,
+                  const RunSummary      &summary,
                   std::ostream          &out)
     {
       const DisplacementMeasure &u = run.converged_displacement;
@@ -168,8 +455,13 @@ namespace thinlayer
           << printf("%.5g", run.last_converged_load);
       if (std::isfinite(p.reference.analytic_load))
         out << ", analytic " << printf("%.5g", p.reference.analytic_load)
-            << ", relative error " << printf("%+.3e", relative_error);
-      out << '\n';
+            << ", relative error " << printf("%+.3e", summary.relative_error);
+      out << "\n  outcome: " << summary.outcome << " (" << summary.reason
+          << ")\n";
+      if (summary.steps_with_drift > 0)
+        out << "  warning: " << summary.steps_with_drift
+            << " accepted steps have stresses more than 10 TOL outside the "
+               "yield surface\n";
     }
 
 
@@ -227,8 +519,9 @@ namespace thinlayer
     print_model(p, scene, analysis, summary.warnings, out);
 
     const ProgrammeResult run =
-      run_load_programme(p, analysis, monitors, writer, timer, out);
+      Programme(p, analysis, monitors, writer, timer, out).run();
 
+    judge_outcome(analysis, run, summary);
     summary.converged           = run.converged;
     summary.last_converged_load = run.last_converged_load;
     summary.first_failed_load   = run.first_failed_load;
@@ -236,14 +529,15 @@ namespace thinlayer
     summary.relative_error =
       (run.last_converged_load - summary.reference_load) /
       summary.reference_load;
-    print_outcome(p, run, summary.relative_error, out);
-
     summary.final_displacement     = run.displacement.mean;
     summary.final_displacement_min = run.displacement.min;
     summary.final_displacement_max = run.displacement.max;
     summary.load_steps             = run.steps_run;
+    summary.attempts               = run.attempts;
+    summary.steps_with_drift       = run.steps_with_drift;
     summary.total_iterations       = run.total_iterations;
     summary.converged_iterations   = run.converged_iterations;
+    print_outcome(p, run, summary, out);
     summary.timing = timer.get_summary_data(TimerOutput::total_wall_time);
     summary.seconds_per_substitution = analysis.substitution_seconds();
     summary.seconds_per_iteration =

@@ -116,7 +116,8 @@ namespace thinlayer
 
 
   RunSummary::RunSummary()
-    : last_converged_load(std::numeric_limits<double>::quiet_NaN())
+    : collapse_load(std::numeric_limits<double>::quiet_NaN())
+    , last_converged_load(std::numeric_limits<double>::quiet_NaN())
     , first_failed_load(std::numeric_limits<double>::quiet_NaN())
     , reference_load(std::numeric_limits<double>::quiet_NaN())
     , relative_error(std::numeric_limits<double>::quiet_NaN())

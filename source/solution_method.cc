@@ -7,6 +7,18 @@
 namespace thinlayer
 {
   template <int dim>
+  void
+  SolutionMethod<dim>::state_accepted()
+  {}
+
+
+  template <int dim>
+  void
+  SolutionMethod<dim>::state_rejected()
+  {}
+
+
+  template <int dim>
   std::unique_ptr<SolutionMethod<dim>>
   create_solution_method(const SolverParameters &parameters,
                          Analysis<dim>          &analysis)
@@ -30,6 +42,8 @@ namespace thinlayer
     return nullptr;
   }
 
+
+  template class SolutionMethod<2>;
 
   template std::unique_ptr<SolutionMethod<2>>
   create_solution_method(const SolverParameters &, Analysis<2> &);

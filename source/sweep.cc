@@ -82,18 +82,19 @@ namespace thinlayer
     }
 
 
-    /// One line of progress for a finished run.
+    /// One line of progress for a finished run: its outcome, and its
+    /// collapse load where it has one.
     void
     print_run(const RunSummary &s, std::ostream &out)
     {
-      char line[160];
-      std::snprintf(line,
-                    sizeof(line),
-                    "last converged load %.5g%s, %u iterations to it",
-                    s.last_converged_load,
-                    s.converged ? "" : " (then failed)",
-                    s.converged_iterations);
-      out << line;
+      out << s.outcome;
+      if (std::isfinite(s.collapse_load))
+        out << ", collapse load "
+            << text_format::printf("%.5g", s.collapse_load);
+      else
+        out << ", last converged load "
+            << text_format::printf("%.5g", s.last_converged_load);
+      out << ", " << s.converged_iterations << " iterations to it";
       if (std::isfinite(s.relative_error))
         out << ", relative error "
             << text_format::printf("%+.3e", s.relative_error);

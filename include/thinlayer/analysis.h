@@ -95,18 +95,51 @@ namespace thinlayer
     setup();
 
     /**
-     * One load step, to the total load factor @p load_factor, with the
-     * solution method; its state is accepted whether it converged or not.
+     * An attempt at a load step from the accepted state to the total load
+     * factor @p load_factor, with the solution method. Its state (converged
+     * or not: a failed step shows the mechanism) is the current one, and
+     * stays pending until accept_step() or reject_step(). A step whose
+     * displacements are not finite has not converged
+     * (StepResult::non_finite).
      */
     StepResult
     solve(const double load_factor);
+
+    /// Make the pending state of the last solve() the accepted one.
+    void
+    accept_step();
+
+    /// Return to the accepted state: the pending state is dropped.
+    void
+    reject_step();
+
+    /// The load factor of the current state: of the last attempt while it
+    /// is pending, else the accepted one.
+    double
+    load_factor() const;
+
+    /**
+     * The secant stiffness along the pending step's increment against the
+     * elastic one: (f . du_elastic) / (f . du), with f the step's load
+     * increment and du_elastic = K^-1 f its elastic response, summed over
+     * the modes. Near 1 while the body is elastic, it falls towards 0 as a
+     * mechanism lets the displacement grow at constant load. NaN where the
+     * step has no load increment (prescribed displacements only).
+     */
+    double
+    secant_stiffness_ratio() const;
+
+    /// Whether the scene applies tractions or pressures; without, it is
+    /// driven by prescribed displacements alone.
+    bool
+    has_external_load() const;
 
     /// @name What the solution methods work on
     /// @{
 
     /// The load factor of the last accepted state.
     double
-    load_factor() const;
+    accepted_load_factor() const;
 
     unsigned int
     n_modes() const;
@@ -143,8 +176,8 @@ namespace thinlayer
     /**
      * Make the current stresses the converged ones, add the step's
      * increment to the solution and its plastic strain to the total, and
-     * take @p load_factor as the accepted load factor. For a method that
-     * accepts parts of a step (cut-back); solve() accepts every step.
+     * take @p load_factor as the accepted load factor: for a method that
+     * accepts a converged part of a step (cut-back).
      */
     void
     accept_step(const double load_factor);
@@ -280,7 +313,11 @@ namespace thinlayer
 
     std::unique_ptr<SolutionMethod<dim>> method;
 
-    double accepted_load_factor;
+    double accepted_lambda;
+    /// The load factor of the current state, and whether that state is a
+    /// pending attempt.
+    double current_lambda;
+    bool   pending;
     double substitution_time;
   };
 } // namespace thinlayer

@@ -23,16 +23,25 @@ namespace thinlayer
    */
   struct HistoryRow
   {
+    /// The load step attempted, and the attempt's number in the run (they
+    /// differ once a failed step has been cut back and retried).
     unsigned int        step;
+    unsigned int        attempt;
     double              load_factor;
     double              load;
     DisplacementMeasure displacement;
     StepResult          result;
+    /// Whether the attempt's state was accepted.
+    bool accepted;
+    /// A failed attempt's secant stiffness along its increment against the
+    /// elastic one (Analysis::secant_stiffness_ratio()); NaN otherwise.
+    double stiffness_ratio;
   };
 
   /**
    * The files of one run in its output directory: history.csv (one row per
-   * load step, flushed as it goes so a long run can be watched),
+   * attempt at a load step, flushed as it goes so a long run can be
+   * watched),
    * fields-NNNN.vtu with fields.pvd for ParaView, and whole files such as
    * summary.json at the end. The directory of the Output section is created
    * by the constructor, so construct it only once all input has been

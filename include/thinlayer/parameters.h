@@ -157,8 +157,12 @@ namespace thinlayer
   /// "Loading": the load programme.
   struct LoadingParameters
   {
-    /// Increments of the load factor, one per load step.
+    /// Increments of the load factor, one per load step: the programme.
     std::vector<double> load_increments;
+    /// Automatic stepping: a failed step is halved and retried until the
+    /// collapse load is bracketed to this fraction of the load factor; 0
+    /// runs the programme as given (LoadStepping).
+    double collapse_resolution;
 
     static void
     declare(ParameterHandler &prm);

@@ -28,6 +28,17 @@ namespace thinlayer
     unsigned int dofs                       = 0;
     unsigned int equations                  = 0;
 
+    /**
+     * How the run ended: "completed" (every load step converged),
+     * "collapse" (under load, a step failed with a mechanism as evidence)
+     * or "not converged" (anything else; the reason says what).
+     */
+    std::string outcome;
+    std::string reason;
+    /// The collapse load: the last converged load where the outcome is a
+    /// collapse; under prescribed displacement, the load's plateau if the
+    /// last step reached one; NaN otherwise.
+    double collapse_load;
     /// Whether every load step converged.
     bool   converged = false;
     double last_converged_load;
@@ -38,7 +49,13 @@ namespace thinlayer
     double       final_displacement;
     double       final_displacement_min;
     double       final_displacement_max;
-    unsigned int load_steps       = 0;
+    unsigned int load_steps = 0;
+    /// Attempts at load steps: load_steps and the cut-back ones.
+    unsigned int attempts = 0;
+    /// Accepted steps whose largest yield ratio exceeds 10 TOL: stresses
+    /// that drifted out of the yield surface (the viscoplastic method's
+    /// criterion does not bound it).
+    unsigned int steps_with_drift = 0;
     unsigned int total_iterations = 0;
     /// The iterations of the steps up to the last converged one (those of
     /// a failed step depend on rounding).
@@ -92,6 +109,9 @@ namespace thinlayer
       visitor("cells", cells);
       visitor("dofs", dofs);
       visitor("equations", equations);
+      visitor("outcome", outcome);
+      visitor("reason", reason);
+      visitor("collapse_load", collapse_load);
       visitor("converged", converged);
       visitor("last_converged_load", last_converged_load);
       visitor("first_failed_load", first_failed_load);
@@ -101,6 +121,8 @@ namespace thinlayer
       visitor("final_displacement_min", final_displacement_min);
       visitor("final_displacement_max", final_displacement_max);
       visitor("load_steps", load_steps);
+      visitor("attempts", attempts);
+      visitor("steps_with_drift", steps_with_drift);
       visitor("total_iterations", total_iterations);
       visitor("iterations_to_last_converged_step", converged_iterations);
       visitor("method", method);

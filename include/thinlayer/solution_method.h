@@ -3,6 +3,7 @@
 
 #include <thinlayer/parameters.h>
 
+#include <limits>
 #include <memory>
 
 namespace thinlayer
@@ -26,6 +27,14 @@ namespace thinlayer
     unsigned int cut_backs = 0;
     /// Newton: tangent factorisations.
     unsigned int factorisations = 0;
+    /// Whether the displacements (or stresses) of the step are not finite
+    /// numbers: never converged.
+    bool non_finite = false;
+    /// A step that ran to its iteration limit: the change of its
+    /// displacement at the end against that at half the limit
+    /// (GrowthMonitor; near 2 while it creeps along a mechanism); NaN
+    /// otherwise.
+    double growth_ratio = std::numeric_limits<double>::quiet_NaN();
   };
 
   /**
@@ -59,6 +68,17 @@ namespace thinlayer
      */
     virtual StepResult
     solve_step(const double new_load_factor) = 0;
+
+    /// The body has accepted the current state (a step, or a converged
+    /// part of one): what the method keeps of a state is now that of the
+    /// accepted one.
+    virtual void
+    state_accepted();
+
+    /// The body has dropped the current state for the accepted one: the
+    /// method returns to what it kept of that.
+    virtual void
+    state_rejected();
   };
 
   /**

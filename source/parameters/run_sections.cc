@@ -134,6 +134,16 @@ namespace thinlayer
       "'n*d' repeats the increment d n times (e.g. '0.5, 10*0.05'). All "
       "tractions, pressures and prescribed displacements scale with the "
       "load factor.");
+    prm.declare_entry(
+      "Collapse resolution",
+      "0.005",
+      Patterns::Double(0, 1),
+      "Automatic load stepping: a load step that fails is halved and tried "
+      "again from the last accepted state, and steps grow back to the "
+      "programme's after converged ones; a step that still fails when it "
+      "is at most this fraction of its load factor ends the run, the "
+      "collapse load then bracketed to it (0.005: 0.5%). 0: the programme "
+      "as given, the first failed step ending the run (the paper's way).");
     prm.leave_subsection();
   }
 
@@ -142,7 +152,8 @@ namespace thinlayer
   LoadingParameters::parse(ParameterHandler &prm, const std::string &file)
   {
     prm.enter_subsection("Loading");
-    load_increments = parse_increments(prm.get("Load increments"), file);
+    load_increments     = parse_increments(prm.get("Load increments"), file);
+    collapse_resolution = prm.get_double("Collapse resolution");
     prm.leave_subsection();
   }
 
@@ -233,7 +244,10 @@ namespace thinlayer
                       "false",
                       Patterns::Bool(),
                       "Go on with the next load step after a failed one "
-                      "(true), or stop the analysis there (false).");
+                      "(true), or stop the analysis there (false). Only "
+                      "with Loading/Collapse resolution = 0 (the programme "
+                      "as given); automatic stepping always ends the run "
+                      "at the bracketed collapse.");
     prm.leave_subsection();
   }
 

@@ -65,6 +65,7 @@ namespace thinlayer
       for (unsigned int s = 0; s < n_stations; ++s)
         tangents[std::size_t(p) * n_stations + s] =
           analysis.material_law(p / n_q).elasticity();
+    accepted_tangents = tangents;
   }
 
 
@@ -86,7 +87,7 @@ namespace thinlayer
 
   template <int dim>
   void
-  NewtonMethod<dim>::keep_accepted_state()
+  NewtonMethod<dim>::state_accepted()
   {
     accepted_tangents = tangents;
   }
@@ -94,7 +95,7 @@ namespace thinlayer
 
   template <int dim>
   void
-  NewtonMethod<dim>::restore_accepted_state()
+  NewtonMethod<dim>::state_rejected()
   {
     tangents = accepted_tangents;
   }

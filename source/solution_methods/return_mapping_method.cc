@@ -47,29 +47,16 @@ namespace thinlayer
 
 
   template <int dim>
-  void
-  ReturnMappingMethod<dim>::keep_accepted_state()
-  {}
-
-
-  template <int dim>
-  void
-  ReturnMappingMethod<dim>::restore_accepted_state()
-  {}
-
-
-  template <int dim>
   StepResult
   ReturnMappingMethod<dim>::solve_step(const double new_load_factor)
   {
     StepResult   result{0, false, 0, 0};
-    const double total = new_load_factor - analysis.load_factor();
-    keep_accepted_state();
+    const double total = new_load_factor - analysis.accepted_load_factor();
 
     double size = total;
     while (true)
       {
-        const double start = analysis.load_factor();
+        const double start = analysis.accepted_load_factor();
         const bool   last =
           std::abs(start + size - new_load_factor) <= 1e-12 * std::abs(total);
         const double target = last ? new_load_factor : start + size;
@@ -82,7 +69,6 @@ namespace thinlayer
               }
             // A converged part of a cut-back step.
             analysis.accept_step(target);
-            keep_accepted_state();
             size = std::min(size, new_load_factor - target);
             continue;
           }
@@ -90,7 +76,7 @@ namespace thinlayer
           break; // failed: the last attempt's state is kept
         ++result.cut_backs;
         size /= 2;
-        restore_accepted_state();
+        this->state_rejected();
       }
     return result;
   }
@@ -100,7 +86,7 @@ namespace thinlayer
   bool
   ReturnMappingMethod<dim>::attempt(const double target, StepResult &result)
   {
-    const double dlambda = target - analysis.load_factor();
+    const double dlambda = target - analysis.accepted_load_factor();
     for (unsigned int m = 0; m < analysis.n_modes(); ++m)
       {
         ModeState &mode     = analysis.mode(m);
@@ -118,7 +104,9 @@ namespace thinlayer
         result.plastic_points = norms.n_yielding;
         if (converged(norms))
           return true;
+        growth.iteration_done(k + 1, max_iterations(), analysis.get_modes());
       }
+    result.growth_ratio = growth.growth_ratio(analysis.get_modes());
     return false;
   }
 

@@ -42,7 +42,7 @@ namespace thinlayer
   StepResult
   ViscoplasticMethod<dim>::solve_step(const double new_load_factor)
   {
-    const double       dlambda = new_load_factor - analysis.load_factor();
+    const double dlambda = new_load_factor - analysis.accepted_load_factor();
     const unsigned int n_modes = analysis.n_modes();
     for (unsigned int m = 0; m < n_modes; ++m)
       {
@@ -93,7 +93,12 @@ namespace thinlayer
           result.converged = true; // elastic: nothing will change
         else if (body_load_criterion || result.iterations > 1)
           result.converged = (change <= parameters.tolerance * size);
+        growth.iteration_done(result.iterations,
+                              parameters.max_iterations,
+                              analysis.get_modes());
       }
+    if (!result.converged)
+      result.growth_ratio = growth.growth_ratio(analysis.get_modes());
 
     return result;
   }

@@ -56,10 +56,10 @@ namespace thinlayer
     /// The tangents at the accepted state, to restart from after a failed
     /// attempt.
     void
-    keep_accepted_state() override;
+    state_accepted() override;
 
     void
-    restore_accepted_state() override;
+    state_rejected() override;
 
   private:
     /// Work space of one chunk of the cell tangents.

@@ -5,6 +5,7 @@
 
 #include <thinlayer/analysis.h>
 #include <thinlayer/solution_method.h>
+#include <thinlayer/solution_methods/growth_monitor.h>
 
 #include <vector>
 
@@ -71,14 +72,6 @@ namespace thinlayer
     virtual void
     start_attempt();
 
-    /// When the body's state has been accepted (and at the start of the
-    /// step): keep what a cut-back must return to.
-    virtual void
-    keep_accepted_state();
-
-    /// Before a cut-back attempt: return to the kept state.
-    virtual void
-    restore_accepted_state();
 
     /// Each mode's correction K_m^-1 r_m with its elastic factor.
     void
@@ -96,6 +89,8 @@ namespace thinlayer
     std::vector<Vector<double>> previous_increment;
 
   private:
+    GrowthMonitor growth;
+
     /// Iterations from the accepted state to @p target; true if converged.
     bool
     attempt(const double target, StepResult &result);

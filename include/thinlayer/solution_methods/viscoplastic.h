@@ -3,6 +3,7 @@
 
 #include <thinlayer/analysis.h>
 #include <thinlayer/solution_method.h>
+#include <thinlayer/solution_methods/growth_monitor.h>
 
 #include <vector>
 
@@ -47,6 +48,7 @@ namespace thinlayer
     Analysis<dim>          &analysis;
     /// Per mode: the step increment of the previous iteration.
     std::vector<Vector<double>> previous_increment;
+    GrowthMonitor               growth;
   };
 } // namespace thinlayer
 
