@@ -60,8 +60,8 @@ namespace thinlayer
     /**
      * A failed step under load is a collapse only with a mechanism as
      * evidence: its secant stiffness along the increment below this
-     * fraction of the elastic one, i.e. displacements at least ten times
-     * the elastic response to the same load increment.
+     * fraction of the elastic one in magnitude, i.e. displacements at
+     * least ten times the elastic response to the same load increment.
      */
     constexpr double mechanism_stiffness_ratio = 0.1;
 
@@ -122,6 +122,7 @@ namespace thinlayer
                   const double             displacement,
                   const StepResult        &result,
                   const LoadStepping::Next next,
+                  const bool               probe,
                   std::ostream            &out)
     {
       out << "  step " << printf("%4.0f", step) << "  load factor "
@@ -134,6 +135,8 @@ namespace thinlayer
         out << "  failed: cut back (its state is in history.csv)";
       else if (result.non_finite)
         out << "  FAILED: not a finite number";
+      else if (probe)
+        out << "  probe beyond the failed step: FAILED to converge";
       else
         out << "  FAILED to converge (its state is in history.csv)";
       out << std::endl;
@@ -144,8 +147,9 @@ namespace thinlayer
     bool
     shows_mechanism(const double stiffness_ratio, const double growth_ratio)
     {
-      return (stiffness_ratio >= 0 &&
-              stiffness_ratio < mechanism_stiffness_ratio) ||
+      // Either sign: an iterate that ran away against the load has grown
+      // without bound too.
+      return std::abs(stiffness_ratio) < mechanism_stiffness_ratio ||
              growth_ratio >= mechanism_growth_ratio;
     }
 
@@ -193,7 +197,9 @@ namespace thinlayer
       /// Its row in history.csv, its fields unless it is to be retried,
       /// and its line on screen.
       void
-      record(const Attempt &a, const LoadStepping::Next next);
+      record(const Attempt           &a,
+             const LoadStepping::Next next,
+             const bool               probe = false);
 
       /// Take a converged attempt's figures and accept its state.
       void
@@ -288,7 +294,9 @@ namespace thinlayer
 
 
     void
-    Programme::record(const Attempt &a, const LoadStepping::Next next)
+    Programme::record(const Attempt           &a,
+                      const LoadStepping::Next next,
+                      const bool               probe)
     {
       {
         TimerOutput::Scope scope(timer, "output");
@@ -317,6 +325,7 @@ namespace thinlayer
                     result.displacement.mean,
                     a.result,
                     next,
+                    probe,
                     out);
     }
 
@@ -349,7 +358,7 @@ namespace thinlayer
         failed.load_factor +
         (failed.load_factor - result.last_converged_load_factor);
       const Attempt probe = attempt(failed.step + 1, probe_load_factor);
-      record(probe, LoadStepping::Next::stop);
+      record(probe, LoadStepping::Next::stop, true);
       if (!probe.result.converged &&
           shows_mechanism(probe.stiffness_ratio, probe.result.growth_ratio))
         {

@@ -2,6 +2,7 @@
 #include <thinlayer/solution_methods/accelerated_initial_stress.h>
 #include <thinlayer/solution_methods/initial_stress.h>
 #include <thinlayer/solution_methods/newton.h>
+#include <thinlayer/solution_methods/newton_fallback.h>
 #include <thinlayer/solution_methods/viscoplastic.h>
 
 namespace thinlayer
@@ -37,6 +38,9 @@ namespace thinlayer
             parameters, analysis);
         case Method::newton:
           return std::make_unique<NewtonMethod<dim>>(parameters, analysis);
+        case Method::accelerated_with_newton_fallback:
+          return std::make_unique<NewtonFallbackMethod<dim>>(parameters,
+                                                             analysis);
       }
     AssertThrow(false, ExcInternalError());
     return nullptr;

@@ -217,7 +217,17 @@ main()
         {"good.prm", "-s", "Material 1/Young's modulus"});
   check("an unknown option", {"good.prm", "--fast"});
   check("the residual criterion with the viscoplastic method",
-        {"good.prm", "-s", "Solver/Convergence criterion=residual"});
+        {"good.prm",
+         "-s",
+         "Solver/Method=viscoplastic",
+         "-s",
+         "Solver/Convergence criterion=residual"});
   check("the body-load criterion with Newton",
-        {"good.prm", "-s", "Solver/Method=newton"});
+        {"good.prm",
+         "-s",
+         "Solver/Method=newton",
+         "-s",
+         "Solver/Convergence criterion=body loads"});
+  check("the body-load criterion with the default method (Newton fallback)",
+        {"good.prm", "-s", "Solver/Convergence criterion=body loads"});
 }

@@ -140,6 +140,7 @@ namespace
         thinlayer::Analysis<2> analysis(p, tria);
         analysis.setup();
         analysis.solve(1);
+        analysis.accept_step();
 
         Vector<double>  errors(tria.n_active_cells());
         const QGauss<2> quadrature(5);
@@ -221,6 +222,7 @@ namespace
         thinlayer::Analysis<2> analysis(p, tria);
         analysis.setup();
         analysis.solve(1);
+        analysis.accept_step();
 
         // Largest nodal error against the exact amplitudes; the largest
         // displacement is k/2 (z^2 + nu r^2) = 0.0215 at r = 1, z = 2.
@@ -266,6 +268,7 @@ namespace
       auto a = std::make_unique<thinlayer::Analysis<2>>(*p, *tria);
       a->setup();
       a->solve(1);
+      a->accept_step();
       return std::make_tuple(std::move(tria), std::move(p), std::move(a));
     };
 
@@ -323,6 +326,7 @@ namespace
     thinlayer::Analysis<2> analysis(p, tria);
     analysis.setup();
     analysis.solve(1);
+    analysis.accept_step();
 
     const double error =
       largest_nodal_error(analysis,

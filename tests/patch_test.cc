@@ -71,6 +71,7 @@ main()
         thinlayer::Analysis<2> analysis(p, scene.triangulation());
         analysis.setup();
         analysis.solve(1.0);
+        analysis.accept_step();
         const thinlayer::Monitors<2> monitors(p.monitors, analysis);
 
         double max_error = 0;

@@ -186,7 +186,9 @@ namespace thinlayer
       /// Initial stress with Anderson acceleration on the same factor.
       accelerated_initial_stress,
       /// Consistent tangent, line search, load-step cut-back.
-      newton
+      newton,
+      /// Accelerated initial stress; Newton where it fails a step.
+      accelerated_with_newton_fallback
     };
 
     /// When the iterations of a load step have converged.

@@ -41,6 +41,14 @@ namespace thinlayer
     void
     initialize() override;
 
+    /// The tangents at the accepted state, to restart from after a failed
+    /// attempt.
+    void
+    state_accepted() override;
+
+    void
+    state_rejected() override;
+
   protected:
     bool
     iterate(const double   target,
@@ -53,13 +61,6 @@ namespace thinlayer
     unsigned int
     max_cut_backs() const override;
 
-    /// The tangents at the accepted state, to restart from after a failed
-    /// attempt.
-    void
-    state_accepted() override;
-
-    void
-    state_rejected() override;
 
   private:
     /// Work space of one chunk of the cell tangents.

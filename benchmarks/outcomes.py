@@ -1,0 +1,169 @@
+#!/usr/bin/python3
+"""Outcomes of every case with every solution method: the results are not tests.
+
+    /usr/bin/python3 benchmarks/outcomes.py [--quick] [--repeat N] [--methods M,...]
+
+Runs every paper case and Prandtl over mesh levels and, where the case has
+an interface, its aspect ratio, with each solution method and automatic load
+stepping (collapse bracketed to 0.5%), and tables per run: the outcome
+(completed, collapse, not converged), the collapse load (or, where there is
+none, the last converged load, in brackets), its difference from Newton's
+collapse load on the same mesh (the mesh's discrete limit: Newton's
+consistent tangent finds it), its error against the analytic value, load
+steps attempted, iterations and the median wall time of N runs (default 1).
+A run whose outcome is not a collapse is never given an error: the table
+says what happened instead. Writes output/benchmarks/outcomes/outcomes.csv
+and outcomes.md (also printed). --quick: level 1 and aspect ratios 10 and
+1000 only. THINLAYER in the environment names another binary.
+"""
+import argparse
+import csv
+import json
+import math
+import os
+import statistics
+import subprocess
+
+TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+THINLAYER = os.environ.get("THINLAYER", os.path.join(TOP, "build", "thinlayer"))
+OUT = os.path.join(TOP, "output", "benchmarks", "outcomes")
+
+# case: (parameter file, {level: geometry parameters with {ar} for the
+# interface's aspect ratio}, aspect ratios, load increments)
+CASES = {
+    "prandtl": ("prm/prandtl-strip-footing.prm", {
+        1: "half_width=1, width=5, depth=3, n_footing=8, n_side=12, n_depth=12, growth=1.15",
+        2: "half_width=1, width=5, depth=3, n_footing=16, n_side=24, n_depth=24, growth=1.07",
+    }, [None]),
+    "case1": ("prm/case1-inclined-adhesive.prm", {
+        1: "alpha=30, aspect_ratio={ar}, elements_along=8, elements_block=8",
+        2: "alpha=30, aspect_ratio={ar}, elements_along=16, elements_block=16",
+    }, [10, 100, 1000, 10000]),
+    "case2": ("prm/case2-strip-footing.prm", {
+        1: "half_width=1, width=5, depth=3, aspect_ratio={ar}, n_footing=8, n_side=12, n_depth=10, interface_beyond_footing=1, refinement=1",
+        2: "half_width=1, width=5, depth=3, aspect_ratio={ar}, n_footing=8, n_side=12, n_depth=10, interface_beyond_footing=1, refinement=2",
+    }, [10, 100, 1000, 10000]),
+    "case3": ("prm/case3-circular-footing.prm", {
+        1: "half_width=1, width=5, depth=3, aspect_ratio={ar}, n_footing=8, n_side=12, n_depth=10, interface_beyond_footing=1, refinement=1",
+    }, [10, 1000]),
+    "case4-rough": ("prm/case4-rough-wall.prm", {
+        1: "wall_height=1, width=3, depth=2, aspect_ratio={ar}, n_wall=10, n_below=5, n_x=12",
+        2: "wall_height=1, width=3, depth=2, aspect_ratio={ar}, n_wall=20, n_below=10, n_x=24",
+    }, [10, 100, 1000, 10000]),
+}
+# Each method with its convergence criterion and tolerance.
+METHODS = {
+    "viscoplastic": ("viscoplastic", "body loads", "1e-5"),
+    "accelerated": ("accelerated initial stress", "residual", "1e-5"),
+    "newton": ("newton", "residual", "1e-8"),
+    # The default: no solver entry at all (accelerated with Newton
+    # fallback, the residual criterion, TOL 1e-4).
+    "default": None,
+}
+
+
+def run(prm, geometry, method, directory):
+    command = [THINLAYER, os.path.join(TOP, prm)]
+    if METHODS[method] is None:
+        # The scene's own solver entries give way to the defaults.
+        command += ["-s", "Solver/Method=accelerated with newton fallback",
+                    "-s", "Solver/Convergence criterion=default",
+                    "-s", "Solver/Tolerance=1e-4",
+                    "-s", "Solver/Maximum iterations=250"]
+    else:
+        name, criterion, tol = METHODS[method]
+        command += ["-s", "Solver/Method=" + name,
+                    "-s", "Solver/Convergence criterion=" + criterion,
+                    "-s", "Solver/Tolerance=" + tol]
+    command += ["-s", "Loading/Collapse resolution=0.005",
+               "-s", "Output/Directory=" + directory,
+               "-s", "Output/Write VTU=false",
+               "-s", "Output/Print timing=false",
+               "-s", "Mesh/Geometry parameters=" + geometry]
+    done = subprocess.run(command, capture_output=True, text=True)
+    if done.returncode != 0:
+        return {"outcome": "error", "reason": done.stderr.strip()[-200:]}
+    with open(os.path.join(directory, "summary.json")) as f:
+        return json.load(f)
+
+
+def number(value):
+    return value if isinstance(value, (int, float)) and math.isfinite(value) else float("nan")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help="level 1, aspect ratios 10 and 1000")
+    parser.add_argument("--repeat", type=int, default=1, help="runs per scene (median time)")
+    parser.add_argument("--methods", default=",".join(METHODS), help="comma-separated: " + ", ".join(METHODS))
+    parser.add_argument("--cases", default=",".join(CASES), help="comma-separated: " + ", ".join(CASES))
+    args = parser.parse_args()
+    methods = args.methods.split(",")
+    if "newton" not in methods:
+        methods = ["newton"] + methods  # the reference of every row
+    os.makedirs(OUT, exist_ok=True)
+
+    rows = []
+    for case in args.cases.split(","):
+        prm, levels, ratios = CASES[case]
+        for level, geometry_template in sorted(levels.items()):
+            if args.quick and level > 1:
+                continue
+            for ar in ratios:
+                if args.quick and ar not in (None, 10, 1000):
+                    continue
+                geometry = geometry_template.format(ar=ar)
+                reference = None
+                for method in sorted(methods, key=lambda m: m != "newton"):
+                    directory = os.path.join(OUT, "runs", "%s-%d-%s-%s" % (case, level, ar, method))
+                    times = []
+                    for _ in range(args.repeat):
+                        s = run(prm, geometry, method, directory)
+                        times.append(number(s.get("wall_seconds")))
+                    collapse = number(s.get("collapse_load"))
+                    if method == "newton":
+                        reference = collapse
+                    analytic = number(s.get("reference_load"))
+                    row = {
+                        "case": case, "level": level, "aspect_ratio": ar or "",
+                        "method": method, "outcome": s.get("outcome"),
+                        "collapse_load": collapse,
+                        "last_converged_load": number(s.get("last_converged_load")),
+                        "against_newton": (collapse - reference) / reference
+                        if math.isfinite(collapse) and reference and math.isfinite(reference) else float("nan"),
+                        "against_analytic": (collapse - analytic) / analytic
+                        if math.isfinite(collapse) and math.isfinite(analytic) else float("nan"),
+                        "attempts": s.get("attempts"), "iterations": s.get("total_iterations"),
+                        "wall_seconds": statistics.median(times),
+                        "reason": s.get("reason", ""),
+                    }
+                    rows.append(row)
+                    print(format_row(row), flush=True)
+
+    with open(os.path.join(OUT, "outcomes.csv"), "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+        writer.writeheader()
+        writer.writerows(rows)
+    lines = [HEADER, "|" + "---|" * (HEADER.count("|") - 1)] + [format_row(r) for r in rows]
+    with open(os.path.join(OUT, "outcomes.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+
+HEADER = ("| case | level | AR | method | outcome | collapse load | vs Newton | vs analytic "
+          "| attempts | iterations | wall s |")
+
+
+def format_row(r):
+    def percent(x):
+        return "%+.2f%%" % (100 * x) if math.isfinite(x) else "-"
+    load = ("%.4g" % r["collapse_load"] if math.isfinite(r["collapse_load"])
+            else "(%.4g)" % r["last_converged_load"])
+    return "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %.2f |" % (
+        r["case"], r["level"], r["aspect_ratio"], r["method"], r["outcome"], load,
+        percent(r["against_newton"]), percent(r["against_analytic"]),
+        r["attempts"], r["iterations"], r["wall_seconds"])
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,49 @@
+#ifndef thinlayer_solution_methods_newton_fallback_h
+#define thinlayer_solution_methods_newton_fallback_h
+
+#include <thinlayer/solution_method.h>
+#include <thinlayer/solution_methods/accelerated_initial_stress.h>
+#include <thinlayer/solution_methods/newton.h>
+
+namespace thinlayer
+{
+  /**
+   * Accelerated initial stress, safeguarded by Newton: each load step is
+   * first iterated with the constant elastic stiffness and Anderson
+   * acceleration (one factorisation for the whole analysis, cheap
+   * iterations); a step it cannot converge is tried again from the
+   * accepted state by Newton's method (consistent tangent, line search,
+   * cut-back). Away from collapse the cheap method does the work; near it,
+   * where constant-stiffness iterations creep and Anderson's
+   * extrapolation can stall, Newton decides whether the step has an
+   * equilibrium, so the collapse load is Newton's.
+   *
+   * Both methods keep their state; both are told of accepted and rejected
+   * states.
+   */
+  template <int dim>
+  class NewtonFallbackMethod : public SolutionMethod<dim>
+  {
+  public:
+    NewtonFallbackMethod(const SolverParameters &parameters,
+                         Analysis<dim>          &analysis);
+
+    void
+    initialize() override;
+
+    StepResult
+    solve_step(const double new_load_factor) override;
+
+    void
+    state_accepted() override;
+
+    void
+    state_rejected() override;
+
+  private:
+    AcceleratedInitialStressMethod<dim> accelerated;
+    NewtonMethod<dim>                   newton;
+  };
+} // namespace thinlayer
+
+#endif
