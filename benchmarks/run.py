@@ -35,6 +35,8 @@ import sys
 import time
 
 TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(TOP, "scripts"))
+import results  # noqa: E402
 THINLAYER = os.environ.get("THINLAYER", os.path.join(TOP, "build", "thinlayer"))
 OUT = os.path.join(TOP, "output", "benchmarks")
 
@@ -83,6 +85,18 @@ LADDER_STATIONS = ", ".join(str(15 * k) for k in range(13))
 METHODS = [("viscoplastic", "body loads"), ("initial stress", "residual"),
            ("accelerated initial stress", "residual"), ("newton", "residual")]
 TOLERANCES = ["1e-3", "1e-5"]
+
+
+def percent(error):
+    """An error in percent; '-' where the run has no collapse load."""
+    return "%+.1f%%" % (100 * error) if error is not None else "-"
+
+
+def chart(pts):
+    """(wall time, |error| in percent) of the runs that have a collapse load."""
+    shown = [r for r in pts if r["relative_error"] is not None]
+    return ([r["wall_median_s"] for r in shown],
+            [abs(100 * r["relative_error"]) for r in shown])
 
 
 def run_once(prm, geometry, solver, tol, directory, extra=()):
@@ -146,14 +160,14 @@ def ladder(repeat):
         row = {"case": case, "mesh_level": level, "element": element,
                "gauss_points": gauss + "x" + gauss, "harmonics": harmonics or "",
                "method": method, "equations": summary["equations"],
-               "collapse_detected": int(not summary["converged"]),
-               "relative_error": summary["relative_error"],
+               "collapse_detected": int(results.collapse_detected(summary)),
+               "relative_error": results.collapse_error(summary),
                "total_iterations": summary["total_iterations"],
                "wall_median_s": median, "peak_memory_mb": peak}
         rows.append(row)
-        print("%-15s level %d %s %s %-8s error %+6.1f%% %6d iterations %8.3f s" % (
+        print("%-15s level %d %s %s %-8s error %7s %6d iterations %8.3f s" % (
             case, level, element, row["gauss_points"], harmonics or "",
-            100 * (row["relative_error"] or 0), row["total_iterations"], median), flush=True)
+            percent(row["relative_error"]), row["total_iterations"], median), flush=True)
 
     for case in CASES:
         for level in (1, 2):
@@ -167,11 +181,11 @@ def ladder(repeat):
     write_results(rows, "ladder",
                   "| case | method | level | element | Gauss | harmonics | equations "
                   "| collapse detected | error | iterations | wall s (median) |",
-                  lambda r: "| %s | %s | %d | %s | %s | %s | %d | %s | %+.1f%% | %d | %.3f |" % (
+                  lambda r: "| %s | %s | %d | %s | %s | %s | %d | %s | %s | %d | %.3f |" % (
                       r["case"], r["method"], r["mesh_level"], r["element"],
                       r["gauss_points"], r["harmonics"] or "(file's)", r["equations"],
                       "yes" if r["collapse_detected"] else "no",
-                      100 * (r["relative_error"] or 0), r["total_iterations"],
+                      percent(r["relative_error"]), r["total_iterations"],
                       r["wall_median_s"]))
 
     import matplotlib
@@ -184,15 +198,12 @@ def ladder(repeat):
             for gauss, style in (("2x2", "-"), ("3x3", "--")):
                 pts = [r for r in rows if r["case"] == case and r["element"] == element
                        and r["gauss_points"] == gauss and not r["harmonics"]]
-                ax.plot([r["wall_median_s"] for r in pts],
-                        [abs(100 * (r["relative_error"] or 0)) for r in pts],
-                        marker + style, label="%s, %s" % (element, gauss))
+                ax.plot(*chart(pts), marker + style, label="%s, %s" % (element, gauss))
         for harmonics, colour in zip(LADDER_HARMONICS, ("C4", "C5", "C6")):
             pts = [r for r in rows if r["case"] == case and r["harmonics"] == harmonics]
             if pts:
-                ax.plot([r["wall_median_s"] for r in pts],
-                        [abs(100 * (r["relative_error"] or 0)) for r in pts],
-                        "^:", color=colour, label="Q8, 2x2, harmonics " + harmonics)
+                ax.plot(*chart(pts), "^:", color=colour,
+                        label="Q8, 2x2, harmonics " + harmonics)
         ax.set_xscale("log")
         ax.set_xlabel("wall time, median (s)")
         ax.set_ylabel("|error| of the collapse load (%)")
@@ -237,28 +248,28 @@ def main():
                         "case": case, "mesh_level": level, "cells": summary["cells"],
                         "equations": summary["equations"], "method": method,
                         "tolerance": tol,
-                        "collapse_detected": int(not summary["converged"]),
+                        "collapse_detected": int(results.collapse_detected(summary)),
                         "last_converged_load": summary["last_converged_load"],
-                        "relative_error": summary["relative_error"],
+                        "relative_error": results.collapse_error(summary),
                         "total_iterations": summary["total_iterations"],
                         "wall_median_s": median,
                         "peak_memory_mb": peak,
                         "directory": directory,
                     }
                     rows.append(row)
-                    print("%-15s level %d %-27s TOL %-5s error %+6.1f%% %6d iterations "
+                    print("%-15s level %d %-27s TOL %-5s error %7s %6d iterations "
                           "%8.3f s (median of %d) %7.1f MB" % (
-                              case, level, method, tol, 100 * (row["relative_error"] or 0),
+                              case, level, method, tol, percent(row["relative_error"]),
                               row["total_iterations"], row["wall_median_s"], repeat,
                               row["peak_memory_mb"]), flush=True)
     write_results(rows, "benchmarks",
                   "| case | level | cells | equations | method | TOL | collapse detected "
                   "| error | iterations | wall s (median) | peak MB |",
-                  lambda r: "| %s | %d | %d | %d | %s | %s | %s | %+.1f%% | %d | %.3f | %.1f |" % (
+                  lambda r: "| %s | %d | %d | %d | %s | %s | %s | %s | %d | %.3f | %.1f |" % (
                       r["case"], r["mesh_level"], r["cells"], r["equations"],
                       r["method"], r["tolerance"],
                       "yes" if r["collapse_detected"] else "no",
-                      100 * (r["relative_error"] or 0), r["total_iterations"],
+                      percent(r["relative_error"]), r["total_iterations"],
                       r["wall_median_s"], r["peak_memory_mb"]))
     chart(rows)
     near_collapse_chart(rows)
@@ -275,8 +286,7 @@ def chart(rows):
             for tol, marker in zip(TOLERANCES, "os"):
                 pts = sorted((r for r in rows if r["case"] == case and r["method"] == method
                               and r["tolerance"] == tol), key=lambda r: r["mesh_level"])
-                ax.plot([r["wall_median_s"] for r in pts],
-                        [abs(100 * (r["relative_error"] or 0)) for r in pts],
+                ax.plot(*chart(pts),
                         marker + ("-" if tol == TOLERANCES[0] else "--"), color=colour,
                         label="%s, TOL %s" % (method, tol))
         ax.set_xscale("log")
@@ -303,10 +313,12 @@ def near_collapse_chart(rows):
             if not run:
                 continue
             with open(os.path.join(run[0]["directory"], "history.csv"), newline="") as f:
-                steps = list(csv.DictReader(f))[-10:]
+                rows_of_run = list(csv.DictReader(f))
+            # Iterations of the accepted steps, and the failures marked.
+            steps = results.states(rows_of_run)[-10:]
             ax.plot([float(s["load_factor"]) for s in steps],
                     [int(s["iterations"]) for s in steps], "o-", color=colour, label=method)
-            failed = [s for s in steps if s["converged"] == "0"]
+            failed = results.failures(rows_of_run)
             ax.plot([float(s["load_factor"]) for s in failed],
                     [int(s["iterations"]) for s in failed], "x", color="k", markersize=9)
         ax.set_yscale("log")
@@ -338,8 +350,9 @@ def stability():
                             directory], capture_output=True, text=True, check=True)
             with open(os.path.join(directory, "sweep.csv"), newline="") as f:
                 runs = list(csv.DictReader(f))
-            detected = [r for r in runs if r["converged"] == "0"]
-            close = [r for r in detected if abs(float(r["relative_error"])) <= 0.02 + 1e-9]
+            detected = [r for r in runs if results.collapse_detected(r)]
+            close = [r for r in detected if results.collapse_error(r) is not None
+                     and abs(results.collapse_error(r)) <= 0.02 + 1e-9]
             lines.append("| %s | %s | %d of %d | %d | %d | %.1f |" % (
                 material, method, len(detected), len(runs), len(close),
                 statistics.median(int(r["total_iterations"]) for r in runs), seconds))
@@ -373,7 +386,7 @@ def performance(repeat):
                                                tol, directory, repeat, extra)
             row = {"cells": summary["cells"], "equations": summary["equations"], "method": method,
                    "tolerance": tol, "load_programme": programme or "file's",
-                   "relative_error": summary["relative_error"],
+                   "relative_error": results.collapse_error(summary),
                    "total_iterations": summary["total_iterations"], "wall_median_s": median,
                    "seconds_per_iteration": summary["seconds_per_iteration"],
                    "seconds_per_substitution": summary["seconds_per_substitution"],
@@ -383,9 +396,9 @@ def performance(repeat):
     write_results(rows, "performance",
                   "| cells | equations | method | TOL | load programme | error | iterations "
                   "| wall s (median) | ms per iteration | ms per substitution | ratio | peak MB |",
-                  lambda r: "| %d | %d | %s | %s | %s | %+.1f%% | %d | %.2f | %.2f | %.2f | %.2f | %.1f |" % (
+                  lambda r: "| %d | %d | %s | %s | %s | %s | %d | %.2f | %.2f | %.2f | %.2f | %.1f |" % (
                       r["cells"], r["equations"], r["method"], r["tolerance"], r["load_programme"],
-                      100 * r["relative_error"], r["total_iterations"], r["wall_median_s"],
+                      percent(r["relative_error"]), r["total_iterations"], r["wall_median_s"],
                       1e3 * r["seconds_per_iteration"], 1e3 * r["seconds_per_substitution"],
                       r["seconds_per_iteration"] / r["seconds_per_substitution"],
                       r["peak_memory_mb"]))

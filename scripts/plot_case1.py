@@ -21,6 +21,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+import results  # noqa: E402
+
 
 def read_csv(path):
     with open(path, newline="") as f:
@@ -58,12 +60,17 @@ def table1(directory):
             cells = []
             for ratio in ratios:
                 r = find(alpha, ratio, tol)
-                detected = r["converged"] == "0"
-                cells.append("%s%.2f (%+.0f%%)" % ("" if detected else ">",
-                                                  number(r["last_converged_load"]),
-                                                  100 * number(r["relative_error"])))
-                flat.append([alpha, r["reference_load"], ratio, tol, r["last_converged_load"],
-                             r["relative_error"], int(detected), r["total_iterations"]])
+                detected = results.collapse_detected(r)
+                # A collapse load and its error only for a collapse; the
+                # others say what happened instead.
+                if detected:
+                    cells.append("%.2f (%+.1f%%)" % (results.collapse_load(r),
+                                                     100 * results.collapse_error(r)))
+                else:
+                    cells.append("%s at %.2f" % (r["outcome"], number(r["last_converged_load"])))
+                flat.append([alpha, r["reference_load"], ratio, tol, r["collapse_load"],
+                             r["relative_error"] if detected else "", int(detected),
+                             r["total_iterations"]])
             lines.append("| %g | %.2f | %s |" % (alpha, number(find(alpha, ratios[0], tol)["reference_load"]),
                                                  " | ".join(cells)))
         lines.append("")
@@ -81,14 +88,14 @@ def table1(directory):
                 "k-", label="analytic")
         for ratio, marker in zip(ratios, "os^"):
             pts = [find(a, ratio, tol) for a in alphas]
-            detected = [r["converged"] == "0" for r in pts]
+            detected = [results.collapse_detected(r) for r in pts]
             ax.plot([a for a, d in zip(alphas, detected) if d],
-                    [number(r["last_converged_load"]) for r, d in zip(pts, detected) if d],
+                    [results.collapse_load(r) for r, d in zip(pts, detected) if d],
                     marker, label="aspect ratio %s" % ratio)
             ax.plot([a for a, d in zip(alphas, detected) if not d],
                     [number(r["last_converged_load"]) for r, d in zip(pts, detected) if not d],
                     marker, mfc="none", color=ax.lines[-1].get_color())
-        ax.set_title("TOL = %s (open: collapse not detected)" % tol)
+        ax.set_title("TOL = %s (open: no collapse; last converged load)" % tol)
         ax.set_xlabel("interface inclination alpha (degrees)")
         ax.grid(alpha=0.3)
     axes[0].set_ylabel("P_ult / C_w")
@@ -106,12 +113,14 @@ def figure3(directory):
     for column, alpha in enumerate(alphas):
         ax, ax_it = axes[0][column], axes[1][column]
         for r in (r for r in rows if r["alpha"] == alpha):
-            h = history(directory, r["run"])
+            rows_of_run = history(directory, r["run"])
+            h = results.states(rows_of_run)
+            failed = results.failures(rows_of_run)
             u = [number(s["displacement"]) for s in h]
             p = [number(s["load"]) for s in h]
-            ok = [s["converged"] == "1" for s in h]
             line, = ax.plot(u, p, "-", label="aspect ratio %s" % r["aspect_ratio"])
-            ax.plot([x for x, c in zip(u, ok) if not c], [y for y, c in zip(p, ok) if not c],
+            ax.plot([number(s["displacement"]) for s in failed],
+                    [number(s["load"]) for s in failed],
                     "o", mfc="none", color=line.get_color())
             ax_it.plot([number(s["load"]) / number(r["reference_load"]) for s in h],
                        [int(s["iterations"]) for s in h], ".-", color=line.get_color())
@@ -134,14 +143,14 @@ def figure3(directory):
 def frictional(directory):
     """Slip of the top against inclination, one series per other swept entry."""
     rows = read_csv(os.path.join(directory, "sweep.csv"))
-    swept = list(rows[0].keys())[1:list(rows[0].keys()).index("converged")]
+    swept = results.swept_names(rows)
     series_key = next(k for k in swept if k != "alpha")
     fig, ax = plt.subplots(figsize=(6.5, 4.5))
     for value in sorted({r[series_key] for r in rows}, key=float, reverse=True):
         pts = sorted((r for r in rows if r[series_key] == value), key=lambda r: float(r["alpha"]))
         alpha = [float(r["alpha"]) for r in pts]
         slip = [abs(number(history(directory, r["run"])[-1]["displacement"])) for r in pts]
-        slid = [r["converged"] == "0" for r in pts]
+        slid = [results.collapse_detected(r) for r in pts]
         line, = ax.plot(alpha, slip, "-", label="%s = %s" % (series_key.split("/")[-1], value))
         ax.plot([a for a, s in zip(alpha, slid) if s], [u for u, s in zip(slip, slid) if s],
                 "o", mfc="none", color=line.get_color())

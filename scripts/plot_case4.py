@@ -17,6 +17,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+import results  # noqa: E402
+
 CP2 = {0.0: 2.0, 0.5: 2.4, 1.0: 2.6}
 C_U = 1.0
 
@@ -34,6 +36,8 @@ def main(smooth, rough):
     fig, ax = plt.subplots(figsize=(6.5, 4.5))
     lines = ["| C_w / c_u | CP2 K_pc | computed K_pc (last step) | error | peak | "
              "iterations |", "|---|---|---|---|---|---|"]
+    # Converged, accepted states only.
+    curves = [(ratio, results.states(steps)) for ratio, steps in curves]
     smooth_final = float(curves[0][1][-1]["load"])
     for ratio, steps in sorted(curves):
         u = [0] + [float(s["displacement"]) for s in steps]

@@ -21,19 +21,24 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+import results  # noqa: E402
+
 
 def main(directory, reference_label="analytic"):
-    with open(os.path.join(directory, "history.csv"), newline="") as f:
-        steps = list(csv.DictReader(f))
+    rows = results.history(directory)
     with open(os.path.join(directory, "summary.json")) as f:
         summary = json.load(f)
 
-    u = [float(s["displacement"]) for s in steps]
-    p = [float(s["load"]) for s in steps]
+    # Converged, accepted states on the curve; failed steps marked apart
+    # (their state is no equilibrium).
+    steps = results.states(rows) + results.failures(rows)
+    u = [results.number(s["displacement"]) for s in steps]
+    p = [results.number(s["load"]) for s in steps]
     failed = [s["converged"] == "0" for s in steps]
     fig, (ax, ax_it) = plt.subplots(2, 1, figsize=(6, 6.5), sharex=True,
                                     gridspec_kw={"height_ratios": [2, 1]})
-    ax.plot([0] + u, [0] + p, "o-", ms=4, label="computed")
+    ax.plot([0] + [x for x, f in zip(u, failed) if not f],
+            [0] + [y for y, f in zip(p, failed) if not f], "o-", ms=4, label="computed")
     ax.plot([x for x, f in zip(u, failed) if f], [y for y, f in zip(p, failed) if f],
             "o", mfc="white", color="C3", label="step failed")
     if summary.get("reference_load") is not None:

@@ -20,6 +20,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+import results  # noqa: E402
+
 
 def main(directory):
     with open(os.path.join(directory, "sweep.csv"), newline="") as f:
@@ -29,20 +31,23 @@ def main(directory):
     error = [[math.nan] * len(tols) for _ in ratios]
     drift = [[math.nan] * len(tols) for _ in ratios]
     detected = [[False] * len(tols) for _ in ratios]
-    lines = ["| aspect ratio | TOL | collapse detected | error | drift (max yield ratio) "
+    lines = ["| aspect ratio | TOL | outcome | error | drift (max yield ratio) "
              "| iterations |", "|---|---|---|---|---|---|"]
     for r in rows:
         i, j = ratios.index(r["aspect_ratio"]), tols.index(r["Solver/Tolerance"])
         with open(os.path.join(directory, "run-%03d" % int(r["run"]), "history.csv"),
                   newline="") as f:
-            steps = [s for s in csv.DictReader(f) if s["converged"] == "1"]
+            steps = results.states(list(csv.DictReader(f)))
         ratios_of_steps = [float(s["max_yield_ratio"]) for s in steps if s["max_yield_ratio"]]
-        error[i][j] = 100 * float(r["relative_error"])
+        detected[i][j] = results.collapse_detected(r)
+        # An error only where there is a collapse load.
+        error[i][j] = (100 * results.collapse_error(r)
+                       if detected[i][j] and results.collapse_error(r) is not None else math.nan)
         drift[i][j] = max(ratios_of_steps) if ratios_of_steps else math.nan
-        detected[i][j] = r["converged"] == "0"
-        lines.append("| %s | %s | %s | %+.1f%% | %.2e | %s |" % (
-            r["aspect_ratio"], r["Solver/Tolerance"], "yes" if detected[i][j] else "no",
-            error[i][j], drift[i][j], r["total_iterations"]))
+        lines.append("| %s | %s | %s | %s | %.2e | %s |" % (
+            r["aspect_ratio"], r["Solver/Tolerance"], r["outcome"],
+            "%+.1f%%" % error[i][j] if detected[i][j] else "-", drift[i][j],
+            r["total_iterations"]))
 
     fig, axes = plt.subplots(1, 2, figsize=(12, 4))
     panels = [(error, "error of the collapse load (%)", "RdBu_r", False),
@@ -50,14 +55,14 @@ def main(directory):
     for ax, (data, title, cmap, log) in zip(axes, panels):
         shown = [[math.log10(v) if log and v > 0 else (v if not log else math.nan)
                   for v in row] for row in data]
-        limit = max(abs(v) for row in shown for v in row if not math.isnan(v)) or 1
+        limit = max([abs(v) for row in shown for v in row if not math.isnan(v)], default=1) or 1
         image = ax.imshow(shown, cmap=cmap, aspect="auto",
                           vmin=-limit if not log else None, vmax=limit if not log else None)
         fig.colorbar(image, ax=ax)
         for i in range(len(ratios)):
             for j in range(len(tols)):
-                text = ("x " if not detected[i][j] else "") + (
-                    "%+.0f" % data[i][j] if not log else "%.0e" % data[i][j])
+                text = ("x" if not detected[i][j] and not log else
+                        "%+.0f" % data[i][j] if not log else "%.0e" % data[i][j])
                 ax.text(j, i, text, ha="center", va="center", fontsize=7)
         ax.set_xticks(range(len(tols)))
         ax.set_xticklabels(tols)

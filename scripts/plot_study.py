@@ -20,6 +20,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+import results  # noqa: E402
+
 
 def value(text):
     """A number; for a list value (stations, harmonics) its length."""
@@ -33,8 +35,7 @@ def value(text):
 def main(directory, x_name):
     with open(os.path.join(directory, "sweep.csv"), newline="") as f:
         rows = list(csv.DictReader(f))
-    columns = list(rows[0].keys())
-    swept = columns[1:columns.index("converged")]
+    swept = results.swept_names(rows)
     others = [n for n in swept if n != x_name]
 
     def key(r):
@@ -42,28 +43,32 @@ def main(directory, x_name):
 
     series = sorted({key(r) for r in rows}, key=lambda k: [value(v) for v in k])
     fig, (ax_err, ax_time) = plt.subplots(1, 2, figsize=(11, 4))
-    lines = ["| " + " | ".join(others + [x_name]) + " | collapse detected | "
-             "last converged load | relative error | iterations | DoFs | wall s |",
+    lines = ["| " + " | ".join(others + [x_name]) + " | outcome | "
+             "collapse load (last converged) | error | iterations | DoFs | wall s |",
              "|" + "---|" * (len(others) + 7)]
     for s in series:
         pts = sorted((r for r in rows if key(r) == s), key=lambda r: value(r[x_name]))
         xs = [value(r[x_name]) for r in pts]
-        err = [100 * value(r["relative_error"]) for r in pts]
-        detected = [r["converged"] == "0" for r in pts]
+        # The error of a collapse load; a run without a collapse has none
+        # (a gap in the line), and is listed with its outcome.
+        detected = [results.collapse_detected(r) for r in pts]
+        err = [100 * results.collapse_error(r) if d and results.collapse_error(r) is not None
+               else math.nan for r, d in zip(pts, detected)]
         label = ", ".join("%s = %s" % (n, v) for n, v in zip(others, s)) or None
         line, = ax_err.plot(xs, err, "-", label=label)
         ax_err.plot([a for a, d in zip(xs, detected) if d], [e for e, d in zip(err, detected) if d],
                     "o", color=line.get_color())
         ax_err.plot([a for a, d in zip(xs, detected) if not d],
-                    [e for e, d in zip(err, detected) if not d], "o", mfc="white",
-                    color=line.get_color())
+                    [0 for d in detected if not d], "x", color=line.get_color())
         ax_time.plot(xs, [value(r["wall_seconds"]) for r in pts], "o-", label=label)
         for r, d in zip(pts, detected):
             lines.append("| " + " | ".join(r[n] for n in others + [x_name]) +
-                         " | %s | %s | %+.1f%% | %s | %s | %.2f |" % (
-                             "yes" if d else "no", r["last_converged_load"],
-                             100 * value(r["relative_error"]), r["total_iterations"],
-                             r["dofs"], value(r["wall_seconds"])))
+                         " | %s | %s | %s | %s | %s | %.2f |" % (
+                             r["outcome"],
+                             r["collapse_load"] if d else "(%s)" % r["last_converged_load"],
+                             "%+.1f%%" % (100 * results.collapse_error(r))
+                             if d and results.collapse_error(r) is not None else "-",
+                             r["total_iterations"], r["dofs"], value(r["wall_seconds"])))
     xs_all = [value(r[x_name]) for r in rows]
     listed = any("," in r[x_name] for r in rows)
     for ax in (ax_err, ax_time):
@@ -72,7 +77,7 @@ def main(directory, x_name):
         if min(xs_all) > 0 and max(xs_all) / min(xs_all) > 20:
             ax.set_xscale("log")
     ax_err.axhline(0, color="k", lw=0.8)
-    ax_err.set_ylabel("collapse load error against analytic (%)")
+    ax_err.set_ylabel("collapse load error against analytic (%); x: no collapse")
     ax_err.set_title("open: no step failed (collapse not detected)", fontsize=10)
     ax_time.set_ylabel("wall time (s)")
     ax_time.set_yscale("log")

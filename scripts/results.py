@@ -1,0 +1,70 @@
+"""Reading thinlayer's results the way every script should.
+
+history.csv has a row per attempt at a load step: with automatic load
+stepping, attempts that failed and were cut back are rows too, and so is
+the failed step that ends a run. Curves show converged, accepted states
+only (states(), below); failures are marked apart (failures()). A run has
+a collapse load only where its outcome is "collapse" (or, under prescribed
+displacement, where it reached a plateau): collapse_load() is None
+otherwise, and no error is computed from it.
+"""
+import csv
+import math
+import os
+
+
+def read_csv(path):
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def history(directory):
+    """Every row of DIRECTORY/history.csv."""
+    return read_csv(os.path.join(directory, "history.csv"))
+
+
+def states(rows):
+    """The accepted, converged states: what a load-displacement curve shows."""
+    return [r for r in rows if r["converged"] == "1" and r.get("accepted", "1") == "1"]
+
+
+def failures(rows):
+    """The failed attempts that were not retried: those accepted as they
+    were (Solver/Continue after failure), and those after the last accepted
+    state (the step that ended the run, and a probe beyond it)."""
+    last = max([int(r["step"]) for r in rows if r.get("accepted", "1") == "1"], default=0)
+    return [r for r in rows if r["converged"] == "0"
+            and (r.get("accepted") == "1" or int(r["step"]) > last)]
+
+
+def number(text):
+    try:
+        value = float(text)
+    except (TypeError, ValueError):
+        return math.nan
+    return value
+
+
+def collapse_detected(summary_row):
+    """Whether a run (a sweep.csv row or a summary.json) ended in a collapse."""
+    return summary_row.get("outcome") == "collapse"
+
+
+def collapse_load(summary_row):
+    """The run's collapse load, or None where it has none."""
+    value = number(summary_row.get("collapse_load"))
+    return value if math.isfinite(value) else None
+
+
+def collapse_error(summary_row):
+    """The collapse load's error against the reference, or None."""
+    load, reference = collapse_load(summary_row), number(summary_row.get("reference_load"))
+    if load is None or not math.isfinite(reference):
+        return None
+    return (load - reference) / reference
+
+
+def swept_names(rows):
+    """The swept names of a sweep.csv: the columns between run and the figures."""
+    columns = list(rows[0].keys())
+    return columns[1:columns.index("parameter_file")]
