@@ -6,6 +6,7 @@
 
 #include <thinlayer/analysis.h>
 #include <thinlayer/input_error.h>
+#include <thinlayer/mode_constraints.h>
 #include <thinlayer/serendipity_constraints.h>
 
 #include <algorithm>
@@ -122,95 +123,20 @@ namespace thinlayer
     for (unsigned int m = 0; m < kinematics.n_modes(); ++m)
       {
         modes.push_back(std::make_unique<ModeState>(linear_solver));
-        make_mode_constraints(m);
+        make_mode_constraints(dof_handler,
+                              kinematics,
+                              m,
+                              parameters.kinematics.axis_boundary_id,
+                              element_constraints,
+                              boundary_data,
+                              modes[m]->structural_constraints,
+                              modes[m]->constraints);
         DoFTools::make_sparsity_pattern(dof_handler,
                                         dsp,
                                         modes[m]->constraints,
                                         /*keep_constrained_dofs=*/true);
       }
     sparsity.copy_from(dsp);
-  }
-
-
-  template <int dim>
-  void
-  Analysis<dim>::make_mode_constraints(const unsigned int m)
-  {
-    AffineConstraints<double> &structural = modes[m]->structural_constraints;
-    structural.clear();
-    structural.merge(element_constraints);
-
-    // Components that play no part in this mode (u_theta for n = 0).
-    for (unsigned int c = 0; c < kinematics.n_components(); ++c)
-      if (kinematics.is_dead_component(m, c))
-        {
-          std::vector<bool> mask(kinematics.n_components(), false);
-          mask[c] = true;
-          for (const auto dof :
-               DoFTools::extract_dofs(dof_handler, ComponentMask(mask)))
-            if (!structural.is_constrained(dof))
-              structural.add_line(dof);
-        }
-
-    // On the axis r = 0 the field must be single-valued: harmonic 0 has no
-    // radial (symmetric) or circumferential (antisymmetric) movement there,
-    // harmonic 1 moves sideways rigidly (u_z = 0, u_theta = -+ u_r) and
-    // higher harmonics not at all.
-    const int axis = parameters.kinematics.axis_boundary_id;
-    if (kinematics.is_fourier() && axis >= 0)
-      {
-        const unsigned int n    = kinematics.harmonic(m);
-        const double       sign = kinematics.is_antisymmetric() ? 1. : -1.;
-        std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
-        const auto zero = [&](const types::global_dof_index dof) {
-          if (!structural.is_constrained(dof))
-            structural.add_line(dof);
-        };
-        for (const auto &cell : dof_handler.active_cell_iterators())
-          for (const auto f : cell->face_indices())
-            if (cell->face(f)->at_boundary() &&
-                cell->face(f)->boundary_id() ==
-                  static_cast<types::boundary_id>(axis))
-              {
-                cell->face(f)->get_dof_indices(face_dofs);
-                // node[b][c]: the DoF of component c at the face's node b.
-                std::map<unsigned int, std::array<types::global_dof_index, 3>>
-                  node;
-                for (unsigned int k = 0; k < face_dofs.size(); ++k)
-                  {
-                    const auto c_b = fe.face_system_to_component_index(k);
-                    node[c_b.second][c_b.first] = face_dofs[k];
-                  }
-                for (const auto &[b, d] : node)
-                  {
-                    const auto r = d[0], z = d[1], theta = d[2];
-                    if (n == 0)
-                      zero(kinematics.is_antisymmetric() ? theta : r);
-                    else if (n == 1)
-                      {
-                        zero(z);
-                        if (!structural.is_constrained(theta))
-                          {
-                            structural.add_line(theta);
-                            structural.add_entry(theta, r, sign);
-                          }
-                      }
-                    else
-                      {
-                        zero(r);
-                        zero(z);
-                        zero(theta);
-                      }
-                  }
-              }
-      }
-    structural.close();
-
-    AffineConstraints<double> &constraints = modes[m]->constraints;
-    constraints.clear();
-    constraints.merge(structural);
-    boundary_data.make_zero_constraints(dof_handler, constraints);
-    constraints.close();
   }
 
 

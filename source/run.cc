@@ -60,7 +60,7 @@ namespace thinlayer
     /**
      * A failed step under load is a collapse only with a mechanism as
      * evidence: its secant stiffness along the increment below this
-     * fraction of the elastic one in magnitude, i.e. displacements at
+     * fraction of the elastic one (and positive), i.e. displacements at
      * least ten times the elastic response to the same load increment.
      */
     constexpr double mechanism_stiffness_ratio = 0.1;
@@ -147,9 +147,12 @@ namespace thinlayer
     bool
     shows_mechanism(const double stiffness_ratio, const double growth_ratio)
     {
-      // Either sign: an iterate that ran away against the load has grown
-      // without bound too.
-      return std::abs(stiffness_ratio) < mechanism_stiffness_ratio ||
+      // Only growth along the load: an iterate that ran away against it
+      // is a method diverging (Case 2 at aspect ratio 1000: Newton's runs
+      // away at 1.08, where accelerated initial stress converges states up
+      // to 1.11), not a mechanism.
+      return (stiffness_ratio >= 0 &&
+              stiffness_ratio < mechanism_stiffness_ratio) ||
              growth_ratio >= mechanism_growth_ratio;
     }
 

@@ -265,9 +265,6 @@ namespace thinlayer
     void
     setup_dofs_and_constraints();
 
-    void
-    make_mode_constraints(const unsigned int m);
-
     /// The laws of the materials, the point history and the strain cache.
     void
     setup_points();
