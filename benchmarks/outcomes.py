@@ -14,7 +14,11 @@ steps attempted, iterations and the median wall time of N runs (default 1).
 A run whose outcome is not a collapse is never given an error: the table
 says what happened instead. Writes output/benchmarks/outcomes/outcomes.csv
 and outcomes.md (also printed). --quick: level 1 and aspect ratios 10 and
-1000 only. THINLAYER in the environment names another binary.
+1000 only. --kpc instead tables Case 4's passive coefficient K_pc by the
+default method against the wall column's aspect ratio and the mesh level
+for C_w / c_u = 0 (smooth wall), 0.5 and 1, beside the slip-line value
+1 + asin(a) + sqrt(1 - a^2) (kpc.csv, kpc.md). THINLAYER in the
+environment names another binary.
 """
 import argparse
 import csv
@@ -62,7 +66,7 @@ METHODS = {
 }
 
 
-def run(prm, geometry, method, directory):
+def run(prm, geometry, method, directory, extra=()):
     command = [THINLAYER, os.path.join(TOP, prm)]
     if METHODS[method] is None:
         # The scene's own solver entries give way to the defaults.
@@ -80,6 +84,8 @@ def run(prm, geometry, method, directory):
                "-s", "Output/Write VTU=false",
                "-s", "Output/Print timing=false",
                "-s", "Mesh/Geometry parameters=" + geometry]
+    for entry in extra:
+        command += ["-s", entry]
     done = subprocess.run(command, capture_output=True, text=True)
     if done.returncode != 0:
         return {"outcome": "error", "reason": done.stderr.strip()[-200:]}
@@ -91,13 +97,66 @@ def number(value):
     return value if isinstance(value, (int, float)) and math.isfinite(value) else float("nan")
 
 
+def kpc_table(quick):
+    """K_pc by the default method against aspect ratio, level and C_w / c_u."""
+    rows = []
+    _, levels, ratios = CASES["case4-rough"]
+    for adhesion in (0.0, 0.5, 1.0):
+        slip_line = 1 + math.asin(adhesion) + math.sqrt(1 - adhesion ** 2)
+        prm = "prm/case4-smooth-wall.prm" if adhesion == 0 else "prm/case4-rough-wall.prm"
+        for level, template in sorted(levels.items()):
+            for ar in ratios:
+                if quick and (level > 1 or ar not in (10, 1000)):
+                    continue
+                directory = os.path.join(OUT, "runs", "kpc-%g-%d-%s" % (adhesion, level, ar))
+                extra = [] if adhesion == 0 else ["Material 2/Cohesion=%g" % adhesion]
+                s = run(prm, template.format(ar=ar), "default", directory, extra)
+                kpc = number(s.get("collapse_load"))
+                last = number(s.get("last_converged_load"))
+                row = {"adhesion": adhesion, "level": level, "aspect_ratio": ar,
+                       "slip_line": slip_line, "outcome": s.get("outcome"), "kpc": kpc,
+                       "last_converged": last,
+                       "against_slip_line": (kpc - slip_line) / slip_line
+                       if math.isfinite(kpc) else float("nan"),
+                       "wall_seconds": number(s.get("wall_seconds"))}
+                rows.append(row)
+                print(format_kpc(row), flush=True)
+    with open(os.path.join(OUT, "kpc.csv"), "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+        writer.writeheader()
+        writer.writerows(rows)
+    lines = [KPC_HEADER, "|" + "---|" * (KPC_HEADER.count("|") - 1)] + [format_kpc(r) for r in rows]
+    with open(os.path.join(OUT, "kpc.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+
+KPC_HEADER = ("| C_w / c_u | level | AR | slip line | outcome | K_pc (plateau) "
+              "| vs slip line | wall s |")
+
+
+def format_kpc(r):
+    kpc = ("%.4f" % r["kpc"] if math.isfinite(r["kpc"])
+           else "(%.4f)" % r["last_converged"])
+    error = "%+.2f%%" % (100 * r["against_slip_line"]) if math.isfinite(r["against_slip_line"]) else "-"
+    return "| %g | %d | %s | %.3f | %s | %s | %s | %.2f |" % (
+        r["adhesion"], r["level"], r["aspect_ratio"], r["slip_line"], r["outcome"], kpc,
+        error, r["wall_seconds"])
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="level 1, aspect ratios 10 and 1000")
     parser.add_argument("--repeat", type=int, default=1, help="runs per scene (median time)")
     parser.add_argument("--methods", default=",".join(METHODS), help="comma-separated: " + ", ".join(METHODS))
     parser.add_argument("--cases", default=",".join(CASES), help="comma-separated: " + ", ".join(CASES))
+    parser.add_argument("--kpc", action="store_true",
+                        help="Case 4's K_pc table instead (default method)")
     args = parser.parse_args()
+    os.makedirs(OUT, exist_ok=True)
+    if args.kpc:
+        kpc_table(args.quick)
+        return
     methods = args.methods.split(",")
     if "newton" not in methods:
         methods = ["newton"] + methods  # the reference of every row

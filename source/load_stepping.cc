@@ -6,10 +6,12 @@
 namespace thinlayer
 {
   LoadStepping::LoadStepping(const LoadingParameters &loading,
-                             const bool               continue_after_failure)
+                             const bool               continue_after_failure,
+                             const unsigned int       easy_iterations)
     : increments(loading.load_increments)
     , resolution(loading.collapse_resolution)
     , continue_after_failure(continue_after_failure)
+    , easy_iterations(easy_iterations)
     , next_target(0)
     , accepted(0)
     , increment(loading.load_increments.front())
@@ -68,7 +70,7 @@ namespace thinlayer
   {
     if (result.converged)
       {
-        advance();
+        advance(result.iterations <= easy_iterations);
         return Next::accept;
       }
     if (result.non_finite)
@@ -92,7 +94,7 @@ namespace thinlayer
       }
     if (continue_after_failure)
       {
-        advance();
+        advance(false);
         return Next::accept_failed;
       }
     return Next::stop;
@@ -100,7 +102,7 @@ namespace thinlayer
 
 
   void
-  LoadStepping::advance()
+  LoadStepping::advance(const bool easy)
   {
     const double reached = target();
     // Whether this step was shorter than the programme's: then it grows
@@ -113,9 +115,13 @@ namespace thinlayer
       ++next_target;
     accepted = reached;
     if (!finished())
-      increment =
-        cut_short && std::abs(2 * increment) < std::abs(increments[next_target])
-          ? 2 * increment
-          : increments[next_target];
+      {
+        // A step cut short grows back by doubling after an easy one, and
+        // keeps its length after a hard one; never past the programme's.
+        const double programme = increments[next_target];
+        const double next =
+          !cut_short ? programme : (easy ? 2 * increment : increment);
+        increment = std::abs(next) < std::abs(programme) ? next : programme;
+      }
   }
 } // namespace thinlayer

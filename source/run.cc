@@ -231,7 +231,11 @@ namespace thinlayer
     ProgrammeResult
     Programme::run()
     {
-      LoadStepping stepping(p.loading, p.solver.continue_after_failure);
+      // An easy step: at most a quarter of the constant-stiffness
+      // iteration limit (Newton's steps take a few iterations each).
+      LoadStepping stepping(p.loading,
+                            p.solver.continue_after_failure,
+                            p.solver.max_iterations / 4);
       while (!stepping.finished())
         {
           const Attempt a = attempt(stepping.step(), stepping.target());

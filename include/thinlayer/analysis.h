@@ -61,9 +61,10 @@ namespace thinlayer
    *   acceptance of a load step's state.
    *
    * A load step is solved by the SolutionMethod that the Solver section
-   * names (create_solution_method()); the body asks it for the step and
-   * then accepts the step's state, converged or not, so that the mechanism
-   * at failure can be seen. For isotropic elasticity the modes decouple,
+   * names (create_solution_method()). Its state, converged or not (a
+   * failed step shows the mechanism), stays pending until the run accepts
+   * it or rejects it to retry a smaller step (LoadStepping); the method is
+   * told either way. For isotropic elasticity the modes decouple,
    * so a constant-stiffness iteration is one forward/backward substitution
    * per mode and one pass of the point loop.
    *

@@ -14,13 +14,15 @@ namespace thinlayer
    *
    * With a collapse resolution r > 0 (the default) the stepping is
    * automatic: a step that fails is halved and tried again from the last
-   * accepted state, and after every converged step the increment doubles
-   * again, up to the programme's own. A step that still fails when it is
-   * no longer than r times its target load factor (or than r times the
-   * first increment, for a collapse load near zero) ends the run: the
-   * collapse load is then bracketed between the last accepted load factor
-   * and that target to within r. With r = 0 the programme is run as given
-   * (the paper's way): the first failed step ends it, or, with
+   * accepted state, and after every easy converged step (few iterations)
+   * the increment doubles again, up to the programme's own. (Growing after
+   * every converged step makes every second attempt fail where only small
+   * steps converge, each failure costing the whole iteration limit.) A step
+   * that still fails when it is no longer than r times its target load factor
+   * (or than r times the first increment, for a collapse load near zero) ends
+   * the run: the collapse load is then bracketed between the last accepted load
+   * factor and that target to within r. With r = 0 the programme is run as
+   * given (the paper's way): the first failed step ends it, or, with
    * Solver/Continue after failure, its state is accepted and the
    * programme goes on (with automatic stepping a failure that is bracketed
    * always ends the run: going on from a collapsed state would only
@@ -46,8 +48,14 @@ namespace thinlayer
       stop
     };
 
+    /**
+     * The programme of @p loading. A converged step counts as easy (and the
+     * next one may grow) when it took at most @p easy_iterations
+     * iterations.
+     */
     LoadStepping(const LoadingParameters &loading,
-                 const bool               continue_after_failure);
+                 const bool               continue_after_failure,
+                 const unsigned int       easy_iterations);
 
     /// Whether the programme's last target has been reached.
     bool
@@ -77,13 +85,15 @@ namespace thinlayer
     n_cuts() const;
 
   private:
-    /// Move on after a step to target() was accepted.
+    /// Move on after a step to target() was accepted; @p easy: it may
+    /// grow.
     void
-    advance();
+    advance(const bool easy);
 
     const std::vector<double> increments;
     const double              resolution;
     const bool                continue_after_failure;
+    const unsigned int        easy_iterations;
     /// The programme's targets: running sums of the increments.
     std::vector<double> targets;
     /// The programme target being walked to.
