@@ -140,7 +140,8 @@ namespace thinlayer
       Patterns::Double(0, 1),
       "Automatic load stepping: a load step that fails is halved and tried "
       "again from the last accepted state, and steps grow back to the "
-      "programme's after converged ones; a step that still fails when it "
+      "programme's after easy ones (converged in at most a quarter of "
+      "Solver/Maximum iterations); a step that still fails when it "
       "is at most this fraction of its load factor ends the run, the "
       "collapse load then bracketed to it (0.005: 0.5%). 0: the programme "
       "as given, the first failed step ending the run (the paper's way).");
