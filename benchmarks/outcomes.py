@@ -97,6 +97,18 @@ def number(value):
     return value if isinstance(value, (int, float)) and math.isfinite(value) else float("nan")
 
 
+def write_table(name, rows, header, format_row):
+    """NAME.csv (every field) and NAME.md (the table, also printed) in OUT."""
+    with open(os.path.join(OUT, name + ".csv"), "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+        writer.writeheader()
+        writer.writerows(rows)
+    lines = [header, "|" + "---|" * (header.count("|") - 1)] + [format_row(r) for r in rows]
+    with open(os.path.join(OUT, name + ".md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+
 def kpc_table(quick):
     """K_pc by the default method against aspect ratio, level and C_w / c_u."""
     rows = []
@@ -121,14 +133,7 @@ def kpc_table(quick):
                        "wall_seconds": number(s.get("wall_seconds"))}
                 rows.append(row)
                 print(format_kpc(row), flush=True)
-    with open(os.path.join(OUT, "kpc.csv"), "w", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
-        writer.writeheader()
-        writer.writerows(rows)
-    lines = [KPC_HEADER, "|" + "---|" * (KPC_HEADER.count("|") - 1)] + [format_kpc(r) for r in rows]
-    with open(os.path.join(OUT, "kpc.md"), "w") as f:
-        f.write("\n".join(lines) + "\n")
-    print("\n".join(lines))
+    write_table("kpc", rows, KPC_HEADER, format_kpc)
 
 
 KPC_HEADER = ("| C_w / c_u | level | AR | slip line | outcome | K_pc (plateau) "
@@ -199,14 +204,7 @@ def main():
                     rows.append(row)
                     print(format_row(row), flush=True)
 
-    with open(os.path.join(OUT, "outcomes.csv"), "w", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
-        writer.writeheader()
-        writer.writerows(rows)
-    lines = [HEADER, "|" + "---|" * (HEADER.count("|") - 1)] + [format_row(r) for r in rows]
-    with open(os.path.join(OUT, "outcomes.md"), "w") as f:
-        f.write("\n".join(lines) + "\n")
-    print("\n".join(lines))
+    write_table("outcomes", rows, HEADER, format_row)
 
 
 HEADER = ("| case | level | AR | method | outcome | collapse load | vs Newton | vs analytic "
