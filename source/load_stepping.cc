@@ -16,7 +16,6 @@ namespace thinlayer
     , accepted(0)
     , increment(loading.load_increments.front())
     , steps(0)
-    , cuts(0)
     , step_cuts(0)
   {
     double sum = 0;
@@ -58,13 +57,6 @@ namespace thinlayer
   }
 
 
-  unsigned int
-  LoadStepping::n_cuts() const
-  {
-    return cuts;
-  }
-
-
   LoadStepping::Next
   LoadStepping::report(const StepResult &result)
   {
@@ -89,7 +81,6 @@ namespace thinlayer
           return Next::stop;
         increment = attempted / 2;
         ++step_cuts;
-        ++cuts;
         return Next::retry;
       }
     if (continue_after_failure)

@@ -80,9 +80,6 @@ namespace thinlayer
     Next
     report(const StepResult &result);
 
-    /// How often a failed step has been halved in the whole run.
-    unsigned int
-    n_cuts() const;
 
   private:
     /// Move on after a step to target() was accepted; @p easy: it may
@@ -102,7 +99,6 @@ namespace thinlayer
     /// The current step length.
     double       increment;
     unsigned int steps;
-    unsigned int cuts;
     /// Halvings of the current step.
     unsigned int                  step_cuts;
     static constexpr unsigned int max_step_cuts = 60;
