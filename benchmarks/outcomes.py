@@ -21,12 +21,13 @@ for C_w / c_u = 0 (smooth wall), 0.5 and 1, beside the slip-line value
 environment names another binary.
 """
 import argparse
-import csv
 import json
 import math
 import os
 import statistics
 import subprocess
+
+from run import write_results  # the benchmarks' one table writer
 
 TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 THINLAYER = os.environ.get("THINLAYER", os.path.join(TOP, "build", "thinlayer"))
@@ -98,15 +99,8 @@ def number(value):
 
 
 def write_table(name, rows, header, format_row):
-    """NAME.csv (every field) and NAME.md (the table, also printed) in OUT."""
-    with open(os.path.join(OUT, name + ".csv"), "w", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
-        writer.writeheader()
-        writer.writerows(rows)
-    lines = [header, "|" + "---|" * (header.count("|") - 1)] + [format_row(r) for r in rows]
-    with open(os.path.join(OUT, name + ".md"), "w") as f:
-        f.write("\n".join(lines) + "\n")
-    print("\n".join(lines))
+    """NAME.csv and NAME.md (also printed) in OUT, as benchmarks/run.py writes its tables."""
+    write_results(rows, name, header, format_row, OUT)
 
 
 def kpc_table(quick):

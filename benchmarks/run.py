@@ -116,14 +116,14 @@ def run_once(prm, geometry, solver, tol, directory, extra=()):
         return json.load(f), peak_kb
 
 
-def write_results(rows, name, header, format_row):
-    """NAME.csv (every field) and NAME.md (a table, also printed) in OUT."""
-    with open(os.path.join(OUT, name + ".csv"), "w", newline="") as f:
+def write_results(rows, name, header, format_row, out=OUT):
+    """NAME.csv (every field) and NAME.md (a table, also printed) in @p out."""
+    with open(os.path.join(out, name + ".csv"), "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
         writer.writeheader()
         writer.writerows(rows)
     lines = [header, "|" + "---|" * (header.count("|") - 1)] + [format_row(r) for r in rows]
-    with open(os.path.join(OUT, name + ".md"), "w") as f:
+    with open(os.path.join(out, name + ".md"), "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))
 
