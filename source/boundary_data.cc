@@ -51,8 +51,11 @@ namespace thinlayer
     class ModeAmplitude : public Function<2>
     {
     public:
-      ModeAmplitude(const std::function<Tensor<1, 3>(const Point<2> &)> &f)
-        : Function<2>(3)
+      /// As many components as the element has (2 in plane strain, 3 for
+      /// Fourier): deal.II writes that many values per point.
+      ModeAmplitude(const unsigned int n_components,
+                    const std::function<Tensor<1, 3>(const Point<2> &)> &f)
+        : Function<2>(n_components)
         , f(f)
       {}
 
@@ -143,25 +146,26 @@ namespace thinlayer
         if (c->second.constrained.n_selected_components(n) == 0)
           continue;
         const FunctionParser<3> &u = *c->second.displacement;
-        const ModeAmplitude      amplitude([&](const Point<2> &x) {
-          if (!kinematics.is_fourier())
-            return evaluate(u, x, 0);
-          Tensor<1, 3> a;
-          const double d = 2 * numbers::PI / n_circle_points;
-          for (unsigned int j = 0; j < n_circle_points; ++j)
-            {
-              const double       theta = j * d;
-              const Tensor<1, 3> g     = evaluate(u, x, theta);
-              a[0] += g[0] * kinematics.T1_at(m, theta) * d;
-              a[1] += g[1] * kinematics.T1_at(m, theta) * d;
-              a[2] += g[2] * kinematics.T2_at(m, theta) * d;
-            }
-          const double c1 = kinematics.c1(m), c2 = kinematics.c2(m);
-          a[0] = (c1 > 0) ? a[0] / c1 : 0.;
-          a[1] = (c1 > 0) ? a[1] / c1 : 0.;
-          a[2] = (c2 > 0) ? a[2] / c2 : 0.;
-          return a;
-        });
+        const ModeAmplitude      amplitude(
+          kinematics.n_components(), [&](const Point<2> &x) {
+            if (!kinematics.is_fourier())
+              return evaluate(u, x, 0);
+            Tensor<1, 3> a;
+            const double d = 2 * numbers::PI / n_circle_points;
+            for (unsigned int j = 0; j < n_circle_points; ++j)
+              {
+                const double       theta = j * d;
+                const Tensor<1, 3> g     = evaluate(u, x, theta);
+                a[0] += g[0] * kinematics.T1_at(m, theta) * d;
+                a[1] += g[1] * kinematics.T1_at(m, theta) * d;
+                a[2] += g[2] * kinematics.T2_at(m, theta) * d;
+              }
+            const double c1 = kinematics.c1(m), c2 = kinematics.c2(m);
+            a[0] = (c1 > 0) ? a[0] / c1 : 0.;
+            a[1] = (c1 > 0) ? a[1] / c1 : 0.;
+            a[2] = (c2 > 0) ? a[2] / c2 : 0.;
+            return a;
+          });
         VectorTools::interpolate_boundary_values(mapping,
                                                  dof_handler,
                                                  c->first,
