@@ -122,6 +122,11 @@ namespace thinlayer
         p.boundaries[id].parse(prm, file, id, p.kinematics, p.mesh);
       p.loading.parse(prm, file);
       p.solver.parse(prm, file);
+      // With automatic stepping the load stepping halves a failed step and
+      // records each attempt; cut-backs inside Newton would repeat that
+      // work unrecorded (up to 5 x 25 factorisations per failed attempt).
+      if (p.loading.collapse_resolution > 0)
+        p.solver.max_cut_backs = 0;
       p.monitors.parse(prm, file, p.kinematics);
       p.reference.parse(prm, file, p.mesh);
       p.sweep.parse(prm, file);

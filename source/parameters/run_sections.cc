@@ -204,9 +204,11 @@ namespace thinlayer
     prm.declare_entry("Maximum cut-backs",
                       "4",
                       Patterns::Integer(0, 20),
-                      "Newton: how often a load step that does not "
-                      "converge is halved before it counts as failed "
-                      "(collapse).");
+                      "Newton with the load programme as given "
+                      "(Loading/Collapse resolution = 0): how often a load "
+                      "step that does not converge is halved before it "
+                      "counts as failed. Automatic stepping halves failed "
+                      "steps itself, and this entry is then not used.");
     prm.declare_entry("Maximum Newton iterations",
                       "25",
                       Patterns::Integer(1),

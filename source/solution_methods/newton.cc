@@ -89,6 +89,7 @@ namespace thinlayer
   void
   NewtonMethod<dim>::state_accepted()
   {
+    ReturnMappingMethod<dim>::state_accepted();
     accepted_tangents = tangents;
   }
 

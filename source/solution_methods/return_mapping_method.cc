@@ -21,6 +21,44 @@ namespace thinlayer
     const Vector<double> zero(analysis.get_dof_handler().n_dofs());
     correction.assign(analysis.n_modes(), zero);
     previous_increment.assign(analysis.n_modes(), zero);
+    accepted_increment.assign(analysis.n_modes(), zero);
+    accepted_step        = 0;
+    accepted_load_factor = analysis.accepted_load_factor();
+  }
+
+
+  template <int dim>
+  void
+  ReturnMappingMethod<dim>::state_accepted()
+  {
+    for (unsigned int m = 0; m < analysis.n_modes(); ++m)
+      accepted_increment[m] = analysis.mode(m).step_increment;
+    accepted_step = analysis.accepted_load_factor() - accepted_load_factor;
+    accepted_load_factor = analysis.accepted_load_factor();
+  }
+
+
+  template <int dim>
+  void
+  ReturnMappingMethod<dim>::predict(const double target)
+  {
+    const double dlambda = target - analysis.accepted_load_factor();
+    const double scale   = accepted_step != 0 ? dlambda / accepted_step : 0;
+    for (unsigned int m = 0; m < analysis.n_modes(); ++m)
+      {
+        ModeState &mode = analysis.mode(m);
+        if (scale > 0)
+          {
+            mode.step_increment = accepted_increment[m];
+            mode.step_increment *= scale;
+          }
+        else
+          {
+            // The first step, or a reversal of the load: no predictor.
+            mode.step_increment = mode.unit_prescribed_displacement;
+            mode.step_increment *= dlambda;
+          }
+      }
   }
 
 
@@ -86,13 +124,7 @@ namespace thinlayer
   bool
   ReturnMappingMethod<dim>::attempt(const double target, StepResult &result)
   {
-    const double dlambda = target - analysis.accepted_load_factor();
-    for (unsigned int m = 0; m < analysis.n_modes(); ++m)
-      {
-        ModeState &mode     = analysis.mode(m);
-        mode.step_increment = mode.unit_prescribed_displacement;
-        mode.step_increment *= dlambda;
-      }
+    predict(target);
     start_attempt();
 
     ResidualNorms norms = analysis.evaluate_residual(target);

@@ -19,9 +19,12 @@ namespace thinlayer
   /**
    * Newton's method: the correction K_t^-1 r with the consistent tangent
    * K_t of the return mappings, assembled and refactorised every
-   * iteration, a backtracking line search on |r|_2, and the load step
-   * halved (Solver/Maximum cut-backs) when an attempt does not converge in
-   * Solver/Maximum Newton iterations.
+   * iteration, a backtracking line search on |r|_2, and, with the load
+   * programme as given, the load step halved (Solver/Maximum cut-backs)
+   * when an attempt does not converge in Solver/Maximum Newton iterations
+   * (automatic stepping halves failed steps itself). An attempt starts
+   * from the secant predictor (ReturnMappingMethod) with the tangents of
+   * the accepted state.
    *
    * In the Fourier case the stations mix the harmonics, so the consistent
    * tangent couples them: it is one matrix over all modes, mode m's DoFs

@@ -48,6 +48,11 @@ namespace thinlayer
     StepResult
     solve_step(const double new_load_factor) override;
 
+    /// Keeps the accepted step's increment for the next step's predictor;
+    /// a derived class that overrides this calls it.
+    void
+    state_accepted() override;
+
   protected:
     /**
      * One iteration towards the load factor @p target: from the modes'
@@ -90,6 +95,23 @@ namespace thinlayer
 
   private:
     GrowthMonitor growth;
+
+    /**
+     * The secant predictor: each mode's increment of the last accepted
+     * step and that step's size in load factor (0: none yet). An attempt
+     * in the same direction starts from that increment scaled to its own
+     * size rather than from the prescribed displacements alone, so that a
+     * step along a plastic branch starts near its end. The scaled
+     * increment meets the step's prescribed displacements exactly: they
+     * are proportional to the load factor.
+     */
+    std::vector<Vector<double>> accepted_increment;
+    double                      accepted_step        = 0;
+    double                      accepted_load_factor = 0;
+
+    /// The increment an attempt to @p target starts from.
+    void
+    predict(const double target);
 
     /// Iterations from the accepted state to @p target; true if converged.
     bool
