@@ -17,6 +17,7 @@ namespace thinlayer
   {
     accelerated.initialize();
     newton.initialize();
+    newton_only = false;
   }
 
 
@@ -24,6 +25,8 @@ namespace thinlayer
   StepResult
   NewtonFallbackMethod<dim>::solve_step(const double new_load_factor)
   {
+    if (newton_only)
+      return newton.solve_step(new_load_factor);
     const StepResult first = accelerated.solve_step(new_load_factor);
     if (first.converged || first.non_finite)
       return first;
@@ -31,6 +34,7 @@ namespace thinlayer
     // Newton starts again from the accepted state (its tangents are those
     // of that state), so the accelerated attempt leaves nothing behind.
     StepResult result = newton.solve_step(new_load_factor);
+    newton_only       = result.converged;
     result.iterations += first.iterations;
     return result;
   }

@@ -12,11 +12,17 @@ namespace thinlayer
    * first iterated with the constant elastic stiffness and Anderson
    * acceleration (one factorisation for the whole analysis, cheap
    * iterations); a step it cannot converge is tried again from the
-   * accepted state by Newton's method (consistent tangent, line search,
-   * cut-back). Away from collapse the cheap method does the work; near it,
-   * where constant-stiffness iterations creep and Anderson's
-   * extrapolation can stall, Newton decides whether the step has an
-   * equilibrium, so the collapse load is Newton's.
+   * accepted state by Newton's method (consistent tangent, line search).
+   * Away from collapse the cheap method does the work; near it, where
+   * constant-stiffness iterations creep and Anderson's extrapolation can
+   * stall, Newton decides whether the step has an equilibrium, so the
+   * collapse load is Newton's.
+   *
+   * Once Newton has had to converge a step, the following steps go to it
+   * directly: the plastic zone has then grown to where the elastic
+   * stiffness converges slowly, and each step would first spend the whole
+   * iteration limit of the cheap method (Case 3 at aspect ratio 1000: 250
+   * iterations a step, then 4 to 10 of Newton's; 10.1 s against 3.5 s).
    *
    * Both methods keep their state; both are told of accepted and rejected
    * states.
@@ -43,6 +49,8 @@ namespace thinlayer
   private:
     AcceleratedInitialStressMethod<dim> accelerated;
     NewtonMethod<dim>                   newton;
+    /// Newton has converged a step: it takes every step from now on.
+    bool newton_only = false;
   };
 } // namespace thinlayer
 
