@@ -66,6 +66,22 @@ namespace thinlayer
     constexpr double mechanism_stiffness_ratio = 0.1;
 
     /**
+     * A step that converges under load with a secant stiffness below this
+     * fraction of the elastic one (displacements a hundred times the
+     * elastic response) has reached the mechanism as well: automatic
+     * stepping brackets this knee of the load-displacement curve rather
+     * than accepting states along it. Beyond the knee, a thin layer's
+     * curve can creep on for several per cent of load at a hundredth of
+     * the elastic stiffness and less (Case 2 at aspect ratio 1000: from
+     * 1.03 to 1.10, with displacements 3.7 to 213 times the footing's
+     * elastic 1.6), and how far a method follows that creep depends on its
+     * iteration budget, not on the body; the knee does not (Prandtl's
+     * curve stays above 0.02 of the elastic stiffness to within 0.3% of
+     * (2 + pi)c, so there the knee is the limit load).
+     */
+    constexpr double mechanism_knee_ratio = 0.01;
+
+    /**
      * Or, for a step stopped by its iteration limit, the change of its
      * displacement still growing linearly: at the end at least this many
      * times the change at half the limit (2 for linear growth; a step
@@ -102,11 +118,13 @@ namespace thinlayer
       double last_converged_load_factor = 0;
 
       /// How a run that a failed step ended, ended.
-      bool   stopped            = false;
-      bool   non_finite         = false;
-      double failed_load_factor = std::numeric_limits<double>::quiet_NaN();
-      double stiffness_ratio    = std::numeric_limits<double>::quiet_NaN();
-      double growth_ratio       = std::numeric_limits<double>::quiet_NaN();
+      bool stopped = false;
+      /// The step that ended it converged, on the mechanism.
+      bool   stopped_on_mechanism = false;
+      bool   non_finite           = false;
+      double failed_load_factor   = std::numeric_limits<double>::quiet_NaN();
+      double stiffness_ratio      = std::numeric_limits<double>::quiet_NaN();
+      double growth_ratio         = std::numeric_limits<double>::quiet_NaN();
       /// Where a probe beyond the failed step showed the mechanism.
       double probe_load_factor = std::numeric_limits<double>::quiet_NaN();
     };
@@ -121,13 +139,19 @@ namespace thinlayer
                   const double             load,
                   const double             displacement,
                   const StepResult        &result,
+                  const bool               on_mechanism,
                   const LoadStepping::Next next,
                   const bool               probe,
                   std::ostream            &out)
     {
       out << "  step " << printf("%4.0f", step) << "  load factor "
           << printf("%10.4g", load_factor);
-      if (result.converged)
+      if (on_mechanism)
+        out << "  converged on the mechanism (secant stiffness below "
+            << mechanism_knee_ratio << " of the elastic one): "
+            << (next == LoadStepping::Next::retry ? "cut back"
+                                                  : "not accepted");
+      else if (result.converged)
         out << "  load " << printf("%12.5e", load) << "  displacement "
             << printf("%12.5e", displacement) << "  iterations "
             << printf("%4.0f", result.iterations) << "  converged";
@@ -147,12 +171,17 @@ namespace thinlayer
     bool
     shows_mechanism(const double stiffness_ratio, const double growth_ratio)
     {
-      // Only growth along the load: an iterate that ran away against it
-      // is a method diverging (Case 2 at aspect ratio 1000: Newton's runs
-      // away at 1.08, where accelerated initial stress converges states up
-      // to 1.11), not a mechanism.
-      return (stiffness_ratio >= 0 &&
-              stiffness_ratio < mechanism_stiffness_ratio) ||
+      // Displacements ten times the elastic ones in either direction: at
+      // and beyond the limit load no equilibrium is near, and where a
+      // failing iterate runs depends on the method (from the secant
+      // predictor it often runs against the load). A method that merely
+      // diverges converges again once the step is cut: this is asked of a
+      // step that failed at the collapse resolution (or, with the programme
+      // as given, of the step that failed, the paper's collapse). The creep of
+      // a thin layer's curve, where Newton once ran away at 1.08 in Case 2
+      // while states up to 1.11 converge, is caught earlier by its knee
+      // (mechanism_knee_ratio).
+      return std::abs(stiffness_ratio) < mechanism_stiffness_ratio ||
              growth_ratio >= mechanism_growth_ratio;
     }
 
@@ -189,8 +218,11 @@ namespace thinlayer
         double       load_factor;
         StepResult   result;
         double       load;
-        /// Failed attempts: Analysis::secant_stiffness_ratio().
+        /// Analysis::secant_stiffness_ratio() of the attempt's state.
         double stiffness_ratio;
+        /// A converged attempt on the mechanism (mechanism_knee_ratio):
+        /// never accepted under automatic stepping.
+        bool on_mechanism;
       };
 
       /// Solve the step to @p load_factor and measure it.
@@ -239,7 +271,10 @@ namespace thinlayer
       while (!stepping.finished())
         {
           const Attempt a = attempt(stepping.step(), stepping.target());
-          const LoadStepping::Next next = stepping.report(a.result);
+          // A state on the mechanism is cut back like a failed one.
+          StepResult reported           = a.result;
+          reported.converged            = a.result.converged && !a.on_mechanism;
+          const LoadStepping::Next next = stepping.report(reported);
           record(a, next);
           if (next == LoadStepping::Next::retry)
             {
@@ -247,7 +282,7 @@ namespace thinlayer
               continue;
             }
           ++result.steps_run;
-          if (a.result.converged)
+          if (reported.converged)
             {
               accept(a);
               continue;
@@ -261,11 +296,12 @@ namespace thinlayer
               analysis.accept_step();
               continue;
             }
-          result.stopped            = true;
-          result.non_finite         = a.result.non_finite;
-          result.failed_load_factor = a.load_factor;
-          result.stiffness_ratio    = a.stiffness_ratio;
-          result.growth_ratio       = a.result.growth_ratio;
+          result.stopped              = true;
+          result.stopped_on_mechanism = a.on_mechanism;
+          result.non_finite           = a.result.non_finite;
+          result.failed_load_factor   = a.load_factor;
+          result.stiffness_ratio      = a.stiffness_ratio;
+          result.growth_ratio         = a.result.growth_ratio;
           if (stepping.automatic() && !a.result.non_finite &&
               analysis.has_external_load() &&
               !shows_mechanism(a.stiffness_ratio, a.result.growth_ratio))
@@ -279,7 +315,7 @@ namespace thinlayer
     Programme::Attempt
     Programme::attempt(const unsigned int step, const double load_factor)
     {
-      Attempt a{step, load_factor, {}, 0, 0};
+      Attempt a{step, load_factor, {}, 0, 0, false};
       {
         TimerOutput::Scope scope(timer, "load steps");
         a.result            = analysis.solve(load_factor);
@@ -293,9 +329,11 @@ namespace thinlayer
         }
       result.total_iterations += a.result.iterations;
       ++result.attempts;
-      a.stiffness_ratio = a.result.converged
-                            ? std::numeric_limits<double>::quiet_NaN()
-                            : analysis.secant_stiffness_ratio();
+      a.stiffness_ratio = analysis.secant_stiffness_ratio();
+      a.on_mechanism    = a.result.converged &&
+                       p.loading.collapse_resolution > 0 &&
+                       analysis.has_external_load() && a.stiffness_ratio >= 0 &&
+                       a.stiffness_ratio < mechanism_knee_ratio;
       return a;
     }
 
@@ -307,15 +345,16 @@ namespace thinlayer
     {
       {
         TimerOutput::Scope scope(timer, "output");
-        writer.write_history_row({a.step,
-                                  result.attempts,
-                                  a.load_factor,
-                                  a.load,
-                                  result.displacement,
-                                  a.result,
-                                  next == LoadStepping::Next::accept ||
-                                    next == LoadStepping::Next::accept_failed,
-                                  a.stiffness_ratio});
+        writer.write_history_row(
+          {a.step,
+           result.attempts,
+           a.load_factor,
+           a.load,
+           result.displacement,
+           a.result,
+           !a.on_mechanism && (next == LoadStepping::Next::accept ||
+                               next == LoadStepping::Next::accept_failed),
+           a.stiffness_ratio});
         if (next != LoadStepping::Next::retry)
           {
             if (p.output.write_vtu)
@@ -331,6 +370,7 @@ namespace thinlayer
                     a.load,
                     result.displacement.mean,
                     a.result,
+                    a.on_mechanism,
                     next,
                     probe,
                     out);
@@ -366,12 +406,13 @@ namespace thinlayer
         (failed.load_factor - result.last_converged_load_factor);
       const Attempt probe = attempt(failed.step + 1, probe_load_factor);
       record(probe, LoadStepping::Next::stop, true);
-      if (!probe.result.converged &&
+      if ((!probe.result.converged || probe.on_mechanism) &&
           shows_mechanism(probe.stiffness_ratio, probe.result.growth_ratio))
         {
-          result.probe_load_factor = probe_load_factor;
-          result.stiffness_ratio   = probe.stiffness_ratio;
-          result.growth_ratio      = probe.result.growth_ratio;
+          result.stopped_on_mechanism = probe.on_mechanism;
+          result.probe_load_factor    = probe_load_factor;
+          result.stiffness_ratio      = probe.stiffness_ratio;
+          result.growth_ratio         = probe.result.growth_ratio;
         }
     }
 
@@ -380,9 +421,11 @@ namespace thinlayer
     std::string
     evidence(const ProgrammeResult &run)
     {
-      std::string text = "the failed step's secant stiffness is " +
-                         printf("%.2g", run.stiffness_ratio) +
-                         " of the elastic one";
+      std::string text =
+        std::string(run.stopped_on_mechanism
+                      ? "the step converged, with a secant stiffness of "
+                      : "the failed step's secant stiffness is ") +
+        printf("%.2g", run.stiffness_ratio) + " of the elastic one";
       if (std::isfinite(run.growth_ratio))
         text += ", and its displacement change grew by a factor " +
                 printf("%.3g", run.growth_ratio) +
