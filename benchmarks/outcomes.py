@@ -2,15 +2,18 @@
 """Outcomes of every case with every solution method: the results are not tests.
 
     /usr/bin/python3 benchmarks/outcomes.py [--quick] [--repeat N] [--methods M,...]
+                                            [--cases C,...] [--levels L,...]
 
 Runs every paper case and Prandtl over mesh levels and, where the case has
 an interface, its aspect ratio, with each solution method and automatic load
 stepping (collapse bracketed to 0.5%), and tables per run: the outcome
 (completed, collapse, not converged), the collapse load (or, where there is
 none, the last converged load, in brackets), its difference from Newton's
-collapse load on the same mesh (the mesh's discrete limit: Newton's
-consistent tangent finds it), its error against the analytic value, load
-steps attempted, iterations and the median wall time of N runs (default 1).
+collapse load on the same mesh, bracketed to 0.1% (the reference: Newton's
+consistent tangent follows the mesh's curve to its knee), its error against
+the analytic value, load steps attempted, iterations, the most iterations
+of an accepted step below 90% of the last accepted load factor (away from
+collapse) and the median wall time of N runs (default 1).
 A run whose outcome is not a collapse is never given an error: the table
 says what happened instead. Writes output/benchmarks/outcomes/outcomes.csv
 and outcomes.md (also printed). --quick: level 1 and aspect ratios 10 and
@@ -27,7 +30,7 @@ import os
 import statistics
 import subprocess
 
-from run import write_results  # the benchmarks' one table writer
+from run import results, write_results  # the benchmarks' reader and table writer
 
 TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 THINLAYER = os.environ.get("THINLAYER", os.path.join(TOP, "build", "thinlayer"))
@@ -39,21 +42,26 @@ CASES = {
     "prandtl": ("prm/prandtl-strip-footing.prm", {
         1: "half_width=1, width=5, depth=3, n_footing=8, n_side=12, n_depth=12, growth=1.15",
         2: "half_width=1, width=5, depth=3, n_footing=16, n_side=24, n_depth=24, growth=1.07",
+        3: "half_width=1, width=5, depth=3, n_footing=32, n_side=48, n_depth=48, growth=1.035",
     }, [None]),
     "case1": ("prm/case1-inclined-adhesive.prm", {
         1: "alpha=30, aspect_ratio={ar}, elements_along=8, elements_block=8",
         2: "alpha=30, aspect_ratio={ar}, elements_along=16, elements_block=16",
+        3: "alpha=30, aspect_ratio={ar}, elements_along=32, elements_block=32",
     }, [10, 100, 1000, 10000]),
     "case2": ("prm/case2-strip-footing.prm", {
         1: "half_width=1, width=5, depth=3, aspect_ratio={ar}, n_footing=8, n_side=12, n_depth=10, interface_beyond_footing=1, refinement=1",
         2: "half_width=1, width=5, depth=3, aspect_ratio={ar}, n_footing=8, n_side=12, n_depth=10, interface_beyond_footing=1, refinement=2",
+        3: "half_width=1, width=5, depth=3, aspect_ratio={ar}, n_footing=8, n_side=12, n_depth=10, interface_beyond_footing=1, refinement=3",
     }, [10, 100, 1000, 10000]),
     "case3": ("prm/case3-circular-footing.prm", {
         1: "half_width=1, width=5, depth=3, aspect_ratio={ar}, n_footing=8, n_side=12, n_depth=10, interface_beyond_footing=1, refinement=1",
-    }, [10, 1000]),
+        2: "half_width=1, width=5, depth=3, aspect_ratio={ar}, n_footing=8, n_side=12, n_depth=10, interface_beyond_footing=1, refinement=2",
+    }, [10, 100, 1000, 10000]),
     "case4-rough": ("prm/case4-rough-wall.prm", {
         1: "wall_height=1, width=3, depth=2, aspect_ratio={ar}, n_wall=10, n_below=5, n_x=12",
         2: "wall_height=1, width=3, depth=2, aspect_ratio={ar}, n_wall=20, n_below=10, n_x=24",
+        3: "wall_height=1, width=3, depth=2, aspect_ratio={ar}, n_wall=40, n_below=20, n_x=48",
     }, [10, 100, 1000, 10000]),
 }
 # Each method with its convergence criterion and tolerance.
@@ -67,7 +75,13 @@ METHODS = {
 }
 
 
-def run(prm, geometry, method, directory, extra=()):
+# Collapse resolution of the runs, and of the Newton reference (finer, so
+# that "agrees within the resolution" compares against a sharper bracket).
+RESOLUTION = "0.005"
+REFERENCE_RESOLUTION = "0.001"
+
+
+def run(prm, geometry, method, directory, extra=(), resolution=RESOLUTION):
     command = [THINLAYER, os.path.join(TOP, prm)]
     if METHODS[method] is None:
         # The scene's own solver entries give way to the defaults.
@@ -80,7 +94,7 @@ def run(prm, geometry, method, directory, extra=()):
         command += ["-s", "Solver/Method=" + name,
                     "-s", "Solver/Convergence criterion=" + criterion,
                     "-s", "Solver/Tolerance=" + tol]
-    command += ["-s", "Loading/Collapse resolution=0.005",
+    command += ["-s", "Loading/Collapse resolution=" + resolution,
                "-s", "Output/Directory=" + directory,
                "-s", "Output/Write VTU=false",
                "-s", "Output/Print timing=false",
@@ -149,6 +163,7 @@ def main():
     parser.add_argument("--repeat", type=int, default=1, help="runs per scene (median time)")
     parser.add_argument("--methods", default=",".join(METHODS), help="comma-separated: " + ", ".join(METHODS))
     parser.add_argument("--cases", default=",".join(CASES), help="comma-separated: " + ", ".join(CASES))
+    parser.add_argument("--levels", default="1,2,3", help="comma-separated mesh levels (1-3)")
     parser.add_argument("--kpc", action="store_true",
                         help="Case 4's K_pc table instead (default method)")
     args = parser.parse_args()
@@ -165,7 +180,7 @@ def main():
     for case in args.cases.split(","):
         prm, levels, ratios = CASES[case]
         for level, geometry_template in sorted(levels.items()):
-            if args.quick and level > 1:
+            if (args.quick and level > 1) or str(level) not in args.levels.split(","):
                 continue
             for ar in ratios:
                 if args.quick and ar not in (None, 10, 1000):
@@ -175,8 +190,9 @@ def main():
                 for method in sorted(methods, key=lambda m: m != "newton"):
                     directory = os.path.join(OUT, "runs", "%s-%d-%s-%s" % (case, level, ar, method))
                     times = []
+                    resolution = REFERENCE_RESOLUTION if method == "newton" else RESOLUTION
                     for _ in range(args.repeat):
-                        s = run(prm, geometry, method, directory)
+                        s = run(prm, geometry, method, directory, resolution=resolution)
                         times.append(number(s.get("wall_seconds")))
                     collapse = number(s.get("collapse_load"))
                     if method == "newton":
@@ -193,6 +209,7 @@ def main():
                         if math.isfinite(collapse) and math.isfinite(analytic) else float("nan"),
                         "attempts": s.get("attempts"), "iterations": s.get("total_iterations"),
                         "wall_seconds": statistics.median(times),
+                        "iterations_away": iterations_away_from_collapse(directory),
                         "reason": s.get("reason", ""),
                     }
                     rows.append(row)
@@ -201,8 +218,19 @@ def main():
     write_table("outcomes", rows, HEADER, format_row)
 
 
+def iterations_away_from_collapse(directory):
+    """The most iterations of an accepted step below 90% of the last
+    accepted load factor (away from collapse)."""
+    states = results.states(results.history(directory))
+    if not states:
+        return None
+    top = max(abs(float(r["load_factor"])) for r in states)
+    away = [int(r["iterations"]) for r in states if abs(float(r["load_factor"])) <= 0.9 * top]
+    return max(away) if away else None
+
+
 HEADER = ("| case | level | AR | method | outcome | collapse load | vs Newton | vs analytic "
-          "| attempts | iterations | wall s |")
+          "| attempts | iterations | it/step < 90% | wall s |")
 
 
 def format_row(r):
@@ -210,10 +238,11 @@ def format_row(r):
         return "%+.2f%%" % (100 * x) if math.isfinite(x) else "-"
     load = ("%.4g" % r["collapse_load"] if math.isfinite(r["collapse_load"])
             else "(%.4g)" % r["last_converged_load"])
-    return "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %.2f |" % (
+    away = r["iterations_away"] if r["iterations_away"] is not None else "-"
+    return "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %.2f |" % (
         r["case"], r["level"], r["aspect_ratio"], r["method"], r["outcome"], load,
         percent(r["against_newton"]), percent(r["against_analytic"]),
-        r["attempts"], r["iterations"], r["wall_seconds"])
+        r["attempts"], r["iterations"], away, r["wall_seconds"])
 
 
 if __name__ == "__main__":

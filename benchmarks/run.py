@@ -324,7 +324,7 @@ def near_collapse_chart(rows):
         ax.set_yscale("log")
         ax.set_xlabel("load factor")
         ax.set_ylabel("iterations in the step")
-        ax.set_title("%s, level 1, TOL %s (x: failed)" % (case, TOLERANCES[-1]), fontsize=9)
+        ax.set_title("%s, level 1, TOL %s (x: failed or on the mechanism)" % (case, TOLERANCES[-1]), fontsize=9)
         ax.grid(alpha=0.3)
     axes[0][0].legend(fontsize=7)
     fig.tight_layout()

@@ -126,7 +126,7 @@ def figure3(directory):
                        [int(s["iterations"]) for s in h], ".-", color=line.get_color())
         a = math.radians(float(alpha))
         ax.axhline(1 / (math.sin(a) * math.cos(a)), color="k", ls="--", label="analytic")
-        ax.set_title("alpha = %s degrees (open: step failed)" % alpha)
+        ax.set_title("alpha = %s degrees (open: step failed or on the mechanism)" % alpha)
         ax.set_xlabel("E u / C_w (axial, top)")
         ax.grid(alpha=0.3)
         ax_it.set_xlabel("P / P_ult")

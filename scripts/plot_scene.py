@@ -29,18 +29,19 @@ def main(directory, reference_label="analytic"):
     with open(os.path.join(directory, "summary.json")) as f:
         summary = json.load(f)
 
-    # Converged, accepted states on the curve; failed steps marked apart
-    # (their state is no equilibrium).
+    # Converged, accepted states on the curve; the steps that ended the run
+    # marked apart (a failed step's state is no equilibrium, and a step that
+    # converged on the mechanism was never accepted).
     steps = results.states(rows) + results.failures(rows)
     u = [results.number(s["displacement"]) for s in steps]
     p = [results.number(s["load"]) for s in steps]
-    failed = [s["converged"] == "0" for s in steps]
+    failed = [s["converged"] == "0" or s.get("accepted") == "0" for s in steps]
     fig, (ax, ax_it) = plt.subplots(2, 1, figsize=(6, 6.5), sharex=True,
                                     gridspec_kw={"height_ratios": [2, 1]})
     ax.plot([0] + [x for x, f in zip(u, failed) if not f],
             [0] + [y for y, f in zip(p, failed) if not f], "o-", ms=4, label="computed")
     ax.plot([x for x, f in zip(u, failed) if f], [y for y, f in zip(p, failed) if f],
-            "o", mfc="white", color="C3", label="step failed")
+            "o", mfc="white", color="C3", label="step failed or on the mechanism")
     if summary.get("reference_load") is not None:
         ax.axhline(summary["reference_load"], color="k", ls="--", label=reference_label)
     ax.set_ylabel("load")

@@ -29,12 +29,14 @@ def states(rows):
 
 
 def failures(rows):
-    """The failed attempts that were not retried: those accepted as they
-    were (Solver/Continue after failure), and those after the last accepted
-    state (the step that ended the run, and a probe beyond it)."""
+    """The attempts that ended in no accepted state and were not retried:
+    failed ones accepted as they were (Solver/Continue after failure), and
+    those after the last accepted state (the step that ended the run,
+    failed or converged on the mechanism, and a probe beyond it)."""
     last = max([int(r["step"]) for r in rows if r.get("accepted", "1") == "1"], default=0)
-    return [r for r in rows if r["converged"] == "0"
-            and (r.get("accepted") == "1" or int(r["step"]) > last)]
+    return [r for r in rows
+            if (r["converged"] == "0" and r.get("accepted") == "1")
+            or (r.get("accepted") == "0" and int(r["step"]) > last)]
 
 
 def number(text):
