@@ -30,7 +30,9 @@ namespace thinlayer
    *
    * The stepping decides only which load factor comes next; whether a
    * failure that ends a run is a collapse is the run's to judge
-   * (run_scene()).
+   * (run_scene()), and so is whether a converged step is to count as one
+   * that failed (under load, a step that converged on the mechanism is
+   * reported here as failed, so that the knee is bracketed like a limit).
    */
   class LoadStepping
   {

@@ -33,8 +33,8 @@ namespace thinlayer
     StepResult          result;
     /// Whether the attempt's state was accepted.
     bool accepted;
-    /// A failed attempt's secant stiffness along its increment against the
-    /// elastic one (Analysis::secant_stiffness_ratio()); NaN otherwise.
+    /// The attempt's secant stiffness along its increment against the
+    /// elastic one (Analysis::secant_stiffness_ratio()).
     double stiffness_ratio;
   };
 

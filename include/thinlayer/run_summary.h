@@ -30,12 +30,13 @@ namespace thinlayer
 
     /**
      * How the run ended: "completed" (every load step converged),
-     * "collapse" (under load, a step failed with a mechanism as evidence)
+     * "collapse" (under load, the stepping reached a mechanism: a step
+     * that failed with one as evidence, or one that converged on it)
      * or "not converged" (anything else; the reason says what).
      */
     std::string outcome;
     std::string reason;
-    /// The collapse load: the last converged load where the outcome is a
+    /// The collapse load: the last accepted load where the outcome is a
     /// collapse; under prescribed displacement, the load's plateau if the
     /// last step reached one; NaN otherwise.
     double collapse_load;

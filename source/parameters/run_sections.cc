@@ -141,10 +141,13 @@ namespace thinlayer
       "Automatic load stepping: a load step that fails is halved and tried "
       "again from the last accepted state, and steps grow back to the "
       "programme's after easy ones (converged in at most a quarter of "
-      "Solver/Maximum iterations); a step that still fails when it "
-      "is at most this fraction of its load factor ends the run, the "
-      "collapse load then bracketed to it (0.005: 0.5%). 0: the programme "
-      "as given, the first failed step ending the run (the paper's way).");
+      "Solver/Maximum iterations); under load, a step that converges on "
+      "the mechanism (its secant stiffness below 0.01 of the elastic one) "
+      "is cut back the same way and never accepted. A step that still "
+      "fails, or lands on the mechanism, when it is at most this fraction "
+      "of its load factor ends the run, the collapse load then bracketed "
+      "to it (0.005: 0.5%). 0: the programme as given, the first failed "
+      "step ending the run (the paper's way).");
     prm.leave_subsection();
   }
 

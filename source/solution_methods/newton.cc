@@ -66,6 +66,34 @@ namespace thinlayer
         tangents[std::size_t(p) * n_stations + s] =
           analysis.material_law(p / n_q).elasticity();
     accepted_tangents = tangents;
+
+    // Each cell's matrix with elastic tangents, once: a cell whose points
+    // are all elastic takes it as it is in every factorisation.
+    analysis.get_point_loop().for_each_chunk([this](const unsigned int begin,
+                                                    const unsigned int end,
+                                                    const unsigned int chunk) {
+      compute_cell_tangents(begin, end, chunk_scratch[chunk]);
+    });
+    elastic_cell_matrices = cell_matrices;
+    cell_is_elastic.assign(n_cells, 1);
+  }
+
+
+  template <int dim>
+  bool
+  NewtonMethod<dim>::elastic_tangents(const unsigned int c) const
+  {
+    const unsigned int n_q = this->analysis.n_quadrature_points();
+    const unsigned int n_stations =
+      this->analysis.get_kinematics().n_stations();
+    const SymmetricTensor<4, 3> &elasticity =
+      this->analysis.material_law(c).elasticity();
+    for (std::size_t k = std::size_t(c) * n_q * n_stations;
+         k < std::size_t(c + 1) * n_q * n_stations;
+         ++k)
+      if (!(tangents[k] == elasticity))
+        return false;
+    return true;
   }
 
 
@@ -249,11 +277,18 @@ namespace thinlayer
   {
     // The cell matrices in parallel, then added in cell order (the same
     // sums on any number of threads).
+    // Only the cells with a plastic point: the return mappings give the
+    // elastic tangent itself at an elastic point, so the test is exact.
     this->analysis.get_point_loop().for_each_chunk(
       [this](const unsigned int begin,
              const unsigned int end,
              const unsigned int chunk) {
-        compute_cell_tangents(begin, end, chunk_scratch[chunk]);
+        for (unsigned int c = begin; c < end; ++c)
+          {
+            cell_is_elastic[c] = elastic_tangents(c);
+            if (!cell_is_elastic[c])
+              compute_cell_tangents(c, c + 1, chunk_scratch[chunk]);
+          }
       });
 
     const unsigned int n_local =
@@ -264,7 +299,11 @@ namespace thinlayer
     for (unsigned int c = 0; c < cell_matrices.size(); ++c)
       {
         cell_dofs(c, dofs);
-        constraints.distribute_local_to_global(cell_matrices[c], dofs, tangent);
+        constraints.distribute_local_to_global(cell_is_elastic[c]
+                                                 ? elastic_cell_matrices[c]
+                                                 : cell_matrices[c],
+                                               dofs,
+                                               tangent);
       }
     try
       {

@@ -88,6 +88,11 @@ namespace thinlayer
                           const unsigned int end,
                           ChunkScratch      &scratch);
 
+    /// Whether every point and station of cell @p c has the elastic
+    /// tangent.
+    bool
+    elastic_tangents(const unsigned int c) const;
+
     /// Assemble and factorise the tangent; false if the factorisation
     /// fails (a singular tangent at a mechanism).
     bool
@@ -102,9 +107,16 @@ namespace thinlayer
     SparsityPattern                      sparsity;
     SparseMatrix<double>                 tangent;
     std::unique_ptr<FactorisedStiffness> factorisation;
-    /// Each cell's matrix of the tangent, computed in parallel.
+    /// Each cell's matrix of the tangent, computed in parallel for the
+    /// cells with a plastic point; for the others the matrix with elastic
+    /// tangents, computed once (near collapse the plastic zone is a small
+    /// part of the body, and in Fourier scenes each cell matrix sums every
+    /// station: most of Newton's time went into recomputing elastic ones).
     std::vector<FullMatrix<double>> cell_matrices;
-    std::vector<ChunkScratch>       chunk_scratch;
+    std::vector<FullMatrix<double>> elastic_cell_matrices;
+    /// Per cell, of the last assembly: elastic_cell_matrices is used.
+    std::vector<unsigned char> cell_is_elastic;
+    std::vector<ChunkScratch>  chunk_scratch;
     /// The modes' residuals, then corrections, one after the other.
     Vector<double> coupled_vector;
   };
