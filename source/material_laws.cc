@@ -53,6 +53,28 @@ namespace thinlayer
 
 
     /**
+     * a (x) b on the stored components: deal.II's outer_product() of
+     * symmetric tensors goes through the index accessors, and the
+     * consistent tangents call it a dozen times per plastic point (it was
+     * the largest single cost of Newton's iterations on Prandtl's footing).
+     * The rank-4 tensor stores the products of the rank-2 components in
+     * the same order, without factors.
+     */
+    SymmetricTensor<4, 3>
+    outer(const SymmetricTensor<2, 3> &a, const SymmetricTensor<2, 3> &b)
+    {
+      constexpr unsigned int n =
+        SymmetricTensor<2, 3>::n_independent_components;
+      SymmetricTensor<4, 3> t;
+      for (unsigned int p = 0; p < n; ++p)
+        for (unsigned int q = 0; q < n; ++q)
+          t.access_raw_entry(p * n + q) =
+            a.access_raw_entry(p) * b.access_raw_entry(q);
+      return t;
+    }
+
+
+    /**
      * The tangent of an isotropic function of a symmetric tensor, sigma =
      * sum_i sigma_i(trial_1..3) e_i (x) e_i, from the derivatives of its
      * principal values, @p principal_tangent(i, j) = d sigma_i / d trial_j,
@@ -73,7 +95,7 @@ namespace thinlayer
       for (unsigned int i = 0; i < 3; ++i)
         for (unsigned int j = 0; j < 3; ++j)
           if (principal_tangent[i][j] != 0)
-            T += principal_tangent[i][j] * outer_product(E[i], E[j]);
+            T += principal_tangent[i][j] * outer(E[i], E[j]);
       for (unsigned int i = 0; i < 3; ++i)
         for (unsigned int j = i + 1; j < 3; ++j)
           {
@@ -86,7 +108,7 @@ namespace thinlayer
                 : principal_tangent[i][i] - principal_tangent[i][j];
             const SymmetricTensor<2, 3> M =
               symmetrize(outer_product(trial[i].second, trial[j].second));
-            T += (2 * ratio) * outer_product(M, M);
+            T += (2 * ratio) * outer(M, M);
           }
       return T;
     }
@@ -149,7 +171,8 @@ namespace thinlayer
        * n = s_trial / |s_trial|.
        */
       ReturnMapping
-      return_mapping(const SymmetricTensor<2, 3> &trial) const override
+      return_mapping(const SymmetricTensor<2, 3> &trial,
+                     const bool                   with_tangent) const override
       {
         if (yield_function(trial) <= 0)
           return {trial, stiffness, ReturnRegion::elastic};
@@ -160,9 +183,11 @@ namespace thinlayer
         const double K = youngs_modulus / (3 * (1 - 2 * poissons_ratio));
         const double G = youngs_modulus / (2 * (1 + poissons_ratio));
         const SymmetricTensor<2, 3> I = unit_symmetric_tensor<3>();
+        if (!with_tangent)
+          return {trace(trial) / 3 * I + beta * s, {}, ReturnRegion::surface};
         return {trace(trial) / 3 * I + beta * s,
-                K * outer_product(I, I) +
-                  (2 * G * beta) * (deviator_tensor<3>() - outer_product(n, n)),
+                K * outer(I, I) +
+                  (2 * G * beta) * (deviator_tensor<3>() - outer(n, n)),
                 ReturnRegion::surface};
       }
 
@@ -405,7 +430,8 @@ namespace thinlayer
        * Tresca, phi = 0, does not have).
        */
       ReturnMapping
-      return_mapping(const SymmetricTensor<2, 3> &trial) const override
+      return_mapping(const SymmetricTensor<2, 3> &trial,
+                     const bool                   with_tangent) const override
       {
         if (yield_function(trial) <= 0)
           return {trial, stiffness, ReturnRegion::elastic};
@@ -471,6 +497,8 @@ namespace thinlayer
         for (unsigned int i = 0; i < 3; ++i)
           stress +=
             sigma[i] * symmetrize(outer_product(eig[i].second, eig[i].second));
+        if (!with_tangent)
+          return {stress, {}, region};
         // d sigma / d strain = (d sigma / d trial) : D.
         return {stress,
                 isotropic_function_tangent(eig, sigma, P) * stiffness,
@@ -522,7 +550,8 @@ namespace thinlayer
 
 
   ReturnMapping
-  MaterialLaw::return_mapping(const SymmetricTensor<2, 3> &trial) const
+  MaterialLaw::return_mapping(const SymmetricTensor<2, 3> &trial,
+                              const bool /*with_tangent*/) const
   {
     return {trial, stiffness, ReturnRegion::elastic};
   }

@@ -76,8 +76,9 @@ namespace thinlayer
           state.stress = trial;
         else
           {
-            const ReturnMapping r = law.return_mapping(trial);
-            state.stress          = r.stress;
+            const ReturnMapping r =
+              law.return_mapping(trial, tangents != nullptr);
+            state.stress = r.stress;
             if (tangents != nullptr)
               (*tangents)[point_station] = r.tangent;
             if (r.region != ReturnRegion::elastic)

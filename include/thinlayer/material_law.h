@@ -125,10 +125,13 @@ namespace thinlayer
      * stress @p trial onto the yield surface, with the consistent tangent,
      * for the return-mapping solution methods (initial stress, Newton).
      * The tangent is the elasticity tensor where the trial stress is
-     * admissible.
+     * admissible. Without @p with_tangent a plastic point's tangent is
+     * left zero: the constant-stiffness methods do not use it, and in
+     * principal-stress space it costs more than the return itself.
      */
     virtual ReturnMapping
-    return_mapping(const SymmetricTensor<2, 3> &trial) const;
+    return_mapping(const SymmetricTensor<2, 3> &trial,
+                   const bool                   with_tangent = true) const;
 
     /// Whether the flow rule is associated, i.e. the consistent tangent is
     /// symmetric (Newton can then use a Cholesky factorisation).

@@ -11,8 +11,9 @@ namespace thinlayer
    * Accelerated initial stress, safeguarded by Newton: each load step is
    * first iterated with the constant elastic stiffness and Anderson
    * acceleration (one factorisation for the whole analysis, cheap
-   * iterations); a step it cannot converge is tried again from the
-   * accepted state by Newton's method (consistent tangent, line search).
+   * iterations); a step it cannot converge within 100 iterations (or
+   * Solver/Maximum iterations, if fewer) is tried again from the accepted
+   * state by Newton's method (consistent tangent, line search).
    * Away from collapse the cheap method does the work; near it, where
    * constant-stiffness iterations creep and Anderson's extrapolation can
    * stall, Newton decides whether the step has an equilibrium, so the
@@ -47,6 +48,9 @@ namespace thinlayer
     state_rejected() override;
 
   private:
+    /// The solver parameters of the accelerated method: its iteration
+    /// limit capped (accelerated_budget in the source).
+    SolverParameters                    accelerated_parameters;
     AcceleratedInitialStressMethod<dim> accelerated;
     NewtonMethod<dim>                   newton;
     /// Newton has converged a step: it takes every step from now on.
