@@ -20,8 +20,10 @@ and outcomes.md (also printed). --quick: level 1 and aspect ratios 10 and
 1000 only. --kpc instead tables Case 4's passive coefficient K_pc by the
 default method against the wall column's aspect ratio and the mesh level
 for C_w / c_u = 0 (smooth wall), 0.5 and 1, beside the slip-line value
-1 + asin(a) + sqrt(1 - a^2) (kpc.csv, kpc.md). THINLAYER in the
-environment names another binary.
+1 + asin(a) + sqrt(1 - a^2) (kpc.csv, kpc.md). --table1 instead runs
+Table 1 (Case 1, alpha 10-80 x aspect ratio 10, 100, 1000) by the default
+method, on the scene's mesh and on one twice as fine, each collapse load
+against 1/(sin alpha cos alpha) (table1.csv, table1.md). THINLAYER in the environment names another binary.
 """
 import argparse
 import json
@@ -117,6 +119,50 @@ def write_table(name, rows, header, format_row):
     write_results(rows, name, header, format_row, OUT)
 
 
+def table1():
+    """Table 1 by the default method: thinlayer's own sweep over alpha and
+    the aspect ratio, on the scene's mesh (8 elements along the interface)
+    and on one twice as fine (a layer of the same aspect ratio is then half
+    as thick), each collapse load against 1 / (sin alpha cos alpha)."""
+    rows = []
+    for level, elements in ((1, 8), (2, 16)):
+        directory = os.path.join(OUT, "table1-level%d" % level)
+        command = [THINLAYER, os.path.join(TOP, "prm", "case1-table1.prm"),
+                   "-s", "Solver/Method=accelerated with newton fallback",
+                   "-s", "Solver/Convergence criterion=default",
+                   "-s", "Solver/Tolerance=1e-4",
+                   "-s", "Loading/Collapse resolution=" + RESOLUTION,
+                   "-s", "Mesh/Geometry parameters=alpha=45, aspect_ratio=10, "
+                   "elements_along=%d, elements_block=%d" % (elements, elements),
+                   "-s", "Sweep/Values=alpha = 10, 20, 30, 40, 45, 50, 60, 70, 80; "
+                   "aspect_ratio = 10, 100, 1000",
+                   "-s", "Output/Directory=" + directory]
+        subprocess.run(command, capture_output=True, text=True, check=True)
+        for r in results.read_csv(os.path.join(directory, "sweep.csv")):
+            error = results.collapse_error(r)
+            rows.append({"level": level, "elements_along": elements,
+                         "alpha": int(r["alpha"]), "aspect_ratio": int(r["aspect_ratio"]),
+                         "exact": results.number(r["reference_load"]), "outcome": r["outcome"],
+                         "collapse_load": results.number(r["collapse_load"]),
+                         "error": error if error is not None else float("nan"),
+                         "iterations": int(r["total_iterations"]),
+                         "wall_seconds": results.number(r["wall_seconds"])})
+            print(format_table1(rows[-1]), flush=True)
+    write_table("table1", rows, TABLE1_HEADER, format_table1)
+
+
+TABLE1_HEADER = ("| elements along | alpha | AR | 1/(sin a cos a) | outcome | collapse load "
+                 "| error | iterations | wall s |")
+
+
+def format_table1(r):
+    load = "%.4f" % r["collapse_load"] if math.isfinite(r["collapse_load"]) else "-"
+    error = "%+.2f%%" % (100 * r["error"]) if math.isfinite(r["error"]) else "-"
+    return "| %d | %d | %d | %.4f | %s | %s | %s | %d | %.2f |" % (
+        r["elements_along"], r["alpha"], r["aspect_ratio"], r["exact"], r["outcome"], load,
+        error, r["iterations"], r["wall_seconds"])
+
+
 def kpc_table(quick):
     """K_pc by the default method against aspect ratio, level and C_w / c_u."""
     rows = []
@@ -166,10 +212,15 @@ def main():
     parser.add_argument("--levels", default="1,2,3", help="comma-separated mesh levels (1-3)")
     parser.add_argument("--kpc", action="store_true",
                         help="Case 4's K_pc table instead (default method)")
+    parser.add_argument("--table1", action="store_true",
+                        help="Table 1 (Case 1, alpha x aspect ratio) by the default method instead")
     args = parser.parse_args()
     os.makedirs(OUT, exist_ok=True)
     if args.kpc:
         kpc_table(args.quick)
+        return
+    if args.table1:
+        table1()
         return
     methods = args.methods.split(",")
     if "newton" not in methods:
