@@ -114,6 +114,14 @@ namespace thinlayer
 
 
   template <int dim>
+  ResidualNorms
+  NewtonMethod<dim>::starting_residual(const double target)
+  {
+    return this->analysis.evaluate_residual(target, &tangents);
+  }
+
+
+  template <int dim>
   void
   NewtonMethod<dim>::state_accepted()
   {

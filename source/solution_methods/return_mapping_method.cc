@@ -39,6 +39,14 @@ namespace thinlayer
 
 
   template <int dim>
+  ResidualNorms
+  ReturnMappingMethod<dim>::starting_residual(const double target)
+  {
+    return analysis.evaluate_residual(target);
+  }
+
+
+  template <int dim>
   void
   ReturnMappingMethod<dim>::predict(const double target)
   {
@@ -127,7 +135,7 @@ namespace thinlayer
     predict(target);
     start_attempt();
 
-    ResidualNorms norms = analysis.evaluate_residual(target);
+    ResidualNorms norms = starting_residual(target);
     for (unsigned int k = 0; k < max_iterations(); ++k)
       {
         ++result.iterations;

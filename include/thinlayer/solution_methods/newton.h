@@ -64,6 +64,13 @@ namespace thinlayer
     unsigned int
     max_cut_backs() const override;
 
+    /// With the tangents at the predicted state, so that the first
+    /// correction is Newton's (the accepted state's tangents made it
+    /// overshoot: on Prandtl's footing most first iterations needed the
+    /// line search).
+    ResidualNorms
+    starting_residual(const double target) override;
+
 
   private:
     /// Work space of one chunk of the cell tangents.

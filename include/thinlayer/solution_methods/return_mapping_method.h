@@ -77,6 +77,10 @@ namespace thinlayer
     virtual void
     start_attempt();
 
+    /// The residual of the attempt's starting increment (the predictor).
+    virtual ResidualNorms
+    starting_residual(const double target);
+
 
     /// Each mode's correction K_m^-1 r_m with its elastic factor.
     void
