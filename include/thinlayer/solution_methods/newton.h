@@ -23,8 +23,8 @@ namespace thinlayer
    * programme as given, the load step halved (Solver/Maximum cut-backs)
    * when an attempt does not converge in Solver/Maximum Newton iterations
    * (automatic stepping halves failed steps itself). An attempt starts
-   * from the secant predictor (ReturnMappingMethod) with the tangents of
-   * the accepted state.
+   * from the secant predictor (ReturnMappingMethod), its first correction
+   * with the tangents at that predicted state.
    *
    * In the Fourier case the stations mix the harmonics, so the consistent
    * tangent couples them: it is one matrix over all modes, mode m's DoFs
