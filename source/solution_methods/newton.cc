@@ -283,10 +283,10 @@ namespace thinlayer
   bool
   NewtonMethod<dim>::factorise_tangent()
   {
-    // The cell matrices in parallel, then added in cell order (the same
-    // sums on any number of threads).
-    // Only the cells with a plastic point: the return mappings give the
-    // elastic tangent itself at an elastic point, so the test is exact.
+    // The matrices of the cells with a plastic point in parallel (the
+    // return mappings give the elastic tangent itself at an elastic point,
+    // so the test is exact), then all added in cell order (the same sums on
+    // any number of threads).
     this->analysis.get_point_loop().for_each_chunk(
       [this](const unsigned int begin,
              const unsigned int end,

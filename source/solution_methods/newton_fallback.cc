@@ -52,8 +52,8 @@ namespace thinlayer
     if (first.converged || first.non_finite)
       return first;
 
-    // Newton starts again from the accepted state (its tangents are those
-    // of that state), so the accelerated attempt leaves nothing behind.
+    // Newton starts again from the accepted state (its own predictor and
+    // tangents), so the accelerated attempt leaves nothing behind.
     StepResult result = newton.solve_step(new_load_factor);
     newton_only       = result.converged;
     result.iterations += first.iterations;

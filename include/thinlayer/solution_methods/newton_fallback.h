@@ -23,7 +23,7 @@ namespace thinlayer
    * directly: the plastic zone has then grown to where the elastic
    * stiffness converges slowly, and each step would first spend the whole
    * iteration limit of the cheap method (Case 3 at aspect ratio 1000: 250
-   * iterations a step, then 4 to 10 of Newton's; 10.1 s against 3.5 s).
+   * iterations a step, then 4 to 10 of Newton's; 10.1 s against 6.2 s).
    *
    * Both methods keep their state; both are told of accepted and rejected
    * states.
