@@ -23,7 +23,10 @@ for C_w / c_u = 0 (smooth wall), 0.5 and 1, beside the slip-line value
 1 + asin(a) + sqrt(1 - a^2) (kpc.csv, kpc.md). --table1 instead runs
 Table 1 (Case 1, alpha 10-80 x aspect ratio 10, 100, 1000) by the default
 method, on the scene's mesh and on one twice as fine, each collapse load
-against 1/(sin alpha cos alpha) (table1.csv, table1.md). THINLAYER in the environment names another binary.
+against 1/(sin alpha cos alpha), the zero-thickness interface's value, and
+beside the upper bound of the layer the mesh models (a slip plane inside
+the layer, scripts/closed_form.py), which the body's exact collapse load
+cannot exceed (table1.csv, table1.md). THINLAYER in the environment names another binary.
 """
 import argparse
 import json
@@ -33,6 +36,7 @@ import statistics
 import subprocess
 
 from run import results, write_results  # the benchmarks' reader and table writer
+import closed_form  # noqa: E402 (scripts/, on the path run.py sets)
 
 TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 THINLAYER = os.environ.get("THINLAYER", os.path.join(TOP, "build", "thinlayer"))
@@ -123,7 +127,8 @@ def table1():
     """Table 1 by the default method: thinlayer's own sweep over alpha and
     the aspect ratio, on the scene's mesh (8 elements along the interface)
     and on one twice as fine (a layer of the same aspect ratio is then half
-    as thick), each collapse load against 1 / (sin alpha cos alpha)."""
+    as thick), each collapse load against 1 / (sin alpha cos alpha) and
+    beside the layer's own upper bound."""
     rows = []
     for level, elements in ((1, 8), (2, 16)):
         directory = os.path.join(OUT, "table1-level%d" % level)
@@ -140,9 +145,12 @@ def table1():
         subprocess.run(command, capture_output=True, text=True, check=True)
         for r in results.read_csv(os.path.join(directory, "sweep.csv")):
             error = results.collapse_error(r)
+            alpha, ratio = int(r["alpha"]), int(r["aspect_ratio"])
             rows.append({"level": level, "elements_along": elements,
-                         "alpha": int(r["alpha"]), "aspect_ratio": int(r["aspect_ratio"]),
-                         "exact": results.number(r["reference_load"]), "outcome": r["outcome"],
+                         "alpha": alpha, "aspect_ratio": ratio,
+                         "exact": results.number(r["reference_load"]),
+                         "layer_bound": closed_form.inclined_layer_upper_bound(alpha, ratio),
+                         "outcome": r["outcome"],
                          "collapse_load": results.number(r["collapse_load"]),
                          "error": error if error is not None else float("nan"),
                          "iterations": int(r["total_iterations"]),
@@ -151,15 +159,16 @@ def table1():
     write_table("table1", rows, TABLE1_HEADER, format_table1)
 
 
-TABLE1_HEADER = ("| elements along | alpha | AR | 1/(sin a cos a) | outcome | collapse load "
-                 "| error | iterations | wall s |")
+TABLE1_HEADER = ("| elements along | alpha | AR | 1/(sin a cos a) | layer's upper bound "
+                 "| outcome | collapse load | error | iterations | wall s |")
 
 
 def format_table1(r):
     load = "%.4f" % r["collapse_load"] if math.isfinite(r["collapse_load"]) else "-"
     error = "%+.2f%%" % (100 * r["error"]) if math.isfinite(r["error"]) else "-"
-    return "| %d | %d | %d | %.4f | %s | %s | %s | %d | %.2f |" % (
-        r["elements_along"], r["alpha"], r["aspect_ratio"], r["exact"], r["outcome"], load,
+    bound = "%.4f (%+.2f%%)" % (r["layer_bound"], 100 * (r["layer_bound"] / r["exact"] - 1))
+    return "| %d | %d | %d | %.4f | %s | %s | %s | %s | %d | %.2f |" % (
+        r["elements_along"], r["alpha"], r["aspect_ratio"], r["exact"], bound, r["outcome"], load,
         error, r["iterations"], r["wall_seconds"])
 
 
@@ -168,7 +177,7 @@ def kpc_table(quick):
     rows = []
     _, levels, ratios = CASES["case4-rough"]
     for adhesion in (0.0, 0.5, 1.0):
-        slip_line = 1 + math.asin(adhesion) + math.sqrt(1 - adhesion ** 2)
+        slip_line = closed_form.passive_rough_wall(adhesion)
         prm = "prm/case4-smooth-wall.prm" if adhesion == 0 else "prm/case4-rough-wall.prm"
         for level, template in sorted(levels.items()):
             for ar in ratios:

@@ -21,6 +21,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+import closed_form  # noqa: E402
 import results  # noqa: E402
 
 
@@ -48,7 +49,9 @@ def table1(directory):
         return next(r for r in rows if float(r["alpha"]) == alpha
                     and r["aspect_ratio"] == ratio and r["Solver/Tolerance"] == tol)
 
-    lines = ["# Table 1: P_ult / C_w, computed against 1/(sin a cos a)", ""]
+    lines = ["# Table 1: P_ult / C_w, computed against 1/(sin a cos a)", "",
+             "'layer <=' is the upper bound of the layer the mesh models (a slip plane",
+             "inside it, scripts/closed_form.py): its exact collapse load is at most that.", ""]
     flat = [["alpha", "analytic", "aspect_ratio", "tolerance", "computed",
              "relative_error", "collapse_detected", "total_iterations"]]
     for tol in tolerances:
@@ -63,11 +66,13 @@ def table1(directory):
                 detected = results.collapse_detected(r)
                 # A collapse load and its error only for a collapse; the
                 # others say what happened instead.
+                bound = closed_form.inclined_layer_upper_bound(alpha, float(ratio))
                 if detected:
-                    cells.append("%.2f (%+.1f%%)" % (results.collapse_load(r),
-                                                     100 * results.collapse_error(r)))
+                    cells.append("%.2f (%+.1f%%; layer <= %.2f)" % (
+                        results.collapse_load(r), 100 * results.collapse_error(r), bound))
                 else:
-                    cells.append("%s at %.2f" % (r["outcome"], number(r["last_converged_load"])))
+                    cells.append("%s at %.2f (layer <= %.2f)" % (
+                        r["outcome"], number(r["last_converged_load"]), bound))
                 flat.append([alpha, r["reference_load"], ratio, tol, r["collapse_load"],
                              r["relative_error"] if detected else "", int(detected),
                              r["total_iterations"]])
@@ -84,14 +89,19 @@ def table1(directory):
     axes = axes if len(tolerances) > 1 else [axes]
     fine = [10 + 0.5 * i for i in range(141)]
     for ax, tol in zip(axes, tolerances):
-        ax.plot(fine, [1 / (math.sin(math.radians(a)) * math.cos(math.radians(a))) for a in fine],
-                "k-", label="analytic")
+        ax.plot(fine, [closed_form.inclined_interface_load(a) for a in fine],
+                "k-", label="analytic (zero-thickness interface)")
         for ratio, marker in zip(ratios, "os^"):
             pts = [find(a, ratio, tol) for a in alphas]
+            # The layer's own upper bound: its exact collapse load lies on
+            # or below this line, whatever the solver.
+            line, = ax.plot(fine, [closed_form.inclined_layer_upper_bound(a, float(ratio))
+                                   for a in fine], ":", lw=1)
             detected = [results.collapse_detected(r) for r in pts]
             ax.plot([a for a, d in zip(alphas, detected) if d],
                     [results.collapse_load(r) for r, d in zip(pts, detected) if d],
-                    marker, label="aspect ratio %s" % ratio)
+                    marker, color=line.get_color(),
+                    label="aspect ratio %s (dotted: the layer's upper bound)" % ratio)
             ax.plot([a for a, d in zip(alphas, detected) if not d],
                     [number(r["last_converged_load"]) for r, d in zip(pts, detected) if not d],
                     marker, mfc="none", color=ax.lines[-1].get_color())
@@ -124,8 +134,8 @@ def figure3(directory):
                     "o", mfc="none", color=line.get_color())
             ax_it.plot([number(s["load"]) / number(r["reference_load"]) for s in h],
                        [int(s["iterations"]) for s in h], ".-", color=line.get_color())
-        a = math.radians(float(alpha))
-        ax.axhline(1 / (math.sin(a) * math.cos(a)), color="k", ls="--", label="analytic")
+        ax.axhline(closed_form.inclined_interface_load(float(alpha)), color="k", ls="--",
+                   label="analytic")
         ax.set_title("alpha = %s degrees (open: step failed or on the mechanism)" % alpha)
         ax.set_xlabel("E u / C_w (axial, top)")
         ax.grid(alpha=0.3)
