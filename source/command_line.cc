@@ -2,9 +2,13 @@
 
 #include <thinlayer/command_line.h>
 #include <thinlayer/input_error.h>
+#include <thinlayer/interruption.h>
 #include <thinlayer/parameters.h>
+#include <thinlayer/results_directory.h>
 #include <thinlayer/run.h>
 #include <thinlayer/sweep.h>
+
+#include <csignal>
 
 namespace thinlayer
 {
@@ -80,16 +84,44 @@ namespace thinlayer
 
     try
       {
+        const ScopedInterruption interruption;
+        // A file size limit (ulimit -f) then fails the write (EFBIG), which
+        // is reported like a full disk, instead of killing the program.
+        std::signal(SIGXFSZ, SIG_IGN);
         const Parameters parameters = ParameterReader().read(file, overrides);
+        unsigned int failed_runs = 0;
         if (parameters.sweep.values.empty())
           run_scene(parameters, out);
         else
-          run_sweep(file, overrides, parameters, out);
+          failed_runs = run_sweep(file, overrides, parameters, out);
+        out.flush();
+        if (!out)
+          {
+            err << "thinlayer: cannot write to standard output; the results "
+                   "are in Output/Directory\n";
+            return 1;
+          }
+        // 128 + the signal, as a shell reports a process it ended.
+        if (interrupted())
+          return 128 + interruption_signal();
+        if (failed_runs > 0)
+          {
+            err << "thinlayer: " << failed_runs
+                << " run(s) of the sweep ended in an error (sweep.csv, "
+                   "column error)\n";
+            return 1;
+          }
         return 0;
       }
     catch (const InputError &e)
       {
         err << "thinlayer: " << e.what() << '\n';
+        return 1;
+      }
+    catch (const WriteError &e)
+      {
+        err << "thinlayer: " << e.what()
+            << "; Output/Directory still holds the run it held before\n";
         return 1;
       }
     catch (const ExceptionBase &e)

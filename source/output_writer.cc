@@ -2,9 +2,12 @@
 
 #include <thinlayer/elasticity.h>
 #include <thinlayer/output_writer.h>
+#include <thinlayer/results_directory.h>
 #include <thinlayer/text_format.h>
 
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <iomanip>
 #include <limits>
@@ -12,16 +15,33 @@
 
 namespace thinlayer
 {
-  OutputWriter::OutputWriter(const OutputParameters &parameters)
-    : directory(parameters.directory)
+  namespace
+  {
+    /// Throw a WriteError naming the file @p name if @p stream failed.
+    void
+    check_written(const std::ostream &stream, const std::string &name)
+    {
+      if (!stream)
+        throw WriteError("cannot write " + name + ": " +
+                         (errno != 0 ? std::strerror(errno)
+                                     : "the stream failed"));
+    }
+  } // namespace
+
+
+  OutputWriter::OutputWriter(const OutputParameters &parameters,
+                             const std::string      &directory)
+    : directory(directory)
     , vtu_subdivisions(parameters.vtu_subdivisions)
   {
-    std::filesystem::create_directories(directory);
+    errno = 0;
     history.open(directory + "/history.csv");
     history << "step,attempt,load_factor,load,displacement,displacement_min,"
                "displacement_max,iterations,converged,accepted,"
                "max_yield_ratio,plastic_points,cut_backs,factorisations,"
-               "stiffness_ratio,growth_ratio,non_finite\n";
+               "stiffness_ratio,growth_ratio,non_finite\n"
+            << std::flush;
+    check_written(history, "history.csv");
   }
 
 
@@ -31,6 +51,7 @@ namespace thinlayer
     // A value that is not a finite number (a yield ratio where no
     // material can yield, a diverged step) as empty.
     const auto number = text_format::csv_number;
+    errno             = 0;
     history << row.step << ',' << row.attempt << ',' << number(row.load_factor)
             << ',' << number(row.load) << ',' << number(row.displacement.mean)
             << ',' << number(row.displacement.min) << ','
@@ -43,6 +64,7 @@ namespace thinlayer
             << ',' << number(row.result.growth_ratio) << ','
             << (row.result.non_finite ? 1 : 0) << '\n'
             << std::flush;
+    check_written(history, "history.csv");
   }
 
 
@@ -177,12 +199,14 @@ namespace thinlayer
 
     std::ostringstream name;
     name << "fields-" << std::setw(4) << std::setfill('0') << step << ".vtu";
-    std::ofstream vtu(directory + "/" + name.str());
+    std::ostringstream vtu;
     data_out.write_vtu(vtu);
+    write_file(name.str(), vtu.str());
 
     pvd_records.emplace_back(load_factor, name.str());
-    std::ofstream pvd(directory + "/fields.pvd");
+    std::ostringstream pvd;
     DataOutBase::write_pvd_record(pvd, pvd_records);
+    write_file("fields.pvd", pvd.str());
   }
 
 
@@ -227,11 +251,17 @@ namespace thinlayer
   {
     // Write beside, then rename: a reader never sees half a file.
     const std::string path = directory + "/" + name;
+    errno                  = 0;
     {
       std::ofstream out(path + ".partial");
       out << content;
+      out.close();
+      check_written(out, name);
     }
-    std::filesystem::rename(path + ".partial", path);
+    std::error_code error;
+    std::filesystem::rename(path + ".partial", path, error);
+    if (error)
+      throw WriteError("cannot write " + name + ": " + error.message());
   }
 
 

@@ -1,16 +1,21 @@
 #include <deal.II/base/timer.h>
 
 #include <thinlayer/analysis.h>
+#include <thinlayer/interruption.h>
 #include <thinlayer/load_stepping.h>
 #include <thinlayer/monitors.h>
 #include <thinlayer/output_writer.h>
+#include <thinlayer/results_directory.h>
 #include <thinlayer/run.h>
 #include <thinlayer/scene.h>
 #include <thinlayer/text_format.h>
 
 #include <cmath>
+#include <csignal>
 #include <filesystem>
+#include <functional>
 #include <limits>
+#include <memory>
 
 namespace thinlayer
 {
@@ -127,6 +132,10 @@ namespace thinlayer
       double growth_ratio         = std::numeric_limits<double>::quiet_NaN();
       /// Where a probe beyond the failed step showed the mechanism.
       double probe_load_factor = std::numeric_limits<double>::quiet_NaN();
+      /// The signal that interrupted the run (0: none), and the load
+      /// factor of the step it stopped.
+      int    interrupted_by          = 0;
+      double interrupted_load_factor = std::numeric_limits<double>::quiet_NaN();
     };
 
 
@@ -271,6 +280,15 @@ namespace thinlayer
       while (!stepping.finished())
         {
           const Attempt a = attempt(stepping.step(), stepping.target());
+          // A signal stopped the step: it is neither a failure nor a
+          // result, so it is not recorded; the accepted steps are the run.
+          if (interrupted())
+            {
+              result.interrupted_by          = interruption_signal();
+              result.interrupted_load_factor = a.load_factor;
+              analysis.reject_step();
+              break;
+            }
           // A state on the mechanism is cut back like a failed one.
           StepResult reported           = a.result;
           reported.converged            = a.result.converged && !a.on_mechanism;
@@ -446,6 +464,17 @@ namespace thinlayer
       const auto at = [](const double load_factor) {
         return " at load factor " + printf("%.6g", load_factor);
       };
+      if (run.interrupted_by != 0)
+        {
+          s.outcome = "interrupted";
+          s.reason  = std::string(run.interrupted_by == SIGINT ? "SIGINT" :
+                                  run.interrupted_by == SIGTERM ?
+                                                                 "SIGTERM" :
+                                                                 "a signal") +
+                     " stopped the step" + at(run.interrupted_load_factor) +
+                     "; the steps before it are complete";
+          return;
+        }
       if (!run.stopped)
         {
           s.outcome = run.converged ? "completed" : "not converged";
@@ -549,9 +578,17 @@ namespace thinlayer
   } // namespace
 
 
-  RunSummary
-  run_scene(const Parameters &p, std::ostream &out)
+  namespace
   {
+    /**
+     * The run itself; @p open_directory gives the directory to write into,
+     * called once all input has been checked.
+     */
+    RunSummary
+    run(const Parameters                    &p,
+        const std::function<std::string()> &open_directory,
+        std::ostream                        &out)
+    {
     Timer       wall_clock;
     TimerOutput timer(out, TimerOutput::never, TimerOutput::wall_times);
 
@@ -572,7 +609,7 @@ namespace thinlayer
     summary.warnings = analysis.get_kinematics().station_warning();
 
     // Everything the user gave us has been checked: only now write.
-    OutputWriter writer(p.output);
+    OutputWriter writer(p.output, open_directory());
     writer.write_file("mesh.msh", scene.mesh_text());
     writer.write_file("parameters.prm", p.effective_parameters);
     print_model(p, scene, analysis, summary.warnings, out);
@@ -612,7 +649,50 @@ namespace thinlayer
             << " s\n";
         timer.print_summary();
       }
-    out << "  results in " << writer.get_directory() << '\n';
     return summary;
+    }
+  } // namespace
+
+
+  RunSummary
+  run_scene(const Parameters &p, std::ostream &out)
+  {
+    std::unique_ptr<ResultsDirectory> results;
+    RunSummary                        summary;
+    try
+      {
+        summary = run(
+          p,
+          [&]() {
+            results =
+              std::make_unique<ResultsDirectory>(p.output.directory,
+                                                 p.parameter_file);
+            return results->staging();
+          },
+          out);
+      }
+    catch (const WriteError &e)
+      {
+        throw WriteError(std::string(e.what()) + " (Output/Directory '" +
+                         p.output.directory + "')");
+      }
+    results->commit();
+    out << "  results in " << p.output.directory << std::endl;
+    return summary;
+  }
+
+
+  RunSummary
+  run_scene_in(const Parameters  &p,
+               const std::string &directory,
+               std::ostream      &out)
+  {
+    return run(
+      p,
+      [&]() {
+        std::filesystem::create_directories(directory);
+        return directory;
+      },
+      out);
   }
 } // namespace thinlayer

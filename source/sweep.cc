@@ -1,4 +1,6 @@
 #include <thinlayer/input_error.h>
+#include <thinlayer/interruption.h>
+#include <thinlayer/results_directory.h>
 #include <thinlayer/run.h>
 #include <thinlayer/sweep.h>
 #include <thinlayer/text_format.h>
@@ -105,7 +107,7 @@ namespace thinlayer
   } // namespace
 
 
-  void
+  unsigned int
   run_sweep(const std::string              &file,
             const std::vector<std::string> &overrides,
             const Parameters               &base,
@@ -141,8 +143,12 @@ namespace thinlayer
           }
       }
 
-    std::filesystem::create_directories(base.output.directory);
-    std::ofstream csv(base.output.directory + "/sweep.csv");
+    // The whole sweep is one run of its directory: written aside, put in
+    // place at the end.
+    ResultsDirectory results(base.output.directory, file);
+    const std::string staging  = results.staging();
+    const std::string csv_path = staging + "/sweep.csv";
+    std::ofstream     csv(csv_path);
     csv << "run";
     for (const auto &[name, values] : sweep.values)
       csv << ',' << text_format::csv_field(name);
@@ -150,6 +156,7 @@ namespace thinlayer
 
     out << "thinlayer: sweep of " << combinations.size() << " runs into "
         << base.output.directory << '\n';
+    unsigned int failed_runs = 0;
     for (unsigned int r = 0; r < combinations.size(); ++r)
       {
         csv << r + 1;
@@ -161,21 +168,49 @@ namespace thinlayer
         out << "  run " << r + 1 << '/' << combinations.size() << ": "
             << describe(sweep, combinations[r]) << ": ";
         std::ostringstream run_output;
+        const std::string  run_directory =
+          staging + directory_of(r).substr(base.output.directory.size());
         try
           {
             const Parameters p = ParameterReader().read(file, run_overrides[r]);
-            const RunSummary s = run_scene(p, run_output);
+            const RunSummary s = run_scene_in(p, run_directory, run_output);
             csv << ',' << s.csv_row() << ",\n";
             print_run(s, out);
           }
+        catch (const WriteError &e)
+          {
+            // A full disk ends the sweep, not only this run.
+            throw WriteError(std::string(e.what()) + " (Output/Directory '" +
+                             directory_of(r) + "')");
+          }
         catch (const std::exception &e)
           {
+            // A run that ended in an error leaves no half-written files.
+            std::error_code error;
+            std::filesystem::remove_all(run_directory, error);
             csv << ',' << RunSummary::csv_error_row() << ','
                 << text_format::csv_field(e.what()) << '\n';
             out << "error: " << e.what() << std::endl;
+            ++failed_runs;
           }
         csv << std::flush;
+        if (!csv)
+          throw WriteError("cannot write sweep.csv (Output/Directory '" +
+                           base.output.directory + "')");
+        if (interrupted())
+          {
+            out << "  sweep interrupted after run " << r + 1 << " of "
+                << combinations.size() << std::endl;
+            break;
+          }
       }
-    out << "  results in " << base.output.directory << "/sweep.csv\n";
+    csv.close();
+    if (!csv)
+      throw WriteError("cannot write sweep.csv (Output/Directory '" +
+                       base.output.directory + "')");
+    results.commit();
+    out << "  results in " << base.output.directory << "/sweep.csv"
+        << std::endl;
+    return failed_runs;
   }
 } // namespace thinlayer

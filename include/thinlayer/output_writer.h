@@ -43,14 +43,15 @@ namespace thinlayer
    * attempt at a load step, flushed as it goes so a long run can be
    * watched),
    * fields-NNNN.vtu with fields.pvd for ParaView, and whole files such as
-   * summary.json at the end. The directory of the Output section is created
-   * by the constructor, so construct it only once all input has been
-   * checked.
+   * summary.json at the end, into @p directory (a ResultsDirectory's
+   * staging directory, which exists). Every write is checked: one that
+   * fails throws a WriteError that names the file.
    */
   class OutputWriter
   {
   public:
-    explicit OutputWriter(const OutputParameters &parameters);
+    OutputWriter(const OutputParameters &parameters,
+                 const std::string      &directory);
 
     void
     write_history_row(const HistoryRow &row);

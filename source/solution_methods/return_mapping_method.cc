@@ -1,3 +1,4 @@
+#include <thinlayer/interruption.h>
 #include <thinlayer/solution_methods/return_mapping_method.h>
 
 #include <algorithm>
@@ -138,6 +139,8 @@ namespace thinlayer
     ResidualNorms norms = starting_residual(target);
     for (unsigned int k = 0; k < max_iterations(); ++k)
       {
+        if (interrupted())
+          return false;
         ++result.iterations;
         if (!iterate(target, norms, result))
           return false;

@@ -1,3 +1,4 @@
+#include <thinlayer/interruption.h>
 #include <thinlayer/solution_methods/viscoplastic.h>
 
 #include <algorithm>
@@ -55,7 +56,8 @@ namespace thinlayer
       (parameters.convergence_criterion ==
        SolverParameters::ConvergenceCriterion::body_loads);
     StepResult result{0, false, 0, 0};
-    while (result.iterations < parameters.max_iterations && !result.converged)
+    while (result.iterations < parameters.max_iterations &&
+           !result.converged && !interrupted())
       {
         ++result.iterations;
         for (unsigned int m = 0; m < n_modes; ++m)
