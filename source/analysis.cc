@@ -53,7 +53,8 @@ namespace thinlayer
     , dof_handler(tria)
     , boundary_data(parameters.boundaries,
                     parameters.mesh.geometry_parameters,
-                    kinematics)
+                    kinematics,
+                    parameters.parameter_file)
     , time_step(std::numeric_limits<double>::infinity())
     , accepted_lambda(0)
     , current_lambda(0)

@@ -4,6 +4,10 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <thinlayer/boundary_data.h>
+#include <thinlayer/input_error.h>
+
+#include <cmath>
+#include <sstream>
 
 namespace thinlayer
 {
@@ -74,8 +78,10 @@ namespace thinlayer
   BoundaryData::BoundaryData(
     const std::map<types::boundary_id, BoundaryParameters> &boundaries,
     const std::map<std::string, double>                    &constants,
-    const Kinematics                                       &kinematics)
+    const Kinematics                                       &kinematics,
+    const std::string                                      &parameter_file)
     : kinematics(kinematics)
+    , parameter_file(parameter_file)
   {
     const unsigned int n       = kinematics.n_components();
     const bool         fourier = kinematics.is_fourier();
@@ -89,17 +95,61 @@ namespace thinlayer
         c.traction     = make_function(b.traction, n, fourier, constants);
         c.pressure     = make_function(b.pressure, 1, fourier, constants);
         c.loaded       = !(is_zero(b.traction) && is_zero(b.pressure));
+        c.section      = BoundaryParameters::section(id);
       }
+  }
+
+
+  void
+  BoundaryData::check_finite(const Vector<double> &v,
+                             const Point<2>       &x,
+                             const double          theta,
+                             const std::string    &entry) const
+  {
+    for (const double value : v)
+      if (!std::isfinite(value))
+        {
+          std::ostringstream where;
+          where.precision(6);
+          if (kinematics.is_fourier())
+            where << "r = " << x[0] << ", z = " << x[1]
+                  << ", theta = " << theta;
+          else
+            where << "x = " << x[0] << ", y = " << x[1];
+          throw InputError(parameter_file,
+                           entry,
+                           std::string("gives ") +
+                             (std::isnan(value) ? "nan" :
+                              value > 0         ? "inf" :
+                                                  "-inf") +
+                             " at " +
+                             where.str() +
+                             " on the boundary; expected finite numbers");
+        }
+  }
+
+
+  double
+  BoundaryData::pressure(const Condition &c,
+                         const Point<2>  &x,
+                         const double     theta) const
+  {
+    Vector<double> v(1);
+    v[0] = c.pressure->value(Point<3>(x[0], x[1], theta));
+    check_finite(v, x, theta, c.section + "/Pressure");
+    return v[0];
   }
 
 
   Tensor<1, 3>
   BoundaryData::evaluate(const FunctionParser<3> &f,
                          const Point<2>          &x,
-                         const double             theta) const
+                         const double             theta,
+                         const std::string       &entry) const
   {
     Vector<double> v(f.n_components);
     f.vector_value(Point<3>(x[0], x[1], theta), v);
+    check_finite(v, x, theta, entry);
     Tensor<1, 3> result;
     if (!kinematics.is_fourier())
       {
@@ -145,17 +195,18 @@ namespace thinlayer
       {
         if (c->second.constrained.n_selected_components(n) == 0)
           continue;
-        const FunctionParser<3> &u = *c->second.displacement;
+        const FunctionParser<3> &u     = *c->second.displacement;
+        const std::string        entry = c->second.section + "/Displacement";
         const ModeAmplitude      amplitude(
           kinematics.n_components(), [&](const Point<2> &x) {
             if (!kinematics.is_fourier())
-              return evaluate(u, x, 0);
+              return evaluate(u, x, 0, entry);
             Tensor<1, 3> a;
             const double d = 2 * numbers::PI / n_circle_points;
             for (unsigned int j = 0; j < n_circle_points; ++j)
               {
                 const double       theta = j * d;
-                const Tensor<1, 3> g     = evaluate(u, x, theta);
+                const Tensor<1, 3> g     = evaluate(u, x, theta, entry);
                 a[0] += g[0] * kinematics.T1_at(m, theta) * d;
                 a[1] += g[1] * kinematics.T1_at(m, theta) * d;
                 a[2] += g[2] * kinematics.T2_at(m, theta) * d;
@@ -223,9 +274,11 @@ namespace thinlayer
               Tensor<1, 3> t;
               for (unsigned int j = 0; j < thetas.size(); ++j)
                 {
-                  Tensor<1, 3> g = evaluate(*c->second.traction, x, thetas[j]);
-                  const double p =
-                    c->second.pressure->value(Point<3>(x[0], x[1], thetas[j]));
+                  Tensor<1, 3> g = evaluate(*c->second.traction,
+                                            x,
+                                            thetas[j],
+                                            c->second.section + "/Traction");
+                  const double p = pressure(c->second, x, thetas[j]);
                   for (unsigned int d = 0; d < 2; ++d)
                     g[d] -= p * fe_face.normal_vector(q)[d];
                   t[0] += g[0] * kinematics.T1_at(m, thetas[j]) * weights[j];

@@ -1,20 +1,53 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_tools.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <thinlayer/input_error.h>
 #include <thinlayer/monitors.h>
 
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 namespace thinlayer
 {
   template <int dim>
   Monitors<dim>::Monitors(const MonitorParameters &parameters,
-                          const Analysis<dim>     &analysis)
+                          const Analysis<dim>     &analysis,
+                          const std::string       &parameter_file)
     : parameters(parameters)
     , analysis(analysis)
   {
+    if (parameters.displacement_measure ==
+        MonitorParameters::DisplacementMeasure::point)
+      {
+        Point<dim> x;
+        for (unsigned int d = 0; d < dim; ++d)
+          x[d] = parameters.displacement_point[d];
+        bool inside = true;
+        try
+          {
+            inside = GridTools::find_active_cell_around_point(
+                       analysis.get_mapping(), analysis.get_dof_handler(), x)
+                       .first.state() == IteratorState::valid;
+          }
+        catch (const std::exception &)
+          {
+            inside = false;
+          }
+        if (!inside)
+          {
+            std::ostringstream point;
+            for (unsigned int d = 0; d < dim; ++d)
+              point << (d > 0 ? ", " : "") << x[d];
+            throw InputError(parameter_file,
+                             "Monitors/Displacement point",
+                             "(" + point.str() +
+                               ") lies outside the mesh; expected a point "
+                               "of the body");
+          }
+      }
     std::vector<bool> mask(analysis.get_kinematics().n_components(), false);
     mask[parameters.load_component] = true;
     reaction_dofs =

@@ -602,7 +602,7 @@ namespace thinlayer
       TimerOutput::Scope scope(timer, "setup and factorisation");
       analysis.setup();
     }
-    const Monitors<2> monitors(p.monitors, analysis);
+    const Monitors<2> monitors(p.monitors, analysis, p.parameter_file);
 
     RunSummary summary;
     describe_model(p, scene, analysis, summary);

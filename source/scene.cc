@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -102,6 +103,63 @@ namespace thinlayer
       return msh;
     }
 
+    /**
+     * Every cell a convex quadrilateral of a size the arithmetic can carry.
+     * For a bilinear cell the Jacobian is positive everywhere exactly when
+     * it is positive at the four corners, where it is the cross product of
+     * the two edges that meet there: a repeated vertex, a bow-tie, a
+     * re-entrant corner or a cell of zero area shows as a corner whose
+     * product is not positive. A cell whose corner products are below
+     * 1e-12 of the mesh's extent squared (a thin layer of aspect ratio
+     * 10^6 is still far above) turns the stiffness into rounding error.
+     */
+    void
+    check_cell_shapes(const Triangulation<2> &tria, const std::string &file)
+    {
+      Point<2> low = tria.get_vertices()[0], high = low;
+      for (const auto &v : tria.get_vertices())
+        for (unsigned int d = 0; d < 2; ++d)
+          {
+            low[d]  = std::min(low[d], v[d]);
+            high[d] = std::max(high[d], v[d]);
+          }
+      const double extent = (high - low).norm_square();
+      for (const auto &cell : tria.active_cell_iterators())
+        {
+          // deal.II numbers a quadrilateral's vertices lexicographically;
+          // 0, 1, 3, 2 goes round it anticlockwise.
+          const Point<2> v[4] = {cell->vertex(0),
+                                 cell->vertex(1),
+                                 cell->vertex(3),
+                                 cell->vertex(2)};
+          double         smallest = std::numeric_limits<double>::max();
+          for (unsigned int k = 0; k < 4; ++k)
+            {
+              const Tensor<1, 2> a = v[(k + 1) % 4] - v[k];
+              const Tensor<1, 2> b = v[(k + 3) % 4] - v[k];
+              smallest = std::min(smallest, a[0] * b[1] - a[1] * b[0]);
+            }
+          if (smallest > 1e-12 * extent)
+            continue;
+          std::ostringstream where;
+          where << "cell " << cell->active_cell_index() << " of physical "
+                << "surface " << cell->material_id() << ", corners";
+          for (const auto &corner : v)
+            where << " (" << corner[0] << ", " << corner[1] << ')';
+          throw InputError(
+            file,
+            "",
+            where.str() +
+              (smallest > 0 ?
+                 ": the cell is smaller than 1e-12 of the mesh's extent "
+                 "squared, too small for the stiffness to be computed" :
+                 ": expected a convex quadrilateral with four distinct "
+                 "corners, got one that is degenerate, folded (a bow-tie) "
+                 "or not convex"));
+        }
+    }
+
+
     std::string
     describe(const std::set<unsigned int> &ids, const bool boundary = false)
     {
@@ -159,6 +217,7 @@ namespace thinlayer
                        "",
                        "expected quadrilateral cells only (use Recombine "
                        "Surface or Mesh.RecombineAll in the .geo)");
+    check_cell_shapes(tria, p.mesh.file);
     check_ids(p, tria);
   }
 

@@ -1,13 +1,17 @@
 // Truth checked: bad input is refused with one clear message that names the
 // file, the entry (or id) and what was expected; the exit status is
-// non-zero; and nothing is written: the output directory does not exist
-// afterwards. The whole program runs in-process through
-// run_command_line(), on files this test writes into its own directory.
+// non-zero; and nothing is written: the output directory still holds the
+// previous run, file for file and byte for byte (each check starts from a
+// copy of a valid run's results). The whole program runs in-process
+// through run_command_line(), on files this test writes into its own
+// directory. bad_output holds the cases of the output path (the results
+// directory, signals, a full disk).
 #include <thinlayer/command_line.h>
 
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <sstream>
 
 namespace
@@ -51,16 +55,90 @@ Physical Curve("bottom", 1) = {1}; Physical Curve("top", 2) = {6};
            extra;
   }
 
+  /**
+   * A gmsh 2.2 mesh of quadrilaterals on @p nodes ("x y" each), material
+   * id 1; boundary id 1 along nodes 1-2 and 2 along the last two nodes of
+   * the last quad.
+   */
+  void
+  write_msh(const std::string                      &name,
+            const std::vector<std::string>         &nodes,
+            const std::vector<std::vector<int>>    &quads)
+  {
+    std::ostringstream msh;
+    msh << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n" << nodes.size()
+        << '\n';
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      msh << i + 1 << ' ' << nodes[i] << " 0\n";
+    const auto &last = quads.back();
+    msh << "$EndNodes\n$Elements\n"
+        << quads.size() + 2 << "\n1 1 2 1 1 1 2\n2 1 2 2 2 " << last[2] << ' '
+        << last[3] << '\n';
+    for (unsigned int k = 0; k < quads.size(); ++k)
+      msh << k + 3 << " 3 2 1 1 " << quads[k][0] << ' ' << quads[k][1] << ' '
+          << quads[k][2] << ' ' << quads[k][3] << '\n';
+    msh << "$EndElements\n";
+    write(name, msh.str());
+  }
+
+  /// A scene on @p mesh with one material (1) and boundaries 1 and 2.
+  std::string
+  one_material_scene(const std::string &mesh)
+  {
+    return "subsection Mesh\n  set File = " + mesh +
+           "\nend\nsubsection Material 1\nend\n"
+           "subsection Boundary 1\n  set Constrained components = x, y\nend\n"
+           "subsection Boundary 2\n  set Traction = 0; -1\nend\n"
+           "subsection Monitors\n  set Displacement boundary id = 2\nend\n"
+           "subsection Output\n  set Directory = results\n  set Print "
+           "timing = false\nend\n";
+  }
+
+  /// Every file under @p directory with its contents.
+  std::map<std::string, std::string>
+  contents(const std::string &directory)
+  {
+    std::map<std::string, std::string> files;
+    if (std::filesystem::exists(directory))
+      for (const auto &entry :
+           std::filesystem::recursive_directory_iterator(directory))
+        {
+          std::ostringstream text;
+          if (entry.is_regular_file())
+            text << std::ifstream(entry.path()).rdbuf();
+          files[entry.path().lexically_relative(directory).string()] =
+            text.str();
+        }
+    return files;
+  }
+
+  /// Whether a run's staging directory (".results.partial-...") is left.
+  bool
+  staging_left()
+  {
+    for (const auto &entry : std::filesystem::directory_iterator("."))
+      if (entry.path().filename().string().rfind(".results.", 0) == 0)
+        return true;
+    return false;
+  }
+
+  /// The results of the valid scene, which every check starts from.
+  std::map<std::string, std::string> previous_run;
+
   void
   check(const std::string &what, const std::vector<std::string> &arguments)
   {
     std::filesystem::remove_all("results");
+    std::filesystem::copy("previous",
+                          "results",
+                          std::filesystem::copy_options::recursive);
     std::ostringstream out, err;
     const int status = thinlayer::run_command_line(arguments, out, err);
     std::cout << "* " << what << "\n  exit status " << status
-              << ", results written: "
-              << (std::filesystem::exists("results") ? "yes" : "no") << "\n  "
-              << err.str() << '\n';
+              << ", previous run kept: "
+              << (contents("results") == previous_run ? "yes" : "NO")
+              << ", staging left behind: " << (staging_left() ? "YES" : "no")
+              << "\n  " << err.str() << '\n';
   }
 } // namespace
 
@@ -87,6 +165,9 @@ main()
               << (std::filesystem::exists("results/summary.json") ? "yes"
                                                                   : "no")
               << "\n\n";
+    std::filesystem::remove_all("previous");
+    std::filesystem::rename("results", "previous");
+    previous_run = contents("previous");
   }
 
   check("a parameter file that does not exist", {"missing.prm"});
@@ -120,11 +201,8 @@ main()
               "subsection Loading\n  set Load increments = 0.5, 3*\nend\n"));
   check("malformed load increments", {"increments.prm"});
 
-  write("expression.prm",
-        scene("good.geo",
-              "",
-              "subsection Boundary 2\n  set Traction = 0; -(1 + \nend\n"));
-  check("a traction expression that does not parse", {"expression.prm"});
+  check("a traction expression that does not parse",
+        {"good.prm", "-s", "Boundary 2/Traction=0; -(1 + "});
 
   write("no-mesh.prm", scene("nowhere.geo"));
   check("a mesh file that does not exist", {"no-mesh.prm"});
@@ -135,11 +213,8 @@ main()
   write("triangles.prm", scene("triangles.geo"));
   check("a mesh of triangles", {"triangles.prm"});
 
-  write("geometry.prm",
-        scene("good.geo",
-              "",
-              "subsection Mesh\n  set Geometry parameters = heigth=2\nend\n"));
-  check("a geometry parameter the .geo does not have", {"geometry.prm"});
+  check("a geometry parameter the .geo does not have",
+        {"good.prm", "-s", "Mesh/Geometry parameters=heigth=2"});
 
   write("missing-material.prm",
         "subsection Mesh\n  set File = good.geo\nend\n"
@@ -161,12 +236,8 @@ main()
               "end\n"));
   check("a boundary id the mesh does not have", {"extra-boundary.prm"});
 
-  write("monitor.prm",
-        scene("good.geo",
-              "",
-              "subsection Monitors\n  set Displacement boundary id = 9\n"
-              "end\n"));
-  check("a monitor on a boundary id the mesh does not have", {"monitor.prm"});
+  check("a monitor on a boundary id the mesh does not have",
+        {"good.prm", "-s", "Monitors/Displacement boundary id=9"});
 
   write("unrestrained.prm",
         "subsection Mesh\n  set File = good.geo\nend\n"
@@ -230,4 +301,95 @@ main()
          "Solver/Convergence criterion=body loads"});
   check("the body-load criterion with the default method (Newton fallback)",
         {"good.prm", "-s", "Solver/Convergence criterion=body loads"});
+
+  // Values that are not finite numbers, or would make some.
+  check("a Young's modulus that overflows the stiffness",
+        {"good.prm", "-s", "Material 1/Young's modulus=1e308"});
+  check("a traction that is infinite",
+        {"good.prm", "-s", "Boundary 2/Traction=0; -1e-3/0"});
+  check("a traction that is not a number",
+        {"good.prm", "-s", "Boundary 2/Traction=0; sqrt(-1)"});
+  check("a traction that is not a number on part of the boundary",
+        {"good.prm", "-s", "Boundary 2/Traction=0; log(x-0.5)"});
+  check("a pressure that is infinite",
+        {"good.prm",
+         "-s",
+         "Boundary 2/Traction=0",
+         "-s",
+         "Boundary 2/Pressure=1/0"});
+  check("a prescribed displacement that is not a number",
+        {"good.prm", "-s", "Boundary 1/Displacement=0; sqrt(-1)"});
+  check("a load increment that is not finite",
+        {"good.prm", "-s", "Loading/Load increments=0.5, 1e999"});
+
+  // Entries that would be ignored or would make the run meaningless.
+  check("a directory given as the parameter file", {"."});
+  check("a tolerance of 1", {"good.prm", "-s", "Solver/Tolerance=1"});
+  check("a tolerance above 1", {"good.prm", "-s", "Solver/Tolerance=5"});
+  check("a friction angle on a Tresca material",
+        {"good.prm",
+         "-s",
+         "Material 1/Yield criterion=tresca",
+         "-s",
+         "Material 1/Cohesion=1",
+         "-s",
+         "Material 1/Friction angle=30"});
+  check("a dilation angle on a von Mises material",
+        {"good.prm",
+         "-s",
+         "Material 1/Yield criterion=von mises",
+         "-s",
+         "Material 1/Cohesion=1",
+         "-s",
+         "Material 1/Dilation angle=5"});
+  check("a cohesion on an elastic material",
+        {"good.prm", "-s", "Material 1/Cohesion=1"});
+  check("a traction on a constrained component",
+        {"good.prm", "-s", "Boundary 1/Traction=0; -1"});
+  check("a pressure on a boundary constrained in every component",
+        {"good.prm", "-s", "Boundary 1/Pressure=1"});
+  check("a repeat count that is not a whole number",
+        {"good.prm", "-s", "Loading/Load increments=1e9*0.1"});
+  check("more load steps than memory holds",
+        {"good.prm", "-s", "Loading/Load increments=1000000000*0.1"});
+  write("twice-section.prm",
+        scene() + "subsection Material 1\n  set Young's modulus = 5\nend\n");
+  check("the same subsection twice", {"twice-section.prm"});
+  write("twice-entry.prm",
+        scene() + "subsection Solver\n  set Tolerance = 1e-3\n  set Tolerance "
+                  "= 1e-4\nend\n");
+  check("the same entry twice in one subsection", {"twice-entry.prm"});
+  check("a monitor point outside the mesh",
+        {"good.prm",
+         "-s",
+         "Monitors/Displacement measure=point",
+         "-s",
+         "Monitors/Displacement point=5, 5"});
+
+  // Cells that are not convex quadrilaterals of a usable size. Nodes 1-4
+  // go round the first cell anticlockwise when it is valid.
+  write_msh("square.msh", {"0 0", "1 0", "1 1", "0 1"}, {{1, 2, 3, 4}});
+  write("square.prm", one_material_scene("square.msh"));
+  check("(the valid one-cell mesh: it runs, and replaces the previous run)",
+        {"square.prm"});
+  write_msh("repeated.msh", {"0 0", "1 0", "1 1", "0 1"}, {{1, 2, 3, 3}});
+  write("repeated.prm", one_material_scene("repeated.msh"));
+  check("a quadrilateral with a repeated vertex", {"repeated.prm"});
+  write_msh("collapsed.msh", {"0 0", "1 0", "1 1", "1 1"}, {{1, 2, 3, 4}});
+  write("collapsed.prm", one_material_scene("collapsed.msh"));
+  check("a quadrilateral collapsed to a triangle", {"collapsed.prm"});
+  write_msh("bowtie.msh", {"0 0", "1 0", "0 1", "1 1"}, {{1, 2, 3, 4}});
+  write("bowtie.prm", one_material_scene("bowtie.msh"));
+  check("a bow-tie quadrilateral", {"bowtie.prm"});
+  write_msh("reentrant.msh", {"0 0", "1 0", "0.3 0.3", "0 1"}, {{1, 2, 3, 4}});
+  write("reentrant.prm", one_material_scene("reentrant.msh"));
+  check("a quadrilateral that is not convex", {"reentrant.prm"});
+  write_msh("flat.msh", {"0 0", "1 0", "2 0", "3 0"}, {{1, 2, 3, 4}});
+  write("flat.prm", one_material_scene("flat.msh"));
+  check("a quadrilateral of zero area", {"flat.prm"});
+  write_msh("sliver.msh",
+            {"0 0", "1 0", "1 1", "0 1", "1 1.0000000000001", "0 1.0000000000001"},
+            {{1, 2, 3, 4}, {4, 3, 5, 6}});
+  write("sliver.prm", one_material_scene("sliver.msh"));
+  check("a cell 1e-13 thick in a mesh of size 1", {"sliver.prm"});
 }

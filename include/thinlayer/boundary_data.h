@@ -33,13 +33,17 @@ namespace thinlayer
   {
   public:
     /**
-     * The conditions of the @p boundaries sections, whose expressions may
-     * use the geometry parameters @p constants.
+     * The conditions of the @p boundaries sections of @p parameter_file,
+     * whose expressions may use the geometry parameters @p constants. An
+     * expression that gives a value that is not a finite number where it
+     * is evaluated on the boundary is an InputError naming its entry and
+     * the point.
      */
     BoundaryData(
       const std::map<types::boundary_id, BoundaryParameters> &boundaries,
       const std::map<std::string, double>                    &constants,
-      const Kinematics                                       &kinematics);
+      const Kinematics                                       &kinematics,
+      const std::string                                      &parameter_file);
 
     /**
      * Add homogeneous constraints for every constrained component (the
@@ -81,18 +85,34 @@ namespace thinlayer
       std::unique_ptr<FunctionParser<3>> traction;
       std::unique_ptr<FunctionParser<3>> pressure;
       bool                               loaded;
+      /// "Boundary <id>", for messages.
+      std::string section;
     };
 
     /**
      * The Cartesian vector of @p f at (x, y) in plane strain, or its
-     * cylindrical components (r, z, theta) at (r, z, theta) for Fourier.
+     * cylindrical components (r, z, theta) at (r, z, theta) for Fourier;
+     * @p entry ("Boundary 2/Traction") names @p f in an error.
      */
     Tensor<1, 3>
     evaluate(const FunctionParser<3> &f,
              const Point<2>          &x,
-             const double             theta) const;
+             const double             theta,
+             const std::string       &entry) const;
+
+    /// The pressure of @p c at (x, y) (and theta), checked like evaluate().
+    double
+    pressure(const Condition &c, const Point<2> &x, const double theta) const;
+
+    /// An InputError unless every value of @p v is a finite number.
+    void
+    check_finite(const Vector<double> &v,
+                 const Point<2>       &x,
+                 const double          theta,
+                 const std::string    &entry) const;
 
     const Kinematics                       &kinematics;
+    const std::string                       parameter_file;
     std::map<types::boundary_id, Condition> conditions;
   };
 } // namespace thinlayer

@@ -34,9 +34,14 @@ namespace thinlayer
   class Monitors
   {
   public:
-    /// Monitors of @p analysis, which must be set up.
+    /**
+     * Monitors of @p analysis, which must be set up. A displacement point
+     * outside the mesh is an InputError naming the entry of
+     * @p parameter_file.
+     */
     Monitors(const MonitorParameters &parameters,
-             const Analysis<dim>     &analysis);
+             const Analysis<dim>     &analysis,
+             const std::string       &parameter_file);
 
     /// The load measure, times its scale.
     double

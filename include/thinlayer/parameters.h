@@ -151,6 +151,13 @@ namespace thinlayer
           const unsigned int          id,
           const KinematicsParameters &kinematics,
           const MeshParameters       &mesh);
+
+  private:
+    /// An InputError for a traction or pressure on constrained components.
+    void
+    check_loads_where_free(const std::string &parameter_file,
+                           const std::string &section,
+                           const bool         fourier) const;
   };
 
 

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -14,6 +15,59 @@ namespace thinlayer
 {
   namespace
   {
+    /**
+     * A section opened twice, or an entry set twice in one section:
+     * ParameterHandler lets the later win, silently. Line numbers are the
+     * file's.
+     */
+    void
+    check_nothing_given_twice(const std::string &text, const std::string &file)
+    {
+      const std::regex opens("^\\s*subsection\\s+(.*?)\\s*(#.*)?$");
+      const std::regex closes("^\\s*end\\s*(#.*)?$");
+      const std::regex sets("^\\s*set\\s+([^=]*?)\\s*=.*$");
+      std::vector<std::string>           path;
+      std::map<std::string, unsigned int> first_line;
+      std::istringstream                  lines(text);
+      std::string                         line;
+      std::smatch                         match;
+      for (unsigned int number = 1; std::getline(lines, line); ++number)
+        {
+          std::string key;
+          if (std::regex_match(line, match, opens))
+            {
+              path.push_back(match[1]);
+              key = "subsection ";
+            }
+          else if (std::regex_match(line, match, closes))
+            {
+              if (!path.empty())
+                path.pop_back();
+              continue;
+            }
+          else if (std::regex_match(line, match, sets))
+            key = "entry ";
+          else
+            continue;
+          std::string name;
+          for (unsigned int i = 0; i + (key == "entry " ? 0 : 1) < path.size();
+               ++i)
+            name += path[i] + "/";
+          name += key == "entry " ? std::string(match[1]) : path.back();
+          const auto [it, inserted] = first_line.emplace(key + name, number);
+          if (!inserted)
+            throw InputError(file,
+                             name,
+                             "given twice, at lines " +
+                               std::to_string(it->second) + " and " +
+                               std::to_string(number) +
+                               " (the later would silently win); expected "
+                               "each " +
+                               (key == "entry " ? "entry" : "subsection") +
+                               " once");
+        }
+    }
+
 
     /**
      * The names of per-id sections ("Material 3") that the parameter text
@@ -140,6 +194,8 @@ namespace thinlayer
   ParameterReader::read(const std::string              &file,
                         const std::vector<std::string> &overrides) const
   {
+    if (std::filesystem::is_directory(file))
+      throw InputError(file, "", "is a directory; expected a parameter file");
     std::ifstream in(file);
     if (!in)
       throw InputError(file, "", "cannot open the parameter file");
@@ -155,6 +211,7 @@ namespace thinlayer
     const std::string              &file,
     const std::vector<std::string> &overrides) const
   {
+    check_nothing_given_twice(text, file);
     const auto material_ids = ids_of_sections(text, overrides, "Material");
     const auto boundary_ids = ids_of_sections(text, overrides, "Boundary");
 

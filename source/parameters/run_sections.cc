@@ -16,13 +16,16 @@ namespace thinlayer
 {
   namespace
   {
+    /// More load steps than anyone means (and than memory holds at 1e9).
+    constexpr unsigned long max_load_steps = 100000;
+
     std::vector<double>
     parse_increments(const std::string &text, const std::string &file)
     {
       const std::string   entry = "Loading/Load increments";
       std::vector<double> result;
       const std::regex    repeated(
-        "\\s*([0-9]+)\\s*\\*\\s*([-+0-9.eE]+)\\s*|\\s*([-+0-9.eE]+)\\s*");
+        "\\s*([0-9.eE+]+)\\s*\\*\\s*([-+0-9.eE]+)\\s*|\\s*([-+0-9.eE]+)\\s*");
       for (const auto &item : Utilities::split_string_list(text, ','))
         {
           std::smatch match;
@@ -34,9 +37,15 @@ namespace thinlayer
           try
             {
               if (match[1].matched)
-                result.insert(result.end(),
-                              std::stoul(match[1]),
-                              std::stod(match[2]));
+                {
+                  if (match[1].str().find_first_not_of("0123456789") !=
+                      std::string::npos)
+                    throw std::invalid_argument("repeat count");
+                  const unsigned long n = std::stoul(match[1]);
+                  if (n > max_load_steps)
+                    throw std::out_of_range("repeat count");
+                  result.insert(result.end(), n, std::stod(match[2]));
+                }
               else
                 result.push_back(std::stod(match[3]));
             }
@@ -44,9 +53,21 @@ namespace thinlayer
             {
               throw InputError(file,
                                entry,
-                               "expected a number or 'n*number', got '" + item +
-                                 "'");
+                               "expected a number or 'n*number' (n a whole "
+                               "number of steps, at most " +
+                                 std::to_string(max_load_steps) + "), got '" +
+                                 item + "'");
             }
+          if (result.size() > max_load_steps)
+            throw InputError(file,
+                             entry,
+                             "expected at most " +
+                               std::to_string(max_load_steps) +
+                               " load steps, got more");
+          if (!std::isfinite(result.back()))
+            throw InputError(file,
+                             entry,
+                             "expected finite numbers, got '" + item + "'");
         }
       if (result.empty())
         throw InputError(file, entry, "expected at least one increment");
@@ -295,6 +316,13 @@ namespace thinlayer
                        "'body loads': past collapse the stress excess "
                        "grows without bound and that test would pass");
     tolerance              = positive(prm, "Tolerance", file, "Solver");
+    if (!(tolerance < 1))
+      throw InputError(file,
+                       "Solver/Tolerance",
+                       "expected a value in (0, 1): it is measured against "
+                       "the largest force (or body load), so 1 or more "
+                       "accepts any state; got " +
+                         prm.get("Tolerance"));
     max_iterations         = prm.get_integer("Maximum iterations");
     continue_after_failure = prm.get_bool("Continue after failure");
     linear_solver = linear_solver_names.value(prm.get("Linear solver"));

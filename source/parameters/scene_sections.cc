@@ -315,6 +315,12 @@ namespace thinlayer
     prm.enter_subsection(section);
     name           = prm.get("Name");
     youngs_modulus = positive(prm, "Young's modulus", file, section);
+    // Above this, products in the stiffness and the stresses overflow.
+    if (!(youngs_modulus <= 1e30))
+      throw InputError(file,
+                       section + "/Young's modulus",
+                       "expected a value in (0, 1e30], got " +
+                         prm.get("Young's modulus"));
     poissons_ratio = prm.get_double("Poisson's ratio");
     if (!(poissons_ratio > -1 && poissons_ratio < 0.5))
       throw InputError(file,
@@ -340,6 +346,19 @@ namespace thinlayer
                        "expected a friction angle > 0 where the "
                        "cohesion is 0 (the material would have no "
                        "strength)");
+    if (yield_criterion != YieldCriterion::mohr_coulomb &&
+        (friction_angle > 0 || dilation_angle > 0))
+      throw InputError(file,
+                       section + (friction_angle > 0 ? "/Friction angle" :
+                                                       "/Dilation angle"),
+                       "the " + criterion +
+                         " criterion has no friction or dilation angle; "
+                         "expected 0, or Yield criterion = mohr-coulomb");
+    if (yield_criterion == YieldCriterion::elastic && cohesion > 0)
+      throw InputError(file,
+                       section + "/Cohesion",
+                       "an elastic material has no cohesion; expected 0, or "
+                       "a yield criterion");
     if (dilation_angle > friction_angle)
       throw InputError(file,
                        section + "/Dilation angle",
@@ -403,6 +422,53 @@ namespace thinlayer
 
 
   void
+  BoundaryParameters::check_loads_where_free(const std::string &file,
+                                             const std::string &section,
+                                             const bool         fourier) const
+  {
+    // A load on a constrained component goes into the reaction and is
+    // lost: say so rather than ignore it. Fourier tractions are Cartesian
+    // and the constraints cylindrical, so there only a boundary
+    // constrained in every component is checked.
+    const auto is_zero = [](const std::string &e) {
+      try
+        {
+          std::size_t end;
+          return std::stod(e, &end) == 0 && end == e.size();
+        }
+      catch (const std::exception &)
+        {
+          return false;
+        }
+    };
+    const unsigned int n = constrained_components.size();
+    unsigned int       n_constrained = 0;
+    for (const bool c : constrained_components)
+      n_constrained += c ? 1 : 0;
+    auto parts = Utilities::split_string_list(traction, ';');
+    if (parts.size() == 1)
+      parts.assign(fourier ? 3 : 2, parts[0]);
+    for (unsigned int c = 0; c < n; ++c)
+      if (constrained_components[c] && (!fourier || n_constrained == n) &&
+          !is_zero(parts[std::min<std::size_t>(c, parts.size() - 1)]))
+        throw InputError(file,
+                         section + "/Traction",
+                         "a traction on the constrained component " +
+                           std::string(fourier ? (c == 0   ? "r" :
+                                                  c == 1   ? "z" :
+                                                             "theta") :
+                                       (c == 0 ? "x" : "y")) +
+                           " would go into the reaction; expected 0 there, "
+                           "or the component free");
+    if (n_constrained == n && !is_zero(pressure))
+      throw InputError(file,
+                       section + "/Pressure",
+                       "a pressure on a boundary constrained in every "
+                       "component would go into the reaction; expected 0");
+  }
+
+
+  void
   BoundaryParameters::parse(ParameterHandler           &prm,
                             const std::string          &file,
                             const unsigned int          id,
@@ -437,6 +503,7 @@ namespace thinlayer
       throw InputError(file,
                        section + "/Pressure",
                        "expected a single expression");
+    check_loads_where_free(file, section, fourier);
     prm.leave_subsection();
   }
 } // namespace thinlayer
