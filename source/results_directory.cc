@@ -86,10 +86,6 @@ namespace thinlayer
       refuse("exists and is not a directory");
     if (fs::is_directory(final_path, error))
       {
-        if (!holds_a_run_or_nothing(final_path))
-          refuse("holds files that are not a thinlayer run, and a run "
-                 "replaces its whole directory; name a new directory or "
-                 "one an earlier run wrote");
         const fs::path prm = fs::weakly_canonical(fs::absolute(parameter_file),
                                                   error);
         for (fs::path p = prm.parent_path(); !p.empty() && p != p.root_path();
@@ -97,13 +93,16 @@ namespace thinlayer
           if (p == final_path)
             refuse("contains the parameter file, and a run replaces its "
                    "whole directory");
+        if (!holds_a_run_or_nothing(final_path))
+          refuse("holds files that are not a thinlayer run, and a run "
+                 "replaces its whole directory; name a new directory or "
+                 "one an earlier run wrote");
       }
 
     const fs::path parent = final_path.parent_path();
     fs::create_directories(parent, error);
     if (error)
-      refuse("cannot be created: " + parent.string() + ": " +
-             error.message());
+      refuse("cannot be created: " + error.message());
     clear_stale_staging(parent, final_path.filename().string());
 
     static std::atomic<unsigned int> counter{0};
@@ -112,8 +111,7 @@ namespace thinlayer
                 std::to_string(getpid()) + "-" + std::to_string(counter++));
     fs::create_directory(staging_path, error);
     if (error)
-      refuse("cannot be written: " + staging_path.string() + ": " +
-             error.message());
+      refuse("cannot be written: " + error.message());
   }
 
 

@@ -1,0 +1,305 @@
+// Truth checked: the output path never loses or mixes results. An output
+// directory that cannot be used is refused with a message naming
+// Output/Directory; a write that fails (a file size limit standing in for a
+// full disk) names the file and exits 1 with the previous run intact, byte
+// for byte; SIGINT and SIGTERM end the run with `outcome: interrupted` in
+// place of the previous run and exit 128 + the signal; a rerun leaves no
+// file of an earlier one; a staging directory of a process that is gone is
+// cleared; a sweep with a run that ended in an error exits 1; a standard
+// output that cannot be written exits 1. The program runs in-process
+// through run_command_line().
+#include <thinlayer/command_line.h>
+
+#include <sys/resource.h>
+
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <thread>
+
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+namespace
+{
+  void
+  write(const std::string &name, const std::string &text)
+  {
+    std::ofstream(name) << text;
+  }
+
+  std::string
+  read(const std::string &name)
+  {
+    std::ostringstream text;
+    text << std::ifstream(name).rdbuf();
+    return text.str();
+  }
+
+  /// Every file under @p directory with its contents.
+  std::map<std::string, std::string>
+  contents(const std::string &directory)
+  {
+    std::map<std::string, std::string> files;
+    if (fs::exists(directory))
+      for (const auto &entry : fs::recursive_directory_iterator(directory))
+        files[entry.path().lexically_relative(directory).string()] =
+          entry.is_regular_file() ? read(entry.path()) : "";
+    return files;
+  }
+
+  /// Staging directories (".NAME.partial-...") left in the current one.
+  unsigned int
+  staging_left()
+  {
+    unsigned int n = 0;
+    for (const auto &entry : fs::directory_iterator("."))
+      if (entry.path().filename().string().find(".partial-") !=
+          std::string::npos)
+        ++n;
+    return n;
+  }
+
+  /// The value of "key" in results/summary.json, as written.
+  std::string
+  summary_entry(const std::string &directory, const std::string &key)
+  {
+    const std::string text = read(directory + "/summary.json");
+    const auto        at   = text.find("\"" + key + "\": ");
+    if (at == std::string::npos)
+      return "(none)";
+    const auto begin = at + key.size() + 4;
+    return text.substr(begin, text.find_first_of(",\n", begin) - begin);
+  }
+
+  const std::string geo = R"(
+DefineConstant[ height = {1, Name "Parameters/height"} ];
+Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0};
+Point(3) = {1, height, 0}; Point(4) = {0, height, 0};
+Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
+Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};
+Transfinite Curve{:} = 3; Transfinite Surface{1}; Recombine Surface{1};
+Physical Surface("block", 1) = {1};
+Physical Curve("bottom", 1) = {1}; Physical Curve("top", 2) = {3};
+)";
+
+  std::string
+  scene(const std::string &directory, const std::string &extra = "")
+  {
+    return "subsection Mesh\n  set File = block.geo\nend\n"
+           "subsection Material 1\nend\n"
+           "subsection Boundary 1\n  set Constrained components = x, y\nend\n"
+           "subsection Boundary 2\n  set Traction = 0; -1\nend\n"
+           "subsection Monitors\n  set Displacement boundary id = 2\nend\n"
+           "subsection Loading\n  set Load increments = 3*0.1\nend\n"
+           "subsection Output\n  set Directory = " +
+           directory + "\n  set Print timing = false\nend\n" + extra;
+  }
+
+  struct Result
+  {
+    int         status;
+    std::string error;
+  };
+
+  Result
+  run(const std::vector<std::string> &arguments)
+  {
+    std::ostringstream out, err;
+    const int status = thinlayer::run_command_line(arguments, out, err);
+    return {status, err.str()};
+  }
+
+  /// Start @p name from a copy of the valid run.
+  void
+  restore(const std::string &name)
+  {
+    fs::remove_all(name);
+    fs::copy("previous", name, fs::copy_options::recursive);
+  }
+
+  void
+  report(const std::string &what, const Result &r, const bool kept)
+  {
+    std::cout << "* " << what << "\n  exit status " << r.status
+              << ", previous run kept: " << (kept ? "yes" : "NO")
+              << ", staging left behind: " << staging_left() << "\n  "
+              << r.error << '\n';
+  }
+
+  /// Send @p signal to this process once the run has written @p rows rows
+  /// of history.csv into its staging directory.
+  void
+  signal_after_rows(const int signal, const unsigned int rows)
+  {
+    for (unsigned int wait = 0; wait < 600000; ++wait)
+      {
+        for (const auto &entry : fs::directory_iterator("."))
+          if (entry.path().filename().string().find(".results.partial-") == 0)
+            {
+              std::ifstream history(entry.path() / "history.csv");
+              unsigned int  n = 0;
+              for (std::string line; std::getline(history, line);)
+                ++n;
+              if (n > rows)
+                {
+                  kill(getpid(), signal);
+                  return;
+                }
+            }
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      }
+  }
+} // namespace
+
+
+int
+main()
+{
+  write("block.geo", geo);
+  write("good.prm", scene("results"));
+  {
+    const Result r = run({"good.prm"});
+    std::cout << "* the valid scene: exit status " << r.status << "\n\n";
+    fs::remove_all("previous");
+    fs::rename("results", "previous");
+  }
+  const auto previous_run = contents("previous");
+
+  // Directories that cannot hold a run.
+  write("a-file", "not a directory\n");
+  report("Output/Directory is a file",
+         run({"good.prm", "-s", "Output/Directory=a-file"}),
+         read("a-file") == "not a directory\n");
+  fs::create_directories("notes");
+  write("notes/thesis.tex", "\\chapter{}\n");
+  report("Output/Directory holds files that are not a run",
+         run({"good.prm", "-s", "Output/Directory=notes"}),
+         read("notes/thesis.tex") == "\\chapter{}\n");
+  fs::create_directories("project");
+  write("project/scene.prm", scene("."));
+  write("project/block.geo", geo);
+  report("Output/Directory contains the parameter file",
+         run({"project/scene.prm"}),
+         contents("project").size() == 2);
+  report("Output/Directory is empty",
+         run({"good.prm", "-s", "Output/Directory="}),
+         true);
+  fs::remove("loop");
+  fs::create_symlink("loop", "loop");
+  report("Output/Directory is a symbolic link to itself",
+         run({"good.prm", "-s", "Output/Directory=loop/results"}),
+         true);
+  report("Output/Directory lies under a file",
+         run({"good.prm", "-s", "Output/Directory=a-file/results"}),
+         read("a-file") == "not a directory\n");
+
+  // A write that fails: a file size limit of 2500 bytes, so that
+  // history.csv, the mesh and the parameters fit but a VTU (2.6 kB) does
+  // not. The limit is lifted again after.
+  {
+    restore("results");
+    rlimit saved;
+    getrlimit(RLIMIT_FSIZE, &saved);
+    rlimit limit = saved;
+    limit.rlim_cur = 2500;
+    setrlimit(RLIMIT_FSIZE, &limit);
+    const Result r = run({"good.prm"});
+    setrlimit(RLIMIT_FSIZE, &saved);
+    report("a write that fails (file size limit, as on a full disk)",
+           r,
+           contents("results") == previous_run);
+  }
+
+  // Signals: the run stops at the next iteration and is written as
+  // interrupted, in place of the previous run.
+  for (const int signal : {SIGINT, SIGTERM})
+    {
+      restore("results");
+      std::thread sender(signal_after_rows, signal, 2);
+      const Result r = run({"good.prm",
+                            "-s",
+                            "Loading/Load increments=100000*0.00001",
+                            "-s",
+                            "Output/Write VTU=false"});
+      sender.join();
+      const std::string reason = summary_entry("results", "reason");
+      std::cout << "* " << (signal == SIGINT ? "SIGINT" : "SIGTERM")
+                << " during a run\n  exit status " << r.status
+                << ", outcome " << summary_entry("results", "outcome")
+                << ", reason " << reason.substr(0, reason.find(" at "))
+                << ", history of this run only: "
+                << (read("results/history.csv").find(",1e-05,") !=
+                        std::string::npos ?
+                      "yes" :
+                      "NO")
+                << ", staging left behind: " << staging_left() << "\n  "
+                << r.error << '\n';
+    }
+
+  // A rerun with fewer steps and no VTU: nothing of the earlier run stays.
+  {
+    restore("results");
+    const Result r = run({"good.prm",
+                          "-s",
+                          "Loading/Load increments=0.1",
+                          "-s",
+                          "Output/Write VTU=false"});
+    std::cout << "* a rerun with fewer steps and without VTU\n  exit status "
+              << r.status << ", files:";
+    for (const auto &[name, text] : contents("results"))
+      std::cout << ' ' << name;
+    std::cout << "\n\n";
+  }
+
+  // A staging directory of a process that is gone is cleared by the next
+  // run into the same parent; that of a live one (this process) is not.
+  {
+    fs::create_directories(".results.partial-999999999-0");
+    fs::create_directories(".results.partial-" + std::to_string(getpid()) +
+                           "-99");
+    const Result r = run({"good.prm"});
+    std::cout << "* staging directories of a process that is gone, and of "
+                 "this one\n  exit status "
+              << r.status << ", gone one cleared: "
+              << (fs::exists(".results.partial-999999999-0") ? "NO" : "yes")
+              << ", live one kept: "
+              << (fs::exists(".results.partial-" + std::to_string(getpid()) +
+                             "-99") ?
+                    "yes" :
+                    "NO")
+              << "\n\n";
+    fs::remove_all(".results.partial-" + std::to_string(getpid()) + "-99");
+  }
+
+  // A sweep whose second run cannot be meshed into valid cells (height 0
+  // makes them flat): a row with the error, and a non-zero exit.
+  write("sweep.prm",
+        scene("sweep-results",
+              "subsection Sweep\n  set Values = height = 1, 0\nend\n"));
+  {
+    const Result r = run({"sweep.prm"});
+    std::cout << "* a sweep with a run that ended in an error\n  exit status "
+              << r.status << ", run-001 written: "
+              << (fs::exists("sweep-results/run-001/summary.json") ? "yes" :
+                                                                      "no")
+              << ", run-002 written: "
+              << (fs::exists("sweep-results/run-002") ? "yes" : "no")
+              << "\n  " << r.error << '\n';
+  }
+
+  // Standard output that cannot be written.
+  {
+    restore("results");
+    std::ostream       broken(nullptr);
+    std::ostringstream err;
+    const int status = thinlayer::run_command_line({"good.prm"}, broken, err);
+    std::cout << "* standard output cannot be written\n  exit status "
+              << status << "\n  " << err.str() << '\n';
+  }
+}
