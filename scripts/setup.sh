@@ -24,7 +24,8 @@ build="$top/build"
 # then about 30% faster on the 2-core machine; serial, because the point loop
 # already uses both cores. The reference outputs of the tests were made with
 # it: a failed (non-converged) step's state depends on rounding.
-packages=(g++ make cmake perl libdeal.ii-dev gmsh numdiff python3 python3-matplotlib ccache libopenblas0-serial)
+packages=(g++ make cmake perl libdeal.ii-dev gmsh numdiff python3 python3-matplotlib ccache libopenblas0-serial
+          nlohmann-json3-dev)
 
 missing=()
 for p in "${packages[@]}"; do

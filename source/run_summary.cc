@@ -1,6 +1,9 @@
 #include <thinlayer/run_summary.h>
 #include <thinlayer/text_format.h>
 
+#include <nlohmann/json.hpp>
+
+#include <cmath>
 #include <limits>
 #include <string>
 
@@ -8,52 +11,42 @@ namespace thinlayer
 {
   namespace
   {
-    /// Writes the figures as the members of a JSON object.
+    /**
+     * Collects the figures as the members of a JSON object, in visit()
+     * order; a number that is not finite becomes null, JSON's "no value".
+     */
     struct JsonWriter
     {
-      std::string text;
+      nlohmann::ordered_json object = nlohmann::ordered_json::object();
 
-      void
-      member(const std::string &name, const std::string &json_value)
+      static nlohmann::ordered_json
+      number(const double value)
       {
-        text += (text.empty() ? "{\n" : ",\n") + std::string("  ") +
-                text_format::json_string(name) + ": " + json_value;
+        return std::isfinite(value) ? nlohmann::ordered_json(value) :
+                                      nlohmann::ordered_json(nullptr);
+      }
+
+      template <typename T>
+      void
+      operator()(const std::string &name, const T &value)
+      {
+        object[name] = value;
       }
 
       void
       operator()(const std::string &name, const double value)
       {
-        member(name, text_format::json_number(value));
-      }
-
-      void
-      operator()(const std::string &name, const unsigned int value)
-      {
-        member(name, std::to_string(value));
-      }
-
-      void
-      operator()(const std::string &name, const bool value)
-      {
-        member(name, value ? "true" : "false");
-      }
-
-      void
-      operator()(const std::string &name, const std::string &value)
-      {
-        member(name, text_format::json_string(value));
+        object[name] = number(value);
       }
 
       void
       operator()(const std::string                   &name,
                  const std::map<std::string, double> &values)
       {
-        std::string object;
+        nlohmann::ordered_json nested = nlohmann::ordered_json::object();
         for (const auto &[key, value] : values)
-          object += (object.empty() ? "{\n" : ",\n") + std::string("    ") +
-                    text_format::json_string(key) + ": " +
-                    text_format::json_number(value);
-        member(name, object.empty() ? "{\n  }" : object + "\n  }");
+          nested[key] = number(value);
+        object[name] = nested;
       }
     };
 
@@ -135,7 +128,13 @@ namespace thinlayer
   {
     JsonWriter writer;
     visit(writer);
-    return writer.text + "\n}\n";
+    // Text that is not valid UTF-8 (a file name, a reason quoting input) is
+    // written with replacement characters rather than stopping the run.
+    return writer.object.dump(2,
+                              ' ',
+                              false,
+                              nlohmann::ordered_json::error_handler_t::replace) +
+           '\n';
   }
 
 

@@ -17,37 +17,6 @@ namespace thinlayer
 
 
     std::string
-    json_number(const double value)
-    {
-      return std::isfinite(value) ? printf("%.10g", value) : "null";
-    }
-
-
-    std::string
-    json_string(const std::string &text)
-    {
-      std::string out = "\"";
-      for (const char c : text)
-        if (c == '"' || c == '\\')
-          out += std::string("\\") + c;
-        else if (c == '\n')
-          out += "\\n";
-        else if (static_cast<unsigned char>(c) < 0x20)
-          {
-            char code[8];
-            std::snprintf(code,
-                          sizeof(code),
-                          "\\u%04x",
-                          static_cast<unsigned int>(c));
-            out += code;
-          }
-        else
-          out += c;
-      return out + "\"";
-    }
-
-
-    std::string
     csv_number(const double value)
     {
       return std::isfinite(value) ? printf("%.10g", value) : "";

@@ -7,24 +7,14 @@ namespace thinlayer
 {
   /**
    * How numbers and text are written into results, in one place so that
-   * every writer (screen, history.csv, sweep.csv, summary.json) quotes and
-   * rounds the same way.
+   * every writer of text (screen, history.csv, sweep.csv) quotes and rounds
+   * the same way; summary.json is written by nlohmann's JSON library.
    */
   namespace text_format
   {
     /// @p value formatted by the printf pattern @p pattern (one number).
     std::string
     printf(const char *pattern, const double value);
-
-    /// Ten significant digits (%.10g); "null" where not finite, JSON's
-    /// "no value".
-    std::string
-    json_number(const double value);
-
-    /// A JSON string literal: quoted, with quotes, backslashes and control
-    /// characters escaped.
-    std::string
-    json_string(const std::string &text);
 
     /// Ten significant digits (%.10g); empty where not finite, so that
     /// scripts read a missing value rather than a number.
