@@ -567,6 +567,17 @@ namespace thinlayer
 
 
   template <int dim>
+  std::string
+  Analysis<dim>::warnings() const
+  {
+    std::string text;
+    for (const auto &w : boundary_data.get_warnings())
+      text += (text.empty() ? "" : "; ") + w;
+    return text;
+  }
+
+
+  template <int dim>
   const DoFHandler<dim> &
   Analysis<dim>::get_dof_handler() const
   {

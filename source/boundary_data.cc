@@ -1,5 +1,6 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
+#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/numerics/vector_tools.h>
 
@@ -190,11 +191,13 @@ namespace thinlayer
     const unsigned int n = kinematics.n_components();
     // Later ids overwrite earlier ones at shared nodes: going from the
     // highest id down makes the lowest id win, the documented rule.
-    std::map<types::global_dof_index, double> values;
+    std::map<types::global_dof_index, double>             values;
+    std::map<types::global_dof_index, types::boundary_id> set_by;
     for (auto c = conditions.rbegin(); c != conditions.rend(); ++c)
       {
         if (c->second.constrained.n_selected_components(n) == 0)
           continue;
+        std::map<types::global_dof_index, double> own;
         const FunctionParser<3> &u     = *c->second.displacement;
         const std::string        entry = c->second.section + "/Displacement";
         const ModeAmplitude      amplitude(
@@ -221,8 +224,18 @@ namespace thinlayer
                                                  dof_handler,
                                                  c->first,
                                                  amplitude,
-                                                 values,
+                                                 own,
                                                  c->second.constrained);
+        for (const auto &[dof, value] : own)
+          {
+            const auto earlier = values.find(dof);
+            if (earlier != values.end() &&
+                std::abs(earlier->second - value) >
+                  1e-12 * std::max(std::abs(earlier->second), std::abs(value)))
+              note_conflict(mapping, dof_handler, dof, c->first, set_by[dof]);
+            values[dof] = value;
+            set_by[dof] = c->first;
+          }
       }
     return values;
   }
@@ -295,6 +308,38 @@ namespace thinlayer
           for (const unsigned int i : fe_face.dof_indices())
             load[dofs[i]] += cell_load[i];
         }
+  }
+
+
+  void
+  BoundaryData::note_conflict(const Mapping<2>             &mapping,
+                              const DoFHandler<2>          &dof_handler,
+                              const types::global_dof_index dof,
+                              const types::boundary_id      winner,
+                              const types::boundary_id      loser) const
+  {
+    // One warning per pair of ids, naming the first node where they
+    // disagree.
+    const std::string ids =
+      "Boundary " + std::to_string(winner) + " and Boundary " +
+      std::to_string(loser);
+    for (const auto &w : warnings)
+      if (w.find(ids) != std::string::npos)
+        return;
+    std::vector<Point<2>> points(dof_handler.n_dofs());
+    DoFTools::map_dofs_to_support_points(mapping, dof_handler, points);
+    std::ostringstream where;
+    where << points[dof][0] << ", " << points[dof][1];
+    warnings.push_back("warning: " + ids +
+                       " prescribe different displacements at the node (" +
+                       where.str() + "); the lower id's value is used");
+  }
+
+
+  const std::vector<std::string> &
+  BoundaryData::get_warnings() const
+  {
+    return warnings;
   }
 
 

@@ -196,24 +196,4 @@ namespace thinlayer
   {
     return fourier ? x[0] : 1.;
   }
-
-
-  std::string
-  Kinematics::station_warning() const
-  {
-    if (!fourier)
-      return "";
-    // 2 (S - 1) equally spaced points over the circle integrate
-    // trigonometric polynomials of degree below 2 (S - 1) exactly; the
-    // projections need degree 2 n_max.
-    const unsigned int n_max =
-      *std::max_element(harmonics.begin(), harmonics.end());
-    const unsigned int needed = n_max + 2;
-    if (angles.size() >= needed)
-      return "";
-    return "warning: " + std::to_string(angles.size()) +
-           " stations over [0, 180] degrees are too few for harmonic " +
-           std::to_string(n_max) + ": use at least " + std::to_string(needed) +
-           " so that 2 (stations - 1) >= 2 n + 1 over the circle";
-  }
 } // namespace thinlayer

@@ -159,6 +159,7 @@ namespace thinlayer
     double                               integral = 0, length = 0;
     double min = std::numeric_limits<double>::max();
     double max = std::numeric_limits<double>::lowest();
+    bool   non_finite = false;
     for (const auto &cell : analysis.get_dof_handler().active_cell_iterators())
       for (const auto f : cell->face_indices())
         if (cell->face(f)->at_boundary() &&
@@ -187,10 +188,15 @@ namespace thinlayer
                   component(v[0],
                             v[1],
                             kinematics.n_components() > 2 ? v[2] : 0.);
-                min = std::min(min, value);
-                max = std::max(max, value);
+                min        = std::min(min, value);
+                max        = std::max(max, value);
+                non_finite = non_finite || !std::isfinite(value);
               }
           }
+    // std::min and std::max pass a NaN by: say so, rather than report the
+    // starting values as extremes.
+    if (non_finite || !(min <= max))
+      min = max = std::numeric_limits<double>::quiet_NaN();
     return {s * integral / length,
             std::min(s * min, s * max),
             std::max(s * min, s * max)};

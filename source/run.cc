@@ -37,7 +37,7 @@ namespace thinlayer
     print_model(const Parameters  &p,
                 const Scene       &scene,
                 const Analysis<2> &analysis,
-                const std::string &station_warning,
+                const std::string &warnings,
                 std::ostream      &out)
     {
       out << "thinlayer: " << file_name(p.parameter_file) << '\n'
@@ -57,8 +57,8 @@ namespace thinlayer
               << (p.kinematics.antisymmetric ? "antisymmetric" : "symmetric")
               << "), " << p.kinematics.station_angles.size() << " stations\n";
         }
-      if (!station_warning.empty())
-        out << "  " << station_warning << '\n';
+      if (!warnings.empty())
+        out << "  " << warnings << '\n';
     }
 
 
@@ -606,7 +606,7 @@ namespace thinlayer
 
     RunSummary summary;
     describe_model(p, scene, analysis, summary);
-    summary.warnings = analysis.get_kinematics().station_warning();
+    summary.warnings = analysis.warnings();
 
     // Everything the user gave us has been checked: only now write.
     OutputWriter writer(p.output, open_directory());

@@ -366,6 +366,22 @@ main()
          "-s",
          "Monitors/Displacement point=5, 5"});
 
+  // Fourier stations that cannot project the harmonics exactly.
+  write("fourier.prm",
+        "subsection Mesh\n  set File = good.geo\nend\n"
+        "subsection Kinematics\n  set Type = fourier\n  set Harmonics = 1, "
+        "3\nend\n"
+        "subsection Material 1\nend\nsubsection Material 2\nend\n"
+        "subsection Boundary 1\n  set Constrained components = r, z, theta\n"
+        "end\n"
+        "subsection Boundary 2\n  set Traction = 1; 0; 0\nend\n"
+        "subsection Monitors\n  set Displacement boundary id = 2\nend\n"
+        "subsection Output\n  set Directory = results\nend\n");
+  check("Fourier stations too few for the highest harmonic",
+        {"fourier.prm", "-s", "Kinematics/Stations=0, 90, 180"});
+  check("Fourier stations not equally spaced",
+        {"fourier.prm", "-s", "Kinematics/Stations=0, 10, 45, 90, 135, 180"});
+
   // Cells that are not convex quadrilaterals of a usable size. Nodes 1-4
   // go round the first cell anticlockwise when it is valid.
   write_msh("square.msh", {"0 0", "1 0", "1 1", "0 1"}, {{1, 2, 3, 4}});

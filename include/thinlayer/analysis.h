@@ -203,6 +203,11 @@ namespace thinlayer
     const Kinematics &
     get_kinematics() const;
 
+    /// Warnings about the scene found while setting it up (boundary
+    /// conditions that disagree at a node), one per line.
+    std::string
+    warnings() const;
+
     const DoFHandler<dim> &
     get_dof_handler() const;
 

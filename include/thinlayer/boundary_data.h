@@ -77,6 +77,14 @@ namespace thinlayer
     bool
     has_constraints() const;
 
+    /**
+     * What prescribed_values() found worth a warning: two boundary ids
+     * that prescribe different displacements at a shared node (the lowest
+     * id wins, as documented, but the other's value is lost).
+     */
+    const std::vector<std::string> &
+    get_warnings() const;
+
   private:
     struct Condition
     {
@@ -111,8 +119,18 @@ namespace thinlayer
                  const double          theta,
                  const std::string    &entry) const;
 
+    /// Add a warning for @p dof, where @p winner's value replaced
+    /// @p loser's.
+    void
+    note_conflict(const Mapping<2>             &mapping,
+                  const DoFHandler<2>          &dof_handler,
+                  const types::global_dof_index dof,
+                  const types::boundary_id      winner,
+                  const types::boundary_id      loser) const;
+
     const Kinematics                       &kinematics;
     const std::string                       parameter_file;
+    mutable std::vector<std::string>        warnings;
     std::map<types::boundary_id, Condition> conditions;
   };
 } // namespace thinlayer

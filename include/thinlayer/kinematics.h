@@ -161,13 +161,6 @@ namespace thinlayer
     double
     area_factor(const Point<2> &x) const;
 
-    /**
-     * The fewest stations over [0, pi] with which the trapezoidal rule
-     * projects the products of the harmonics exactly; empty if enough.
-     */
-    std::string
-    station_warning() const;
-
   private:
     /// Fills t1_at_stations and t2_at_stations.
     void

@@ -63,6 +63,13 @@ namespace thinlayer
     declare(ParameterHandler &prm);
     void
     parse(ParameterHandler &prm, const std::string &parameter_file);
+
+  private:
+    /// An InputError unless the stations are equally spaced over [0, 180]
+    /// degrees and enough for the highest harmonic.
+    void
+    check_stations(const std::string &parameter_file,
+                   const std::string &text) const;
   };
 
 

@@ -179,6 +179,40 @@ namespace thinlayer
 
 
   void
+  KinematicsParameters::check_stations(const std::string &file,
+                                       const std::string &text) const
+  {
+    // The stations are a trapezoidal rule over the circle: with S equally
+    // spaced ones over [0, 180] degrees (2 (S - 1) over the circle) it
+    // integrates trigonometric polynomials of degree below 2 (S - 1)
+    // exactly, and the projections onto the harmonics need degree 2 n_max.
+    // Too few, or unequally spaced, stations alias the harmonics: the body
+    // loads no longer balance, and the run ends in values that are not
+    // numbers or in a collapse load a few per cent off.
+    const unsigned int S = station_angles.size();
+    for (unsigned int s = 0; s < S; ++s)
+      if (std::abs(station_angles[s] - s * numbers::PI / (S - 1)) > 1e-9)
+        throw InputError(file,
+                         "Kinematics/Stations",
+                         "expected equally spaced angles from 0 to 180 "
+                         "degrees (the projection onto the harmonics is "
+                         "exact only then), got " +
+                           text);
+    const unsigned int n_max =
+      *std::max_element(harmonics.begin(), harmonics.end());
+    if (S < n_max + 2)
+      throw InputError(file,
+                       "Kinematics/Stations",
+                       std::to_string(S) +
+                         " stations are too few for harmonic " +
+                         std::to_string(n_max) + ": expected at least " +
+                         std::to_string(n_max + 2) +
+                         ", so that 2 (stations - 1) >= 2 n + 1 over the "
+                         "circle");
+  }
+
+
+  void
   KinematicsParameters::parse(ParameterHandler  &prm,
                               const std::string &parameter_file)
   {
@@ -211,6 +245,8 @@ namespace thinlayer
                        "Kinematics/Stations",
                        "expected angles from 0 to 180 degrees, got " +
                          prm.get("Stations"));
+    if (fourier)
+      check_stations(file, prm.get("Stations"));
     axis_boundary_id = prm.get_integer("Axis boundary id");
     if (!fourier)
       {
