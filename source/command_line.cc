@@ -118,6 +118,11 @@ namespace thinlayer
         err << "thinlayer: " << e.what() << '\n';
         return 1;
       }
+    catch (const Interrupted &e)
+      {
+        err << "thinlayer: " << e.what() << '\n';
+        return 128 + interruption_signal();
+      }
     catch (const WriteError &e)
       {
         err << "thinlayer: " << e.what()

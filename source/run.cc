@@ -594,7 +594,7 @@ namespace thinlayer
 
     const Scene scene = [&]() {
       TimerOutput::Scope scope(timer, "mesh");
-      return Scene(p);
+      return Scene(p, out);
     }();
 
     Analysis<2> analysis(p, scene.triangulation());

@@ -1,6 +1,7 @@
 #include <deal.II/grid/grid_in.h>
 
 #include <thinlayer/file_utilities.h>
+#include <thinlayer/gmsh_process.h>
 #include <thinlayer/input_error.h>
 #include <thinlayer/scene.h>
 
@@ -18,16 +19,6 @@ namespace thinlayer
 {
   namespace
   {
-    std::string
-    shell_quote(const std::string &s)
-    {
-      std::string quoted = "'";
-      for (const char c : s)
-        quoted += (c == '\'') ? std::string("'\\''") : std::string(1, c);
-      return quoted + "'";
-    }
-
-
     /**
      * The text of a .geo with the files it includes, to check that the
      * geometry parameters set from the parameter file exist.
@@ -54,7 +45,7 @@ namespace thinlayer
      * parameters with -setnumber. Returns the mesh in gmsh's 2.2 format.
      */
     std::string
-    mesh_geometry(const Parameters &p)
+    mesh_geometry(const Parameters &p, std::ostream &progress)
     {
       const std::string geo = geometry_text(p.mesh.file);
       for (const auto &[name, value] : p.mesh.geometry_parameters)
@@ -64,43 +55,11 @@ namespace thinlayer
                            "'" + name + "' is not a parameter of " +
                              p.mesh.file);
 
-      char directory_template[] = "/tmp/thinlayer-gmsh-XXXXXX";
-      if (mkdtemp(directory_template) == nullptr)
-        throw std::runtime_error("cannot create a temporary directory");
-      const std::string directory = directory_template;
-      const std::string msh_file  = directory + "/mesh.msh";
-      const std::string log_file  = directory + "/gmsh.log";
-
-      std::ostringstream command;
-      command << shell_quote(THINLAYER_GMSH_EXECUTABLE)
-              << " -2 -format msh22 -nt 1";
-      command.precision(17);
-      for (const auto &[name, value] : p.mesh.geometry_parameters)
-        command << " -setnumber " << name << ' ' << value;
-      command << " -o " << shell_quote(msh_file) << ' '
-              << shell_quote(p.mesh.file) << " > " << shell_quote(log_file)
-              << " 2>&1";
-      const int status = std::system(command.str().c_str());
-
-      std::string errors;
-      {
-        std::istringstream log(read_file(log_file));
-        std::string        line;
-        while (std::getline(log, line))
-          if (line.rfind("Error", 0) == 0)
-            errors += "\n  " + line;
-      }
-      const std::string msh = read_file(msh_file);
-      std::filesystem::remove_all(directory);
-
-      if (status != 0 || !errors.empty())
-        throw InputError(p.mesh.file,
-                         "",
-                         "gmsh could not mesh this geometry:" +
-                           (errors.empty() ? std::string(" exit status ") +
-                                               std::to_string(status)
-                                           : errors));
-      return msh;
+      return run_gmsh({p.mesh.file,
+                       p.mesh.geometry_parameters,
+                       p.mesh.max_cells,
+                       p.parameter_file},
+                      progress);
     }
 
     /**
@@ -172,7 +131,7 @@ namespace thinlayer
   } // namespace
 
 
-  Scene::Scene(const Parameters &p)
+  Scene::Scene(const Parameters &p, std::ostream &progress)
   {
     if (!std::filesystem::is_regular_file(p.mesh.file) ||
         !std::ifstream(p.mesh.file))
@@ -183,7 +142,7 @@ namespace thinlayer
     const std::string extension =
       std::filesystem::path(p.mesh.file).extension().string();
     if (extension == ".geo")
-      msh = mesh_geometry(p);
+      msh = mesh_geometry(p, progress);
     else if (extension == ".msh")
       msh = read_file(p.mesh.file);
     else
@@ -217,6 +176,15 @@ namespace thinlayer
                        "",
                        "expected quadrilateral cells only (use Recombine "
                        "Surface or Mesh.RecombineAll in the .geo)");
+    if (tria.n_active_cells() > p.mesh.max_cells)
+      throw InputError(p.parameter_file,
+                       "Mesh/Maximum cells",
+                       "the mesh of " + p.mesh.file + " has " +
+                         std::to_string(tria.n_active_cells()) +
+                         " cells, more than the limit of " +
+                         std::to_string(p.mesh.max_cells) +
+                         "; check the geometry parameters, or raise the "
+                         "limit");
     check_cell_shapes(tria, p.mesh.file);
     check_ids(p, tria);
   }

@@ -177,6 +177,10 @@ namespace thinlayer
             csv << ',' << s.csv_row() << ",\n";
             print_run(s, out);
           }
+        catch (const Interrupted &)
+          {
+            throw; // while meshing: the sweep stops, nothing of it is kept
+          }
         catch (const WriteError &e)
           {
             // A full disk ends the sweep, not only this run.

@@ -366,6 +366,9 @@ main()
          "-s",
          "Monitors/Displacement point=5, 5"});
 
+  check("a mesh with more cells than Mesh/Maximum cells",
+        {"good.prm", "-s", "Mesh/Maximum cells=3"});
+
   // Fourier stations that cannot project the harmonics exactly.
   write("fourier.prm",
         "subsection Mesh\n  set File = good.geo\nend\n"

@@ -14,6 +14,7 @@
 
 #include <chrono>
 #include <csignal>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -291,6 +292,60 @@ main()
               << ", run-002 written: "
               << (fs::exists("sweep-results/run-002") ? "yes" : "no")
               << "\n  " << r.error << '\n';
+  }
+
+  // gmsh: a geometry parameter that asks for 10^8 cells is stopped by its
+  // memory within seconds; a signal while gmsh meshes stops it too. Either
+  // way no gmsh process and no temporary directory of this process stay.
+  const auto gmsh_left = []() {
+    unsigned int n = 0;
+    for (const auto &entry : fs::directory_iterator("/tmp"))
+      if (entry.path().filename().string().find(
+            "thinlayer-gmsh-" + std::to_string(getpid()) + "-") == 0)
+        ++n;
+    const bool running = std::system(("pgrep -P " + std::to_string(getpid()) +
+                                      " -x gmsh > /dev/null")
+                                       .c_str()) == 0;
+    return std::to_string(n) + " temporary directories, gmsh " +
+           (running ? "STILL RUNNING" : "not running");
+  };
+  {
+    write("huge.geo", R"(
+DefineConstant[ n = {2, Name "Parameters/n"} ];
+Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0}; Point(3) = {1, 1, 0};
+Point(4) = {0, 1, 0};
+Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
+Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};
+Transfinite Curve{:} = n + 1; Transfinite Surface{1}; Recombine Surface{1};
+Physical Surface("block", 1) = {1};
+Physical Curve("bottom", 1) = {1}; Physical Curve("top", 2) = {3};
+)");
+    std::string huge = read("good.prm");
+    huge.replace(huge.find("block.geo"), 9, "huge.geo");
+    write("huge.prm", huge);
+    restore("results");
+    const Result stopped =
+      run({"huge.prm", "-s", "Mesh/Geometry parameters=n=1e8"});
+    report("a geometry parameter that asks for 10^8 cells",
+           stopped,
+           contents("results") == previous_run);
+    std::cout << "  afterwards: " << gmsh_left() << "\n\n";
+
+    restore("results");
+    std::thread sender([]() {
+      std::this_thread::sleep_for(std::chrono::milliseconds(300));
+      kill(getpid(), SIGINT);
+    });
+    const Result interrupted = run({"huge.prm",
+                                    "-s",
+                                    "Mesh/Geometry parameters=n=1e8",
+                                    "-s",
+                                    "Mesh/Maximum cells=1000000000"});
+    sender.join();
+    report("SIGINT while gmsh meshes",
+           interrupted,
+           contents("results") == previous_run);
+    std::cout << "  afterwards: " << gmsh_left() << "\n\n";
   }
 
   // Standard output that cannot be written.

@@ -67,7 +67,7 @@ main()
           "end\n";
         const thinlayer::Parameters p =
           thinlayer::ParameterReader().read_from_string(prm, "patch.prm");
-        const thinlayer::Scene scene(p);
+        const thinlayer::Scene scene(p, std::cout);
         thinlayer::Analysis<2> analysis(p, scene.triangulation());
         analysis.setup();
         analysis.solve(1.0);

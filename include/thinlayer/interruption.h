@@ -1,8 +1,25 @@
 #ifndef thinlayer_interruption_h
 #define thinlayer_interruption_h
 
+#include <stdexcept>
+#include <string>
+
 namespace thinlayer
 {
+  /**
+   * A signal stopped the program before a run had anything to write (while
+   * gmsh was meshing): the command line exits with 128 + the signal, and
+   * the results directory keeps the previous run.
+   */
+  class Interrupted : public std::runtime_error
+  {
+  public:
+    explicit Interrupted(const std::string &where)
+      : std::runtime_error("interrupted " + where + "; nothing was written")
+    {}
+  };
+
+
   /**
    * SIGINT and SIGTERM end a run as a result, not as a loss: while a
    * ScopedInterruption lives, the first such signal is only noted, the

@@ -37,6 +37,9 @@ namespace thinlayer
     /// Values of the .geo file's DefineConstant[] parameters; also
     /// constants in every expression of the parameter file.
     std::map<std::string, double> geometry_parameters;
+    /// The most cells a scene may have (a mistyped geometry parameter
+    /// otherwise meshes until the machine runs out of memory).
+    unsigned int max_cells;
 
     static void
     declare(ParameterHandler &prm);

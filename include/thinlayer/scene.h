@@ -5,6 +5,7 @@
 
 #include <thinlayer/parameters.h>
 
+#include <ostream>
 #include <string>
 
 namespace thinlayer
@@ -24,10 +25,13 @@ namespace thinlayer
     /**
      * Build the mesh and check it against the parameter file: every
      * material id of the mesh has a material, every material and boundary
-     * section and every monitored boundary id exists in the mesh. Throws
-     * InputError otherwise, before anything is written.
+     * section and every monitored boundary id exists in the mesh, every
+     * cell is a convex quadrilateral, and there are at most Mesh/Maximum
+     * cells. Throws InputError otherwise, before anything is written. A
+     * .geo is meshed by gmsh (run_gmsh()), which reports on @p progress
+     * while it runs.
      */
-    explicit Scene(const Parameters &parameters);
+    Scene(const Parameters &parameters, std::ostream &progress);
 
     const Triangulation<2> &
     triangulation() const;

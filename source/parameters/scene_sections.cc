@@ -114,6 +114,13 @@ namespace thinlayer
       "Values for the DefineConstant[] parameters of the .geo file, as "
       "'name=value, name=value'. They are also constants in every "
       "expression of this file.");
+    prm.declare_entry("Maximum cells",
+                      "1000000",
+                      Patterns::Integer(1),
+                      "The most cells the mesh may have. gmsh is stopped "
+                      "once its memory shows it making far more (a "
+                      "mistyped geometry parameter), and a larger mesh is "
+                      "refused.");
     prm.leave_subsection();
   }
 
@@ -132,6 +139,7 @@ namespace thinlayer
       (mesh.front() == '/') ? mesh : directory_of(parameter_file) + "/" + mesh;
     geometry_parameters =
       parse_geometry_parameters(prm.get("Geometry parameters"), parameter_file);
+    max_cells = prm.get_integer("Maximum cells");
     prm.leave_subsection();
   }
 
