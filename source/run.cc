@@ -8,6 +8,7 @@
 #include <thinlayer/results_directory.h>
 #include <thinlayer/run.h>
 #include <thinlayer/scene.h>
+#include <thinlayer/step_progress.h>
 #include <thinlayer/text_format.h>
 
 #include <cmath>
@@ -40,8 +41,7 @@ namespace thinlayer
                 const std::string &warnings,
                 std::ostream      &out)
     {
-      out << "thinlayer: " << file_name(p.parameter_file) << '\n'
-          << "  mesh " << file_name(p.mesh.file) << ": "
+      out << "  mesh " << file_name(p.mesh.file) << ": "
           << scene.triangulation().n_active_cells() << " cells, "
           << (p.discretisation.serendipity ? "Q8" : "Q9") << ", "
           << p.discretisation.gauss_points_per_direction << 'x'
@@ -59,6 +59,7 @@ namespace thinlayer
         }
       if (!warnings.empty())
         out << "  " << warnings << '\n';
+      out.flush(); // progress: lines reach a file or pipe as they come
     }
 
 
@@ -336,6 +337,7 @@ namespace thinlayer
       Attempt a{step, load_factor, {}, 0, 0, false};
       {
         TimerOutput::Scope scope(timer, "load steps");
+        const StepProgress progress(out, step, load_factor);
         a.result            = analysis.solve(load_factor);
         a.load              = monitors.load();
         result.displacement = monitors.displacement();
@@ -550,6 +552,7 @@ namespace thinlayer
         out << "  warning: " << summary.steps_with_drift
             << " accepted steps have stresses more than 10 TOL outside the "
                "yield surface\n";
+      out.flush();
     }
 
 
@@ -592,6 +595,8 @@ namespace thinlayer
     Timer       wall_clock;
     TimerOutput timer(out, TimerOutput::never, TimerOutput::wall_times);
 
+    out << "thinlayer: " << file_name(p.parameter_file) << "\n  meshing "
+        << file_name(p.mesh.file) << std::endl;
     const Scene scene = [&]() {
       TimerOutput::Scope scope(timer, "mesh");
       return Scene(p, out);
@@ -600,6 +605,8 @@ namespace thinlayer
     Analysis<2> analysis(p, scene.triangulation());
     {
       TimerOutput::Scope scope(timer, "setup and factorisation");
+      out << "  setting up: assembling and factorising the stiffness"
+          << std::endl;
       analysis.setup();
     }
     const Monitors<2> monitors(p.monitors, analysis, p.parameter_file);

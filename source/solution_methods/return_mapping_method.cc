@@ -1,4 +1,5 @@
 #include <thinlayer/interruption.h>
+#include <thinlayer/step_progress.h>
 #include <thinlayer/solution_methods/return_mapping_method.h>
 
 #include <algorithm>
@@ -147,6 +148,7 @@ namespace thinlayer
         result.plastic_points = norms.n_yielding;
         if (converged(norms))
           return true;
+        report_iteration(k + 1, "residual", norms.max / norms.forces);
         growth.iteration_done(k + 1, max_iterations(), analysis.get_modes());
       }
     result.growth_ratio = growth.growth_ratio(analysis.get_modes());

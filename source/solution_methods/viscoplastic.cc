@@ -1,4 +1,5 @@
 #include <thinlayer/interruption.h>
+#include <thinlayer/step_progress.h>
 #include <thinlayer/solution_methods/viscoplastic.h>
 
 #include <algorithm>
@@ -98,6 +99,10 @@ namespace thinlayer
         growth.iteration_done(result.iterations,
                               parameters.max_iterations,
                               analysis.get_modes());
+        report_iteration(result.iterations,
+                         body_load_criterion ? "body-load change" :
+                                               "displacement change",
+                         size > 0 ? change / size : 0.);
       }
     if (!result.converged)
       result.growth_ratio = growth.growth_ratio(analysis.get_modes());

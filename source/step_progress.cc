@@ -1,0 +1,54 @@
+#include <thinlayer/step_progress.h>
+#include <thinlayer/text_format.h>
+
+namespace thinlayer
+{
+  namespace
+  {
+    /// The open reporter, if any (load steps run on the main thread).
+    StepProgress *current = nullptr;
+
+    constexpr std::chrono::seconds interval(5);
+  } // namespace
+
+
+  StepProgress::StepProgress(std::ostream      &out,
+                             const unsigned int step,
+                             const double       load_factor)
+    : out(out)
+    , step(step)
+    , load_factor(load_factor)
+    , start(std::chrono::steady_clock::now())
+    , next_line(start + interval)
+  {
+    current = this;
+  }
+
+
+  StepProgress::~StepProgress()
+  {
+    current = nullptr;
+  }
+
+
+  void
+  report_iteration(const unsigned int iteration,
+                   const char        *measure,
+                   const double       value)
+  {
+    if (current == nullptr)
+      return;
+    const auto now = std::chrono::steady_clock::now();
+    if (now < current->next_line)
+      return;
+    current->next_line = now + interval;
+    current->out
+      << "  step " << text_format::printf("%4.0f", current->step)
+      << "  load factor " << text_format::printf("%10.6g", current->load_factor)
+      << "  ... iteration " << iteration << ", " << measure << ' '
+      << text_format::printf("%.3e", value) << " after "
+      << std::chrono::duration_cast<std::chrono::seconds>(now - current->start)
+           .count()
+      << " s" << std::endl;
+  }
+} // namespace thinlayer
