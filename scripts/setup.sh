@@ -3,7 +3,11 @@
 #
 #   scripts/setup.sh run    install what is missing, build (Release), run the
 #                           default scene and say where its results are
-#   scripts/setup.sh test   install what is missing, build (Release), run ctest
+#   scripts/setup.sh test   install what is missing, build (Release), run ctest;
+#                           then build in Debug against deal.II's debug
+#                           library and run ctest there (its assertions on),
+#                           and run one plane-strain and one Fourier scene
+#                           under valgrind (memory errors fail the test)
 #
 # Re-running when nothing changed takes seconds: packages are installed only
 # when missing, and the build is incremental. Needs root or sudo for apt.
@@ -25,7 +29,7 @@ build="$top/build"
 # already uses both cores. The reference outputs of the tests were made with
 # it: a failed (non-converged) step's state depends on rounding.
 packages=(g++ make cmake perl libdeal.ii-dev gmsh numdiff python3 python3-matplotlib ccache libopenblas0-serial
-          nlohmann-json3-dev)
+          nlohmann-json3-dev valgrind procps)
 
 missing=()
 for p in "${packages[@]}"; do
@@ -41,17 +45,22 @@ if [ ${#missing[@]} -gt 0 ]; then
   $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" > /dev/null
 fi
 
-mkdir -p "$build"
-if [ ! -f "$build/CMakeCache.txt" ]; then
-  echo "thinlayer setup: configuring (Release) in $build"
-  cmake -S "$top" -B "$build" -DCMAKE_BUILD_TYPE=Release > "$build/configure.log" 2>&1 ||
-    { cat "$build/configure.log"; echo "thinlayer setup: configuring failed" >&2; exit 1; }
-fi
-if ! cmake --build "$build" -- -j"$(nproc)" > "$build/build.log" 2>&1; then
-  grep -E -B2 -A8 "error|Error" "$build/build.log" | head -60
-  echo "thinlayer setup: the build failed; the full log is $build/build.log" >&2
-  exit 1
-fi
+# Configure (once) and build DIRECTORY as TYPE (Release or Debug).
+build_in() {
+  local directory="$1" type="$2"
+  mkdir -p "$directory"
+  if [ ! -f "$directory/CMakeCache.txt" ]; then
+    echo "thinlayer setup: configuring ($type) in $directory"
+    cmake -S "$top" -B "$directory" -DCMAKE_BUILD_TYPE="$type" > "$directory/configure.log" 2>&1 ||
+      { cat "$directory/configure.log"; echo "thinlayer setup: configuring failed" >&2; exit 1; }
+  fi
+  if ! cmake --build "$directory" -- -j"$(nproc)" > "$directory/build.log" 2>&1; then
+    grep -E -B2 -A8 "error|Error" "$directory/build.log" | head -60
+    echo "thinlayer setup: the build failed; the full log is $directory/build.log" >&2
+    exit 1
+  fi
+}
+build_in "$build" Release
 
 if [ "$mode" = run ]; then
   cd "$top"
@@ -59,6 +68,26 @@ if [ "$mode" = run ]; then
   echo "thinlayer setup: open $top/output/case1-elastic/fields.pvd in ParaView;"
   echo "  history.csv and summary.json are beside it."
 else
-  cd "$build"
-  ctest --output-on-failure -j"$(nproc)"
+  (cd "$build" && ctest --output-on-failure -j"$(nproc)")
+
+  # The same tests against deal.II's debug library, where its assertions
+  # (index ranges, vector sizes) run: about 1.5 minutes of tests on 2 cores.
+  debug="$top/build-debug"
+  echo "thinlayer setup: building in Debug ($debug)"
+  build_in "$debug" Debug
+  (cd "$debug" && ctest --output-on-failure -j"$(nproc)")
+
+  # valgrind: a plane-strain scene (the default method, Newton included) and
+  # a Fourier one, with their VTU output, each about 20 s.
+  mkdir -p "$build/valgrind"
+  for scene in case2_default_thin fourier_cylinder_plastic; do
+    echo "thinlayer setup: valgrind on tests/$scene.prm"
+    if ! valgrind -q --error-exitcode=99 "$build/thinlayer" "$top/tests/$scene.prm" \
+         -s "Output/Directory=$build/valgrind/$scene" > "$build/valgrind/$scene.log" 2>&1; then
+      grep -E "==[0-9]+==" "$build/valgrind/$scene.log" | head -40
+      echo "thinlayer setup: valgrind found errors in $scene; the log is $build/valgrind/$scene.log" >&2
+      exit 1
+    fi
+  done
+  echo "thinlayer setup: all tests passed (Release, Debug, valgrind)"
 fi

@@ -63,6 +63,80 @@ namespace thinlayer
     }
 
     /**
+     * A quadrilateral of the gmsh text @p msh (format 2 or 4) that names
+     * the same node twice among its corners: deal.II cannot build such a
+     * cell (its debug library stops on it, its release library goes on
+     * with a cell of zero area), so it is found here first. Returns a
+     * description of the first, or an empty string.
+     */
+    std::string
+    repeated_corner(const std::string &msh)
+    {
+      std::istringstream in(msh);
+      std::string        line;
+      double             version = 2;
+      while (std::getline(in, line) && line.rfind("$Elements", 0) != 0)
+        if (line.rfind("$MeshFormat", 0) == 0)
+          in >> version;
+      // gmsh element types of quadrilaterals: 4, 9 and 8 nodes.
+      const auto is_quad = [](const int type) {
+        return type == 3 || type == 10 || type == 16;
+      };
+      const auto check = [](std::istringstream &nodes, const int element) {
+        std::vector<long> corners(4);
+        for (auto &c : corners)
+          nodes >> c;
+        for (unsigned int i = 0; i < 4; ++i)
+          for (unsigned int j = i + 1; j < 4; ++j)
+            if (corners[i] == corners[j])
+              return "element " + std::to_string(element) +
+                     " (gmsh's numbering) names node " +
+                     std::to_string(corners[i]) + " twice among its corners";
+        return std::string();
+      };
+      if (version < 4)
+        {
+          long n = 0;
+          in >> n;
+          std::getline(in, line);
+          for (long k = 0; k < n && std::getline(in, line); ++k)
+            {
+              std::istringstream fields(line);
+              int                element, type, n_tags, tag;
+              fields >> element >> type >> n_tags;
+              for (int t = 0; t < n_tags; ++t)
+                fields >> tag;
+              if (is_quad(type))
+                if (const std::string found = check(fields, element);
+                    !found.empty())
+                  return found;
+            }
+          return "";
+        }
+      long n_blocks = 0, n_elements, min_tag, max_tag;
+      in >> n_blocks >> n_elements >> min_tag >> max_tag;
+      for (long b = 0; b < n_blocks; ++b)
+        {
+          int  entity_dim, entity, type;
+          long n = 0;
+          in >> entity_dim >> entity >> type >> n;
+          std::getline(in, line);
+          for (long k = 0; k < n && std::getline(in, line); ++k)
+            {
+              std::istringstream fields(line);
+              int                element;
+              fields >> element;
+              if (is_quad(type))
+                if (const std::string found = check(fields, element);
+                    !found.empty())
+                  return found;
+            }
+        }
+      return "";
+    }
+
+
+    /**
      * Every cell a convex quadrilateral of a size the arithmetic can carry.
      * For a bilinear cell the Jacobian is positive everywhere exactly when
      * it is positive at the four corners, where it is the cross product of
@@ -151,6 +225,12 @@ namespace thinlayer
                        "expected a .geo or .msh file, got '" + p.mesh.file +
                          "'");
 
+    if (const std::string repeated = repeated_corner(msh); !repeated.empty())
+      throw InputError(p.mesh.file,
+                       "",
+                       repeated +
+                         ": expected a quadrilateral with four distinct "
+                         "corners");
     try
       {
         GridIn<2> grid_in;
