@@ -120,11 +120,10 @@ namespace thinlayer
           throw InputError(parameter_file,
                            entry,
                            std::string("gives ") +
-                             (std::isnan(value) ? "nan" :
-                              value > 0         ? "inf" :
-                                                  "-inf") +
-                             " at " +
-                             where.str() +
+                             (std::isnan(value) ? "nan"
+                              : value > 0       ? "inf"
+                                                : "-inf") +
+                             " at " + where.str() +
                              " on the boundary; expected finite numbers");
         }
   }
@@ -198,9 +197,9 @@ namespace thinlayer
         if (c->second.constrained.n_selected_components(n) == 0)
           continue;
         std::map<types::global_dof_index, double> own;
-        const FunctionParser<3> &u     = *c->second.displacement;
-        const std::string        entry = c->second.section + "/Displacement";
-        const ModeAmplitude      amplitude(
+        const FunctionParser<3>                  &u = *c->second.displacement;
+        const std::string   entry = c->second.section + "/Displacement";
+        const ModeAmplitude amplitude(
           kinematics.n_components(), [&](const Point<2> &x) {
             if (!kinematics.is_fourier())
               return evaluate(u, x, 0, entry);
@@ -320,9 +319,8 @@ namespace thinlayer
   {
     // One warning per pair of ids, naming the first node where they
     // disagree.
-    const std::string ids =
-      "Boundary " + std::to_string(winner) + " and Boundary " +
-      std::to_string(loser);
+    const std::string ids = "Boundary " + std::to_string(winner) +
+                            " and Boundary " + std::to_string(loser);
     for (const auto &w : warnings)
       if (w.find(ids) != std::string::npos)
         return;

@@ -88,8 +88,8 @@ namespace thinlayer
         // A file size limit (ulimit -f) then fails the write (EFBIG), which
         // is reported like a full disk, instead of killing the program.
         std::signal(SIGXFSZ, SIG_IGN);
-        const Parameters parameters = ParameterReader().read(file, overrides);
-        unsigned int failed_runs = 0;
+        const Parameters parameters  = ParameterReader().read(file, overrides);
+        unsigned int     failed_runs = 0;
         if (parameters.sweep.values.empty())
           run_scene(parameters, out);
         else

@@ -3,16 +3,16 @@
 #include <thinlayer/input_error.h>
 #include <thinlayer/interruption.h>
 
-#include <fcntl.h>
-#include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <chrono>
 #include <filesystem>
 #include <sstream>
 #include <thread>
 #include <vector>
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace thinlayer
 {
@@ -91,8 +91,7 @@ namespace thinlayer
         if (waitpid(pid, &status, WNOHANG) != pid)
           return -1;
         pid = 0;
-        return WIFEXITED(status) ? WEXITSTATUS(status) :
-                                   128 + WTERMSIG(status);
+        return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
       }
 
       /// Resident memory in bytes (0 if it cannot be read).
@@ -152,12 +151,11 @@ namespace thinlayer
       }
     arguments.insert(arguments.end(), {"-o", msh_file, job.geometry});
 
-    const std::size_t budget =
-      (100u << 20) + std::size_t(job.max_cells) * 1024;
-    const auto   start = std::chrono::steady_clock::now();
-    auto         next_report = start + std::chrono::seconds(5);
-    ChildProcess gmsh(arguments, log_file);
-    int          status;
+    const std::size_t budget = (100u << 20) + std::size_t(job.max_cells) * 1024;
+    const auto        start  = std::chrono::steady_clock::now();
+    auto              next_report = start + std::chrono::seconds(5);
+    ChildProcess      gmsh(arguments, log_file);
+    int               status;
     while ((status = gmsh.poll()) < 0)
       {
         if (interrupted())
@@ -182,8 +180,8 @@ namespace thinlayer
         if (now >= next_report)
           {
             progress << "  meshing: gmsh has run for "
-                     << std::chrono::duration_cast<std::chrono::seconds>(
-                          now - start)
+                     << std::chrono::duration_cast<std::chrono::seconds>(now -
+                                                                         start)
                           .count()
                      << " s, " << (gmsh.resident_bytes() >> 20) << " MB"
                      << std::endl;
@@ -198,8 +196,8 @@ namespace thinlayer
                        "",
                        "gmsh could not mesh this geometry:" +
                          (errors.empty() ? std::string(" exit status ") +
-                                             std::to_string(status) :
-                                           errors));
+                                             std::to_string(status)
+                                         : errors));
     return read_file(msh_file);
   }
 } // namespace thinlayer

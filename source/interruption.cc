@@ -45,8 +45,8 @@ namespace thinlayer
 
   ScopedInterruption::ScopedInterruption()
   {
-    received_signal   = 0;
-    first_signal_time = 0;
+    received_signal         = 0;
+    first_signal_time       = 0;
     struct sigaction action = {};
     action.sa_handler       = note_signal;
     sigemptyset(&action.sa_mask);

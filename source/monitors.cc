@@ -157,8 +157,8 @@ namespace thinlayer
       face_quadrature.size(), Vector<double>(kinematics.n_components()));
     std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
     double                               integral = 0, length = 0;
-    double min = std::numeric_limits<double>::max();
-    double max = std::numeric_limits<double>::lowest();
+    double min        = std::numeric_limits<double>::max();
+    double max        = std::numeric_limits<double>::lowest();
     bool   non_finite = false;
     for (const auto &cell : analysis.get_dof_handler().active_cell_iterators())
       for (const auto f : cell->face_indices())

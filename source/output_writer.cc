@@ -22,9 +22,9 @@ namespace thinlayer
     check_written(const std::ostream &stream, const std::string &name)
     {
       if (!stream)
-        throw WriteError("cannot write " + name + ": " +
-                         (errno != 0 ? std::strerror(errno)
-                                     : "the stream failed"));
+        throw WriteError(
+          "cannot write " + name + ": " +
+          (errno != 0 ? std::strerror(errno) : "the stream failed"));
     }
   } // namespace
 

@@ -1,15 +1,15 @@
 #include <thinlayer/input_error.h>
 #include <thinlayer/results_directory.h>
 
-#include <fcntl.h>
-#include <signal.h>
-#include <stdio.h>
-#include <unistd.h>
-
 #include <atomic>
 #include <cerrno>
 #include <cstring>
 #include <string>
+
+#include <fcntl.h>
+#include <signal.h>
+#include <stdio.h>
+#include <unistd.h>
 
 namespace thinlayer
 {
@@ -55,8 +55,8 @@ namespace thinlayer
     exchange(const fs::path &a, const fs::path &b)
     {
 #ifdef RENAME_EXCHANGE
-      return renameat2(AT_FDCWD, a.c_str(), AT_FDCWD, b.c_str(),
-                       RENAME_EXCHANGE) == 0;
+      return renameat2(
+               AT_FDCWD, a.c_str(), AT_FDCWD, b.c_str(), RENAME_EXCHANGE) == 0;
 #else
       (void)a;
       (void)b;
@@ -86,13 +86,13 @@ namespace thinlayer
       refuse("exists and is not a directory");
     if (fs::is_directory(final_path, error))
       {
-        const fs::path prm = fs::weakly_canonical(fs::absolute(parameter_file),
-                                                  error);
+        const fs::path prm =
+          fs::weakly_canonical(fs::absolute(parameter_file), error);
         for (fs::path p = prm.parent_path(); !p.empty() && p != p.root_path();
-             p = p.parent_path())
+             p          = p.parent_path())
           if (p == final_path)
             refuse("contains the parameter file, and a run replaces its "
-                   "whole directory");
+                            "whole directory");
         if (!holds_a_run_or_nothing(final_path))
           refuse("holds files that are not a thinlayer run, and a run "
                  "replaces its whole directory; name a new directory or "

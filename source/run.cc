@@ -469,10 +469,9 @@ namespace thinlayer
       if (run.interrupted_by != 0)
         {
           s.outcome = "interrupted";
-          s.reason  = std::string(run.interrupted_by == SIGINT ? "SIGINT" :
-                                  run.interrupted_by == SIGTERM ?
-                                                                 "SIGTERM" :
-                                                                 "a signal") +
+          s.reason  = std::string(run.interrupted_by == SIGINT    ? "SIGINT"
+                                 : run.interrupted_by == SIGTERM ? "SIGTERM"
+                                                                 : "a signal") +
                      " stopped the step" + at(run.interrupted_load_factor) +
                      "; the steps before it are complete";
           return;
@@ -588,75 +587,75 @@ namespace thinlayer
      * called once all input has been checked.
      */
     RunSummary
-    run(const Parameters                    &p,
+    run(const Parameters                   &p,
         const std::function<std::string()> &open_directory,
-        std::ostream                        &out)
+        std::ostream                       &out)
     {
-    Timer       wall_clock;
-    TimerOutput timer(out, TimerOutput::never, TimerOutput::wall_times);
+      Timer       wall_clock;
+      TimerOutput timer(out, TimerOutput::never, TimerOutput::wall_times);
 
-    out << "thinlayer: " << file_name(p.parameter_file) << "\n  meshing "
-        << file_name(p.mesh.file) << std::endl;
-    const Scene scene = [&]() {
-      TimerOutput::Scope scope(timer, "mesh");
-      return Scene(p, out);
-    }();
+      out << "thinlayer: " << file_name(p.parameter_file) << "\n  meshing "
+          << file_name(p.mesh.file) << std::endl;
+      const Scene scene = [&]() {
+        TimerOutput::Scope scope(timer, "mesh");
+        return Scene(p, out);
+      }();
 
-    Analysis<2> analysis(p, scene.triangulation());
-    {
-      TimerOutput::Scope scope(timer, "setup and factorisation");
-      out << "  setting up: assembling and factorising the stiffness"
-          << std::endl;
-      analysis.setup();
-    }
-    const Monitors<2> monitors(p.monitors, analysis, p.parameter_file);
-
-    RunSummary summary;
-    describe_model(p, scene, analysis, summary);
-    summary.warnings = analysis.warnings();
-
-    // Everything the user gave us has been checked: only now write.
-    OutputWriter writer(p.output, open_directory());
-    writer.write_file("mesh.msh", scene.mesh_text());
-    writer.write_file("parameters.prm", p.effective_parameters);
-    print_model(p, scene, analysis, summary.warnings, out);
-
-    const ProgrammeResult run =
-      Programme(p, analysis, monitors, writer, timer, out).run();
-
-    judge_outcome(analysis, run, summary);
-    summary.converged           = run.converged;
-    summary.last_converged_load = run.last_converged_load;
-    summary.first_failed_load   = run.first_failed_load;
-    summary.reference_load      = p.reference.analytic_load;
-    summary.relative_error =
-      (run.last_converged_load - summary.reference_load) /
-      summary.reference_load;
-    summary.final_displacement     = run.displacement.mean;
-    summary.final_displacement_min = run.displacement.min;
-    summary.final_displacement_max = run.displacement.max;
-    summary.load_steps             = run.steps_run;
-    summary.attempts               = run.attempts;
-    summary.steps_with_drift       = run.steps_with_drift;
-    summary.total_iterations       = run.total_iterations;
-    summary.converged_iterations   = run.converged_iterations;
-    print_outcome(p, run, summary, out);
-    summary.timing = timer.get_summary_data(TimerOutput::total_wall_time);
-    summary.seconds_per_substitution = analysis.substitution_seconds();
-    summary.seconds_per_iteration =
-      run.total_iterations > 0
-        ? summary.timing["load steps"] / run.total_iterations
-        : 0.;
-    summary.wall_seconds = wall_clock.wall_time();
-    writer.write_file("summary.json", summary.json());
-
-    if (p.output.print_timing)
+      Analysis<2> analysis(p, scene.triangulation());
       {
-        out << "  wall time " << printf("%.3f", wall_clock.wall_time())
-            << " s\n";
-        timer.print_summary();
+        TimerOutput::Scope scope(timer, "setup and factorisation");
+        out << "  setting up: assembling and factorising the stiffness"
+            << std::endl;
+        analysis.setup();
       }
-    return summary;
+      const Monitors<2> monitors(p.monitors, analysis, p.parameter_file);
+
+      RunSummary summary;
+      describe_model(p, scene, analysis, summary);
+      summary.warnings = analysis.warnings();
+
+      // Everything the user gave us has been checked: only now write.
+      OutputWriter writer(p.output, open_directory());
+      writer.write_file("mesh.msh", scene.mesh_text());
+      writer.write_file("parameters.prm", p.effective_parameters);
+      print_model(p, scene, analysis, summary.warnings, out);
+
+      const ProgrammeResult run =
+        Programme(p, analysis, monitors, writer, timer, out).run();
+
+      judge_outcome(analysis, run, summary);
+      summary.converged           = run.converged;
+      summary.last_converged_load = run.last_converged_load;
+      summary.first_failed_load   = run.first_failed_load;
+      summary.reference_load      = p.reference.analytic_load;
+      summary.relative_error =
+        (run.last_converged_load - summary.reference_load) /
+        summary.reference_load;
+      summary.final_displacement     = run.displacement.mean;
+      summary.final_displacement_min = run.displacement.min;
+      summary.final_displacement_max = run.displacement.max;
+      summary.load_steps             = run.steps_run;
+      summary.attempts               = run.attempts;
+      summary.steps_with_drift       = run.steps_with_drift;
+      summary.total_iterations       = run.total_iterations;
+      summary.converged_iterations   = run.converged_iterations;
+      print_outcome(p, run, summary, out);
+      summary.timing = timer.get_summary_data(TimerOutput::total_wall_time);
+      summary.seconds_per_substitution = analysis.substitution_seconds();
+      summary.seconds_per_iteration =
+        run.total_iterations > 0
+          ? summary.timing["load steps"] / run.total_iterations
+          : 0.;
+      summary.wall_seconds = wall_clock.wall_time();
+      writer.write_file("summary.json", summary.json());
+
+      if (p.output.print_timing)
+        {
+          out << "  wall time " << printf("%.3f", wall_clock.wall_time())
+              << " s\n";
+          timer.print_summary();
+        }
+      return summary;
     }
   } // namespace
 
@@ -671,9 +670,8 @@ namespace thinlayer
         summary = run(
           p,
           [&]() {
-            results =
-              std::make_unique<ResultsDirectory>(p.output.directory,
-                                                 p.parameter_file);
+            results = std::make_unique<ResultsDirectory>(p.output.directory,
+                                                         p.parameter_file);
             return results->staging();
           },
           out);

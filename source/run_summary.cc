@@ -1,11 +1,11 @@
 #include <thinlayer/run_summary.h>
 #include <thinlayer/text_format.h>
 
-#include <nlohmann/json.hpp>
-
 #include <cmath>
 #include <limits>
 #include <string>
+
+#include <nlohmann/json.hpp>
 
 namespace thinlayer
 {
@@ -22,8 +22,8 @@ namespace thinlayer
       static nlohmann::ordered_json
       number(const double value)
       {
-        return std::isfinite(value) ? nlohmann::ordered_json(value) :
-                                      nlohmann::ordered_json(nullptr);
+        return std::isfinite(value) ? nlohmann::ordered_json(value)
+                                    : nlohmann::ordered_json(nullptr);
       }
 
       template <typename T>
@@ -130,10 +130,8 @@ namespace thinlayer
     visit(writer);
     // Text that is not valid UTF-8 (a file name, a reason quoting input) is
     // written with replacement characters rather than stopping the run.
-    return writer.object.dump(2,
-                              ' ',
-                              false,
-                              nlohmann::ordered_json::error_handler_t::replace) +
+    return writer.object.dump(
+             2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) +
            '\n';
   }
 

@@ -161,10 +161,10 @@ namespace thinlayer
         {
           // deal.II numbers a quadrilateral's vertices lexicographically;
           // 0, 1, 3, 2 goes round it anticlockwise.
-          const Point<2> v[4] = {cell->vertex(0),
-                                 cell->vertex(1),
-                                 cell->vertex(3),
-                                 cell->vertex(2)};
+          const Point<2> v[4]     = {cell->vertex(0),
+                                     cell->vertex(1),
+                                     cell->vertex(3),
+                                     cell->vertex(2)};
           double         smallest = std::numeric_limits<double>::max();
           for (unsigned int k = 0; k < 4; ++k)
             {
@@ -183,12 +183,12 @@ namespace thinlayer
             file,
             "",
             where.str() +
-              (smallest > 0 ?
-                 ": the cell is smaller than 1e-12 of the mesh's extent "
-                 "squared, too small for the stiffness to be computed" :
-                 ": expected a convex quadrilateral with four distinct "
-                 "corners, got one that is degenerate, folded (a bow-tie) "
-                 "or not convex"));
+              (smallest > 0
+                 ? ": the cell is smaller than 1e-12 of the mesh's extent "
+                   "squared, too small for the stiffness to be computed"
+                 : ": expected a convex quadrilateral with four distinct "
+                   "corners, got one that is degenerate, folded (a bow-tie) "
+                   "or not convex"));
         }
     }
 

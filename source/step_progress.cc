@@ -42,13 +42,14 @@ namespace thinlayer
     if (now < current->next_line)
       return;
     current->next_line = now + interval;
-    current->out
-      << "  step " << text_format::printf("%4.0f", current->step)
-      << "  load factor " << text_format::printf("%10.6g", current->load_factor)
-      << "  ... iteration " << iteration << ", " << measure << ' '
-      << text_format::printf("%.3e", value) << " after "
-      << std::chrono::duration_cast<std::chrono::seconds>(now - current->start)
-           .count()
-      << " s" << std::endl;
+    current->out << "  step " << text_format::printf("%4.0f", current->step)
+                 << "  load factor "
+                 << text_format::printf("%10.6g", current->load_factor)
+                 << "  ... iteration " << iteration << ", " << measure << ' '
+                 << text_format::printf("%.3e", value) << " after "
+                 << std::chrono::duration_cast<std::chrono::seconds>(
+                      now - current->start)
+                      .count()
+                 << " s" << std::endl;
   }
 } // namespace thinlayer

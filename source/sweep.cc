@@ -145,7 +145,7 @@ namespace thinlayer
 
     // The whole sweep is one run of its directory: written aside, put in
     // place at the end.
-    ResultsDirectory results(base.output.directory, file);
+    ResultsDirectory  results(base.output.directory, file);
     const std::string staging  = results.staging();
     const std::string csv_path = staging + "/sweep.csv";
     std::ofstream     csv(csv_path);

@@ -61,13 +61,13 @@ Physical Curve("bottom", 1) = {1}; Physical Curve("top", 2) = {6};
    * the last quad.
    */
   void
-  write_msh(const std::string                      &name,
-            const std::vector<std::string>         &nodes,
-            const std::vector<std::vector<int>>    &quads)
+  write_msh(const std::string                   &name,
+            const std::vector<std::string>      &nodes,
+            const std::vector<std::vector<int>> &quads)
   {
     std::ostringstream msh;
-    msh << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n" << nodes.size()
-        << '\n';
+    msh << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n"
+        << nodes.size() << '\n';
     for (unsigned int i = 0; i < nodes.size(); ++i)
       msh << i + 1 << ' ' << nodes[i] << " 0\n";
     const auto &last = quads.back();
@@ -406,9 +406,10 @@ main()
   write_msh("flat.msh", {"0 0", "1 0", "2 0", "3 0"}, {{1, 2, 3, 4}});
   write("flat.prm", one_material_scene("flat.msh"));
   check("a quadrilateral of zero area", {"flat.prm"});
-  write_msh("sliver.msh",
-            {"0 0", "1 0", "1 1", "0 1", "1 1.0000000000001", "0 1.0000000000001"},
-            {{1, 2, 3, 4}, {4, 3, 5, 6}});
+  write_msh(
+    "sliver.msh",
+    {"0 0", "1 0", "1 1", "0 1", "1 1.0000000000001", "0 1.0000000000001"},
+    {{1, 2, 3, 4}, {4, 3, 5, 6}});
   write("sliver.prm", one_material_scene("sliver.msh"));
   check("a cell 1e-13 thick in a mesh of size 1", {"sliver.prm"});
 }

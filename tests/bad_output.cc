@@ -10,8 +10,6 @@
 // through run_command_line().
 #include <thinlayer/command_line.h>
 
-#include <sys/resource.h>
-
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
@@ -22,6 +20,7 @@
 #include <sstream>
 #include <thread>
 
+#include <sys/resource.h>
 #include <unistd.h>
 
 namespace fs = std::filesystem;
@@ -207,7 +206,7 @@ main()
     restore("results");
     rlimit saved;
     getrlimit(RLIMIT_FSIZE, &saved);
-    rlimit limit = saved;
+    rlimit limit   = saved;
     limit.rlim_cur = 2500;
     setrlimit(RLIMIT_FSIZE, &limit);
     const Result r = run({"good.prm"});
@@ -222,7 +221,7 @@ main()
   for (const int signal : {SIGINT, SIGTERM})
     {
       restore("results");
-      std::thread sender(signal_after_rows, signal, 2);
+      std::thread  sender(signal_after_rows, signal, 2);
       const Result r = run({"good.prm",
                             "-s",
                             "Loading/Load increments=100000*0.00001",
@@ -231,14 +230,14 @@ main()
       sender.join();
       const std::string reason = summary_entry("results", "reason");
       std::cout << "* " << (signal == SIGINT ? "SIGINT" : "SIGTERM")
-                << " during a run\n  exit status " << r.status
-                << ", outcome " << summary_entry("results", "outcome")
-                << ", reason " << reason.substr(0, reason.find(" at "))
+                << " during a run\n  exit status " << r.status << ", outcome "
+                << summary_entry("results", "outcome") << ", reason "
+                << reason.substr(0, reason.find(" at "))
                 << ", history of this run only: "
                 << (read("results/history.csv").find(",1e-05,") !=
-                        std::string::npos ?
-                      "yes" :
-                      "NO")
+                        std::string::npos
+                      ? "yes"
+                      : "NO")
                 << ", staging left behind: " << staging_left() << "\n  "
                 << r.error << '\n';
     }
@@ -271,9 +270,9 @@ main()
               << (fs::exists(".results.partial-999999999-0") ? "NO" : "yes")
               << ", live one kept: "
               << (fs::exists(".results.partial-" + std::to_string(getpid()) +
-                             "-99") ?
-                    "yes" :
-                    "NO")
+                             "-99")
+                    ? "yes"
+                    : "NO")
               << "\n\n";
     fs::remove_all(".results.partial-" + std::to_string(getpid()) + "-99");
   }
@@ -287,11 +286,11 @@ main()
     const Result r = run({"sweep.prm"});
     std::cout << "* a sweep with a run that ended in an error\n  exit status "
               << r.status << ", run-001 written: "
-              << (fs::exists("sweep-results/run-001/summary.json") ? "yes" :
-                                                                      "no")
+              << (fs::exists("sweep-results/run-001/summary.json") ? "yes"
+                                                                   : "no")
               << ", run-002 written: "
-              << (fs::exists("sweep-results/run-002") ? "yes" : "no")
-              << "\n  " << r.error << '\n';
+              << (fs::exists("sweep-results/run-002") ? "yes" : "no") << "\n  "
+              << r.error << '\n';
   }
 
   // gmsh: a geometry parameter that asks for 10^8 cells is stopped by its
@@ -332,7 +331,7 @@ Physical Curve("bottom", 1) = {1}; Physical Curve("top", 2) = {3};
     std::cout << "  afterwards: " << gmsh_left() << "\n\n";
 
     restore("results");
-    std::thread sender([]() {
+    std::thread  sender([]() {
       std::this_thread::sleep_for(std::chrono::milliseconds(300));
       kill(getpid(), SIGINT);
     });
@@ -354,7 +353,7 @@ Physical Curve("bottom", 1) = {1}; Physical Curve("top", 2) = {3};
     std::ostream       broken(nullptr);
     std::ostringstream err;
     const int status = thinlayer::run_command_line({"good.prm"}, broken, err);
-    std::cout << "* standard output cannot be written\n  exit status "
-              << status << "\n  " << err.str() << '\n';
+    std::cout << "* standard output cannot be written\n  exit status " << status
+              << "\n  " << err.str() << '\n';
   }
 }

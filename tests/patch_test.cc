@@ -72,7 +72,9 @@ main()
         analysis.setup();
         analysis.solve(1.0);
         analysis.accept_step();
-        const thinlayer::Monitors<2> monitors(p.monitors, analysis, p.parameter_file);
+        const thinlayer::Monitors<2> monitors(p.monitors,
+                                              analysis,
+                                              p.parameter_file);
 
         double max_error = 0;
         for (unsigned int c = 0; c < scene.triangulation().n_active_cells();

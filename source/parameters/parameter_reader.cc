@@ -23,10 +23,10 @@ namespace thinlayer
     void
     check_nothing_given_twice(const std::string &text, const std::string &file)
     {
-      const std::regex opens("^\\s*subsection\\s+(.*?)\\s*(#.*)?$");
-      const std::regex closes("^\\s*end\\s*(#.*)?$");
-      const std::regex sets("^\\s*set\\s+([^=]*?)\\s*=.*$");
-      std::vector<std::string>           path;
+      const std::regex         opens("^\\s*subsection\\s+(.*?)\\s*(#.*)?$");
+      const std::regex         closes("^\\s*end\\s*(#.*)?$");
+      const std::regex         sets("^\\s*set\\s+([^=]*?)\\s*=.*$");
+      std::vector<std::string> path;
       std::map<std::string, unsigned int> first_line;
       std::istringstream                  lines(text);
       std::string                         line;

@@ -315,7 +315,7 @@ namespace thinlayer
                        "'residual' or 'displacements' for Newton, not "
                        "'body loads': past collapse the stress excess "
                        "grows without bound and that test would pass");
-    tolerance              = positive(prm, "Tolerance", file, "Solver");
+    tolerance = positive(prm, "Tolerance", file, "Solver");
     if (!(tolerance < 1))
       throw InputError(file,
                        "Solver/Tolerance",

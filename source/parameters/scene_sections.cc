@@ -393,8 +393,8 @@ namespace thinlayer
     if (yield_criterion != YieldCriterion::mohr_coulomb &&
         (friction_angle > 0 || dilation_angle > 0))
       throw InputError(file,
-                       section + (friction_angle > 0 ? "/Friction angle" :
-                                                       "/Dilation angle"),
+                       section + (friction_angle > 0 ? "/Friction angle"
+                                                     : "/Dilation angle"),
                        "the " + criterion +
                          " criterion has no friction or dilation angle; "
                          "expected 0, or Yield criterion = mohr-coulomb");
@@ -485,7 +485,7 @@ namespace thinlayer
           return false;
         }
     };
-    const unsigned int n = constrained_components.size();
+    const unsigned int n             = constrained_components.size();
     unsigned int       n_constrained = 0;
     for (const bool c : constrained_components)
       n_constrained += c ? 1 : 0;
@@ -498,10 +498,10 @@ namespace thinlayer
         throw InputError(file,
                          section + "/Traction",
                          "a traction on the constrained component " +
-                           std::string(fourier ? (c == 0   ? "r" :
-                                                  c == 1   ? "z" :
-                                                             "theta") :
-                                       (c == 0 ? "x" : "y")) +
+                           std::string(fourier ? (c == 0   ? "r"
+                                                  : c == 1 ? "z"
+                                                           : "theta")
+                                               : (c == 0 ? "x" : "y")) +
                            " would go into the reaction; expected 0 there, "
                            "or the component free");
     if (n_constrained == n && !is_zero(pressure))

@@ -1,6 +1,6 @@
 #include <thinlayer/interruption.h>
-#include <thinlayer/step_progress.h>
 #include <thinlayer/solution_methods/viscoplastic.h>
+#include <thinlayer/step_progress.h>
 
 #include <algorithm>
 
@@ -57,8 +57,8 @@ namespace thinlayer
       (parameters.convergence_criterion ==
        SolverParameters::ConvergenceCriterion::body_loads);
     StepResult result{0, false, 0, 0};
-    while (result.iterations < parameters.max_iterations &&
-           !result.converged && !interrupted())
+    while (result.iterations < parameters.max_iterations && !result.converged &&
+           !interrupted())
       {
         ++result.iterations;
         for (unsigned int m = 0; m < n_modes; ++m)
@@ -100,8 +100,8 @@ namespace thinlayer
                               parameters.max_iterations,
                               analysis.get_modes());
         report_iteration(result.iterations,
-                         body_load_criterion ? "body-load change" :
-                                               "displacement change",
+                         body_load_criterion ? "body-load change"
+                                             : "displacement change",
                          size > 0 ? change / size : 0.);
       }
     if (!result.converged)
