@@ -7,12 +7,12 @@
 #include <thinlayer/output_writer.h>
 #include <thinlayer/results_directory.h>
 #include <thinlayer/run.h>
+#include <thinlayer/run_outcome.h>
 #include <thinlayer/scene.h>
 #include <thinlayer/step_progress.h>
 #include <thinlayer/text_format.h>
 
 #include <cmath>
-#include <csignal>
 #include <filesystem>
 #include <functional>
 #include <limits>
@@ -63,83 +63,6 @@ namespace thinlayer
     }
 
 
-    /**
-     * A failed step under load is a collapse only with a mechanism as
-     * evidence: its secant stiffness along the increment below this
-     * fraction of the elastic one (and positive), i.e. displacements at
-     * least ten times the elastic response to the same load increment.
-     */
-    constexpr double mechanism_stiffness_ratio = 0.1;
-
-    /**
-     * A step that converges under load with a secant stiffness below this
-     * fraction of the elastic one (displacements a hundred times the
-     * elastic response) has reached the mechanism as well: automatic
-     * stepping brackets this knee of the load-displacement curve rather
-     * than accepting states along it. Beyond the knee, a thin layer's
-     * curve can creep on for several per cent of load at a hundredth of
-     * the elastic stiffness and less (Case 2 at aspect ratio 1000: from
-     * 1.03 to 1.10, with displacements 3.7 to 213 times the footing's
-     * elastic 1.6), and how far a method follows that creep depends on its
-     * iteration budget, not on the body; the knee does not (Prandtl's
-     * curve stays above 0.02 of the elastic stiffness to within 0.3% of
-     * (2 + pi)c, so there the knee is the limit load).
-     */
-    constexpr double mechanism_knee_ratio = 0.01;
-
-    /**
-     * Or, for a step stopped by its iteration limit, the change of its
-     * displacement still growing linearly: at the end at least this many
-     * times the change at half the limit (2 for linear growth; a step
-     * converging at rate rho gives 1 + rho^(N/2)).
-     */
-    constexpr double mechanism_growth_ratio = 1.8;
-
-    /**
-     * Under prescribed displacement the load has reached its plateau when
-     * the last step's load change per load factor is below this fraction
-     * of the first step's.
-     */
-    constexpr double plateau_stiffness_ratio = 0.01;
-
-
-    /// What the load programme leaves behind.
-    struct ProgrammeResult
-    {
-      bool         converged           = true;
-      bool         any_step_converged  = false;
-      double       last_converged_load = 0;
-      double       first_failed_load = std::numeric_limits<double>::quiet_NaN();
-      unsigned int total_iterations  = 0;
-      unsigned int converged_iterations = 0;
-      unsigned int steps_run            = 0;
-      unsigned int attempts             = 0;
-      unsigned int steps_with_drift     = 0;
-      DisplacementMeasure displacement{0, 0, 0};
-      DisplacementMeasure converged_displacement{0, 0, 0};
-      /// The load per load factor of the first and of the last converged
-      /// step, for the plateau under prescribed displacement.
-      double first_stiffness = std::numeric_limits<double>::quiet_NaN();
-      double last_stiffness  = std::numeric_limits<double>::quiet_NaN();
-      double last_converged_load_factor = 0;
-
-      /// How a run that a failed step ended, ended.
-      bool stopped = false;
-      /// The step that ended it converged, on the mechanism.
-      bool   stopped_on_mechanism = false;
-      bool   non_finite           = false;
-      double failed_load_factor   = std::numeric_limits<double>::quiet_NaN();
-      double stiffness_ratio      = std::numeric_limits<double>::quiet_NaN();
-      double growth_ratio         = std::numeric_limits<double>::quiet_NaN();
-      /// Where a probe beyond the failed step showed the mechanism.
-      double probe_load_factor = std::numeric_limits<double>::quiet_NaN();
-      /// The signal that interrupted the run (0: none), and the load
-      /// factor of the step it stopped.
-      int    interrupted_by          = 0;
-      double interrupted_load_factor = std::numeric_limits<double>::quiet_NaN();
-    };
-
-
     /// One line of progress on screen for an attempt, as it ends. A failed
     /// step's state is no equilibrium, and its numbers depend on rounding:
     /// they go to history.csv (where the mechanism can be seen), not here.
@@ -174,25 +97,6 @@ namespace thinlayer
       else
         out << "  FAILED to converge (its state is in history.csv)";
       out << std::endl;
-    }
-
-
-    /// Whether a failed attempt shows a mechanism.
-    bool
-    shows_mechanism(const double stiffness_ratio, const double growth_ratio)
-    {
-      // Displacements ten times the elastic ones in either direction: at
-      // and beyond the limit load no equilibrium is near, and where a
-      // failing iterate runs depends on the method (from the secant
-      // predictor it often runs against the load). A method that merely
-      // diverges converges again once the step is cut: this is asked of a
-      // step that failed at the collapse resolution (or, with the programme
-      // as given, of the step that failed, the paper's collapse). The creep of
-      // a thin layer's curve, where Newton once ran away at 1.08 in Case 2
-      // while states up to 1.11 converge, is caught earlier by its knee
-      // (mechanism_knee_ratio).
-      return std::abs(stiffness_ratio) < mechanism_stiffness_ratio ||
-             growth_ratio >= mechanism_growth_ratio;
     }
 
 
@@ -438,89 +342,6 @@ namespace thinlayer
 
 
     /// What the failed step that ended the run shows of a mechanism.
-    std::string
-    evidence(const ProgrammeResult &run)
-    {
-      std::string text =
-        std::string(run.stopped_on_mechanism
-                      ? "the step converged, with a secant stiffness of "
-                      : "the failed step's secant stiffness is ") +
-        printf("%.2g", run.stiffness_ratio) + " of the elastic one";
-      if (std::isfinite(run.growth_ratio))
-        text += ", and its displacement change grew by a factor " +
-                printf("%.3g", run.growth_ratio) +
-                " over the second half of its iterations";
-      return text;
-    }
-
-
-    /**
-     * How the run ended (RunSummary::outcome), the reason, and the
-     * collapse load where there is one.
-     */
-    void
-    judge_outcome(const Analysis<2>     &analysis,
-                  const ProgrammeResult &run,
-                  RunSummary            &s)
-    {
-      const auto at = [](const double load_factor) {
-        return " at load factor " + printf("%.6g", load_factor);
-      };
-      if (run.interrupted_by != 0)
-        {
-          s.outcome = "interrupted";
-          s.reason  = std::string(run.interrupted_by == SIGINT    ? "SIGINT"
-                                 : run.interrupted_by == SIGTERM ? "SIGTERM"
-                                                                 : "a signal") +
-                     " stopped the step" + at(run.interrupted_load_factor) +
-                     "; the steps before it are complete";
-          return;
-        }
-      if (!run.stopped)
-        {
-          s.outcome = run.converged ? "completed" : "not converged";
-          s.reason  = run.converged
-                        ? "every load step converged"
-                        : "steps that failed were accepted (Solver/Continue "
-                          "after failure)";
-          if (!analysis.has_external_load() && run.converged &&
-              std::abs(run.last_stiffness) <=
-                plateau_stiffness_ratio * std::abs(run.first_stiffness))
-            {
-              s.collapse_load = run.last_converged_load;
-              s.reason += "; the load reached its plateau";
-            }
-          return;
-        }
-      s.outcome = "not converged";
-      if (run.non_finite)
-        s.reason =
-          "values that are not finite numbers" + at(run.failed_load_factor);
-      else if (!analysis.has_external_load())
-        s.reason = "the step failed" + at(run.failed_load_factor) +
-                   " under prescribed displacement, where a failed step is "
-                   "no collapse";
-      else if (shows_mechanism(run.stiffness_ratio, run.growth_ratio))
-        {
-          s.outcome         = "collapse";
-          s.collapse_load   = run.last_converged_load;
-          const bool probed = std::isfinite(run.probe_load_factor);
-          s.reason =
-            "a mechanism" +
-            (probed ? " beyond the failed step" + at(run.failed_load_factor) +
-                        ", shown by a probe" + at(run.probe_load_factor)
-                    : at(run.failed_load_factor)) +
-            ": " + evidence(run) + "; the collapse load factor lies between " +
-            printf("%.6g", run.last_converged_load_factor) + " and " +
-            printf("%.6g",
-                   probed ? run.probe_load_factor : run.failed_load_factor);
-        }
-      else
-        s.reason = "the step failed" + at(run.failed_load_factor) +
-                   " with no mechanism shown: " + evidence(run);
-    }
-
-
     /// The last converged state against the reference, on screen.
     void
     print_outcome(const Parameters      &p,
