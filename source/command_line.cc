@@ -28,6 +28,65 @@ namespace thinlayer
           << "directory named by Output/Directory: history.csv, summary.json,\n"
           << "fields.pvd with one VTU per load step.\n";
     }
+
+
+    /**
+     * The parameter file and the overrides of @p arguments. Returns the
+     * exit status where the command line is done (help, the parameter
+     * list, or a bad command line: 2), or -1 to go on with the run.
+     */
+    int
+    parse_arguments(const std::vector<std::string> &arguments,
+                    std::string                    &file,
+                    std::vector<std::string>       &overrides,
+                    std::ostream                   &out,
+                    std::ostream                   &err)
+    {
+      for (unsigned int i = 0; i < arguments.size(); ++i)
+        {
+          const std::string &a = arguments[i];
+          if (a == "--help" || a == "-h")
+            {
+              print_usage(out);
+              return 0;
+            }
+          else if (a == "--print-parameters")
+            {
+              ParameterReader().print_parameters(out);
+              return 0;
+            }
+          else if (a == "-s" || a == "--set")
+            {
+              if (i + 1 == arguments.size())
+                {
+                  err << "thinlayer: " << a
+                      << " needs an argument \"Section/Entry=value\"\n";
+                  return 2;
+                }
+              overrides.push_back(arguments[++i]);
+            }
+          else if (!a.empty() && a[0] == '-')
+            {
+              err << "thinlayer: unknown option '" << a << "'\n";
+              print_usage(err);
+              return 2;
+            }
+          else if (file.empty())
+            file = a;
+          else
+            {
+              err << "thinlayer: only one parameter file, got '" << file
+                  << "' and '" << a << "'\n";
+              return 2;
+            }
+        }
+      if (file.empty())
+        {
+          print_usage(err);
+          return 2;
+        }
+      return -1;
+    }
   } // namespace
 
 
@@ -38,49 +97,10 @@ namespace thinlayer
   {
     std::string              file;
     std::vector<std::string> overrides;
-    for (unsigned int i = 0; i < arguments.size(); ++i)
-      {
-        const std::string &a = arguments[i];
-        if (a == "--help" || a == "-h")
-          {
-            print_usage(out);
-            return 0;
-          }
-        else if (a == "--print-parameters")
-          {
-            ParameterReader().print_parameters(out);
-            return 0;
-          }
-        else if (a == "-s" || a == "--set")
-          {
-            if (i + 1 == arguments.size())
-              {
-                err << "thinlayer: " << a
-                    << " needs an argument \"Section/Entry=value\"\n";
-                return 2;
-              }
-            overrides.push_back(arguments[++i]);
-          }
-        else if (!a.empty() && a[0] == '-')
-          {
-            err << "thinlayer: unknown option '" << a << "'\n";
-            print_usage(err);
-            return 2;
-          }
-        else if (file.empty())
-          file = a;
-        else
-          {
-            err << "thinlayer: only one parameter file, got '" << file
-                << "' and '" << a << "'\n";
-            return 2;
-          }
-      }
-    if (file.empty())
-      {
-        print_usage(err);
-        return 2;
-      }
+    if (const int status =
+          parse_arguments(arguments, file, overrides, out, err);
+        status >= 0)
+      return status;
 
     try
       {

@@ -104,6 +104,78 @@ namespace thinlayer
         out << " (" << s.warnings << ')';
       out << std::endl; // progress: one line per run, as it ends
     }
+
+
+    /// The overrides of one run, checked: an InputError naming the run's
+    /// values if they make an invalid scene.
+    std::vector<std::string>
+    checked_overrides(const std::string               &file,
+                      const std::vector<std::string>  &overrides,
+                      const Parameters                &base,
+                      const std::vector<unsigned int> &combination,
+                      const std::string               &directory)
+    {
+      std::vector<std::string> result = overrides;
+      for (const auto &o : overrides_for(base, combination, directory))
+        result.push_back(o);
+      try
+        {
+          ParameterReader().read(file, result);
+        }
+      catch (const InputError &e)
+        {
+          throw InputError(file,
+                           "Sweep/Values",
+                           "the run with " + describe(base.sweep, combination) +
+                             " is invalid: " + e.what());
+        }
+      return result;
+    }
+
+
+    /**
+     * One run of the sweep into @p directory (inside the sweep's staging
+     * directory; @p named is where it will be): its row of sweep.csv and
+     * its line on screen. Returns false if it ended in an error, which is
+     * then the row's last field; a run that ended in an error leaves no
+     * files. A full disk or a signal while meshing ends the whole sweep.
+     */
+    bool
+    run_one(const std::string              &file,
+            const std::vector<std::string> &overrides,
+            const std::string              &directory,
+            const std::string              &named,
+            std::ostream                   &csv,
+            std::ostream                   &out)
+    {
+      std::ostringstream run_output;
+      try
+        {
+          const Parameters p = ParameterReader().read(file, overrides);
+          const RunSummary s = run_scene_in(p, directory, run_output);
+          csv << ',' << s.csv_row() << ",\n";
+          print_run(s, out);
+          return true;
+        }
+      catch (const Interrupted &)
+        {
+          throw; // while meshing: the sweep stops, nothing of it is kept
+        }
+      catch (const WriteError &e)
+        {
+          throw WriteError(std::string(e.what()) + " (Output/Directory '" +
+                           named + "')");
+        }
+      catch (const std::exception &e)
+        {
+          std::error_code error;
+          std::filesystem::remove_all(directory, error);
+          csv << ',' << RunSummary::csv_error_row() << ','
+              << text_format::csv_field(e.what()) << '\n';
+          out << "error: " << e.what() << std::endl;
+          return false;
+        }
+    }
   } // namespace
 
 
@@ -124,24 +196,8 @@ namespace thinlayer
     // Check every run's parameters before anything is written.
     std::vector<std::vector<std::string>> run_overrides;
     for (unsigned int r = 0; r < combinations.size(); ++r)
-      {
-        run_overrides.push_back(overrides);
-        for (const auto &o :
-             overrides_for(base, combinations[r], directory_of(r)))
-          run_overrides.back().push_back(o);
-        try
-          {
-            ParameterReader().read(file, run_overrides.back());
-          }
-        catch (const InputError &e)
-          {
-            throw InputError(file,
-                             "Sweep/Values",
-                             "the run with " +
-                               describe(sweep, combinations[r]) +
-                               " is invalid: " + e.what());
-          }
-      }
+      run_overrides.push_back(checked_overrides(
+        file, overrides, base, combinations[r], directory_of(r)));
 
     // The whole sweep is one run of its directory: written aside, put in
     // place at the end.
@@ -167,36 +223,14 @@ namespace thinlayer
 
         out << "  run " << r + 1 << '/' << combinations.size() << ": "
             << describe(sweep, combinations[r]) << ": ";
-        std::ostringstream run_output;
-        const std::string  run_directory =
-          staging + directory_of(r).substr(base.output.directory.size());
-        try
-          {
-            const Parameters p = ParameterReader().read(file, run_overrides[r]);
-            const RunSummary s = run_scene_in(p, run_directory, run_output);
-            csv << ',' << s.csv_row() << ",\n";
-            print_run(s, out);
-          }
-        catch (const Interrupted &)
-          {
-            throw; // while meshing: the sweep stops, nothing of it is kept
-          }
-        catch (const WriteError &e)
-          {
-            // A full disk ends the sweep, not only this run.
-            throw WriteError(std::string(e.what()) + " (Output/Directory '" +
-                             directory_of(r) + "')");
-          }
-        catch (const std::exception &e)
-          {
-            // A run that ended in an error leaves no half-written files.
-            std::error_code error;
-            std::filesystem::remove_all(run_directory, error);
-            csv << ',' << RunSummary::csv_error_row() << ','
-                << text_format::csv_field(e.what()) << '\n';
-            out << "error: " << e.what() << std::endl;
-            ++failed_runs;
-          }
+        if (!run_one(file,
+                     run_overrides[r],
+                     staging +
+                       directory_of(r).substr(base.output.directory.size()),
+                     directory_of(r),
+                     csv,
+                     out))
+          ++failed_runs;
         csv << std::flush;
         if (!csv)
           throw WriteError("cannot write sweep.csv (Output/Directory '" +

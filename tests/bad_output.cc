@@ -53,6 +53,9 @@ namespace
     return files;
   }
 
+  /// The valid run's results, which the checks start from.
+  std::map<std::string, std::string> previous_run;
+
   /// Staging directories (".NAME.partial-...") left in the current one.
   unsigned int
   staging_left()
@@ -155,148 +158,10 @@ Physical Curve("bottom", 1) = {1}; Physical Curve("top", 2) = {3};
         std::this_thread::sleep_for(std::chrono::milliseconds(1));
       }
   }
-} // namespace
-
-
-int
-main()
-{
-  write("block.geo", geo);
-  write("good.prm", scene("results"));
+  /// Temporary gmsh directories of this process, and whether a gmsh child runs.
+  std::string
+  gmsh_left()
   {
-    const Result r = run({"good.prm"});
-    std::cout << "* the valid scene: exit status " << r.status << "\n\n";
-    fs::remove_all("previous");
-    fs::rename("results", "previous");
-  }
-  const auto previous_run = contents("previous");
-
-  // Directories that cannot hold a run.
-  write("a-file", "not a directory\n");
-  report("Output/Directory is a file",
-         run({"good.prm", "-s", "Output/Directory=a-file"}),
-         read("a-file") == "not a directory\n");
-  fs::create_directories("notes");
-  write("notes/thesis.tex", "\\chapter{}\n");
-  report("Output/Directory holds files that are not a run",
-         run({"good.prm", "-s", "Output/Directory=notes"}),
-         read("notes/thesis.tex") == "\\chapter{}\n");
-  fs::create_directories("project");
-  write("project/scene.prm", scene("."));
-  write("project/block.geo", geo);
-  report("Output/Directory contains the parameter file",
-         run({"project/scene.prm"}),
-         contents("project").size() == 2);
-  report("Output/Directory is empty",
-         run({"good.prm", "-s", "Output/Directory="}),
-         true);
-  fs::remove("loop");
-  fs::create_symlink("loop", "loop");
-  report("Output/Directory is a symbolic link to itself",
-         run({"good.prm", "-s", "Output/Directory=loop/results"}),
-         true);
-  report("Output/Directory lies under a file",
-         run({"good.prm", "-s", "Output/Directory=a-file/results"}),
-         read("a-file") == "not a directory\n");
-
-  // A write that fails: a file size limit of 2500 bytes, so that
-  // history.csv, the mesh and the parameters fit but a VTU (2.6 kB) does
-  // not. The limit is lifted again after.
-  {
-    restore("results");
-    rlimit saved;
-    getrlimit(RLIMIT_FSIZE, &saved);
-    rlimit limit   = saved;
-    limit.rlim_cur = 2500;
-    setrlimit(RLIMIT_FSIZE, &limit);
-    const Result r = run({"good.prm"});
-    setrlimit(RLIMIT_FSIZE, &saved);
-    report("a write that fails (file size limit, as on a full disk)",
-           r,
-           contents("results") == previous_run);
-  }
-
-  // Signals: the run stops at the next iteration and is written as
-  // interrupted, in place of the previous run.
-  for (const int signal : {SIGINT, SIGTERM})
-    {
-      restore("results");
-      std::thread  sender(signal_after_rows, signal, 2);
-      const Result r = run({"good.prm",
-                            "-s",
-                            "Loading/Load increments=100000*0.00001",
-                            "-s",
-                            "Output/Write VTU=false"});
-      sender.join();
-      const std::string reason = summary_entry("results", "reason");
-      std::cout << "* " << (signal == SIGINT ? "SIGINT" : "SIGTERM")
-                << " during a run\n  exit status " << r.status << ", outcome "
-                << summary_entry("results", "outcome") << ", reason "
-                << reason.substr(0, reason.find(" at "))
-                << ", history of this run only: "
-                << (read("results/history.csv").find(",1e-05,") !=
-                        std::string::npos
-                      ? "yes"
-                      : "NO")
-                << ", staging left behind: " << staging_left() << "\n  "
-                << r.error << '\n';
-    }
-
-  // A rerun with fewer steps and no VTU: nothing of the earlier run stays.
-  {
-    restore("results");
-    const Result r = run({"good.prm",
-                          "-s",
-                          "Loading/Load increments=0.1",
-                          "-s",
-                          "Output/Write VTU=false"});
-    std::cout << "* a rerun with fewer steps and without VTU\n  exit status "
-              << r.status << ", files:";
-    for (const auto &[name, text] : contents("results"))
-      std::cout << ' ' << name;
-    std::cout << "\n\n";
-  }
-
-  // A staging directory of a process that is gone is cleared by the next
-  // run into the same parent; that of a live one (this process) is not.
-  {
-    fs::create_directories(".results.partial-999999999-0");
-    fs::create_directories(".results.partial-" + std::to_string(getpid()) +
-                           "-99");
-    const Result r = run({"good.prm"});
-    std::cout << "* staging directories of a process that is gone, and of "
-                 "this one\n  exit status "
-              << r.status << ", gone one cleared: "
-              << (fs::exists(".results.partial-999999999-0") ? "NO" : "yes")
-              << ", live one kept: "
-              << (fs::exists(".results.partial-" + std::to_string(getpid()) +
-                             "-99")
-                    ? "yes"
-                    : "NO")
-              << "\n\n";
-    fs::remove_all(".results.partial-" + std::to_string(getpid()) + "-99");
-  }
-
-  // A sweep whose second run cannot be meshed into valid cells (height 0
-  // makes them flat): a row with the error, and a non-zero exit.
-  write("sweep.prm",
-        scene("sweep-results",
-              "subsection Sweep\n  set Values = height = 1, 0\nend\n"));
-  {
-    const Result r = run({"sweep.prm"});
-    std::cout << "* a sweep with a run that ended in an error\n  exit status "
-              << r.status << ", run-001 written: "
-              << (fs::exists("sweep-results/run-001/summary.json") ? "yes"
-                                                                   : "no")
-              << ", run-002 written: "
-              << (fs::exists("sweep-results/run-002") ? "yes" : "no") << "\n  "
-              << r.error << '\n';
-  }
-
-  // gmsh: a geometry parameter that asks for 10^8 cells is stopped by its
-  // memory within seconds; a signal while gmsh meshes stops it too. Either
-  // way no gmsh process and no temporary directory of this process stay.
-  const auto gmsh_left = []() {
     unsigned int n = 0;
     for (const auto &entry : fs::directory_iterator("/tmp"))
       if (entry.path().filename().string().find(
@@ -307,53 +172,253 @@ main()
                                        .c_str()) == 0;
     return std::to_string(n) + " temporary directories, gmsh " +
            (running ? "STILL RUNNING" : "not running");
-  };
-  {
-    write("huge.geo", R"(
-DefineConstant[ n = {2, Name "Parameters/n"} ];
-Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0}; Point(3) = {1, 1, 0};
-Point(4) = {0, 1, 0};
-Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
-Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};
-Transfinite Curve{:} = n + 1; Transfinite Surface{1}; Recombine Surface{1};
-Physical Surface("block", 1) = {1};
-Physical Curve("bottom", 1) = {1}; Physical Curve("top", 2) = {3};
-)");
-    std::string huge = read("good.prm");
-    huge.replace(huge.find("block.geo"), 9, "huge.geo");
-    write("huge.prm", huge);
-    restore("results");
-    const Result stopped =
-      run({"huge.prm", "-s", "Mesh/Geometry parameters=n=1e8"});
-    report("a geometry parameter that asks for 10^8 cells",
-           stopped,
-           contents("results") == previous_run);
-    std::cout << "  afterwards: " << gmsh_left() << "\n\n";
+  }
+} // namespace
 
-    restore("results");
-    std::thread  sender([]() {
-      std::this_thread::sleep_for(std::chrono::milliseconds(300));
-      kill(getpid(), SIGINT);
-    });
-    const Result interrupted = run({"huge.prm",
-                                    "-s",
-                                    "Mesh/Geometry parameters=n=1e8",
-                                    "-s",
-                                    "Mesh/Maximum cells=1000000000"});
-    sender.join();
-    report("SIGINT while gmsh meshes",
-           interrupted,
-           contents("results") == previous_run);
-    std::cout << "  afterwards: " << gmsh_left() << "\n\n";
+
+namespace
+{
+  /// The valid scene, whose results the checks start from.
+  void
+  run_valid_scene()
+  {
+    write("block.geo", geo);
+    write("good.prm", scene("results"));
+    {
+      const Result r = run({"good.prm"});
+      std::cout << "* the valid scene: exit status " << r.status << "\n\n";
+      fs::remove_all("previous");
+      fs::rename("results", "previous");
+    }
+    previous_run = contents("previous");
   }
 
-  // Standard output that cannot be written.
+
+  /// Output directories that cannot hold a run.
+  void
+  check_directories()
   {
-    restore("results");
-    std::ostream       broken(nullptr);
-    std::ostringstream err;
-    const int status = thinlayer::run_command_line({"good.prm"}, broken, err);
-    std::cout << "* standard output cannot be written\n  exit status " << status
-              << "\n  " << err.str() << '\n';
+    write("a-file", "not a directory\n");
+    report("Output/Directory is a file",
+           run({"good.prm", "-s", "Output/Directory=a-file"}),
+           read("a-file") == "not a directory\n");
+    fs::create_directories("notes");
+    write("notes/thesis.tex", "\\chapter{}\n");
+    report("Output/Directory holds files that are not a run",
+           run({"good.prm", "-s", "Output/Directory=notes"}),
+           read("notes/thesis.tex") == "\\chapter{}\n");
+    fs::create_directories("project");
+    write("project/scene.prm", scene("."));
+    write("project/block.geo", geo);
+    report("Output/Directory contains the parameter file",
+           run({"project/scene.prm"}),
+           contents("project").size() == 2);
+    report("Output/Directory is empty",
+           run({"good.prm", "-s", "Output/Directory="}),
+           true);
+    fs::remove("loop");
+    fs::create_symlink("loop", "loop");
+    report("Output/Directory is a symbolic link to itself",
+           run({"good.prm", "-s", "Output/Directory=loop/results"}),
+           true);
+    report("Output/Directory lies under a file",
+           run({"good.prm", "-s", "Output/Directory=a-file/results"}),
+           read("a-file") == "not a directory\n");
   }
+
+
+  /// A write that fails: a file size limit of 2500 bytes, so that
+  /// history.csv, the mesh and the parameters fit but a VTU (2.6 kB) does
+  /// not. The limit is lifted again after.
+  void
+  check_failed_write()
+  {
+    {
+      restore("results");
+      rlimit saved;
+      getrlimit(RLIMIT_FSIZE, &saved);
+      rlimit limit   = saved;
+      limit.rlim_cur = 2500;
+      setrlimit(RLIMIT_FSIZE, &limit);
+      const Result r = run({"good.prm"});
+      setrlimit(RLIMIT_FSIZE, &saved);
+      report("a write that fails (file size limit, as on a full disk)",
+             r,
+             contents("results") == previous_run);
+    }
+  }
+
+
+  /// Signals: the run stops at the next iteration and is written as
+  /// interrupted, in place of the previous run.
+  void
+  check_signals()
+  {
+    for (const int signal : {SIGINT, SIGTERM})
+      {
+        restore("results");
+        std::thread  sender(signal_after_rows, signal, 2);
+        const Result r = run({"good.prm",
+                              "-s",
+                              "Loading/Load increments=100000*0.00001",
+                              "-s",
+                              "Output/Write VTU=false"});
+        sender.join();
+        const std::string reason = summary_entry("results", "reason");
+        std::cout << "* " << (signal == SIGINT ? "SIGINT" : "SIGTERM")
+                  << " during a run\n  exit status " << r.status << ", outcome "
+                  << summary_entry("results", "outcome") << ", reason "
+                  << reason.substr(0, reason.find(" at "))
+                  << ", history of this run only: "
+                  << (read("results/history.csv").find(",1e-05,") !=
+                          std::string::npos
+                        ? "yes"
+                        : "NO")
+                  << ", staging left behind: " << staging_left() << "\n  "
+                  << r.error << '\n';
+      }
+  }
+
+
+  /// A rerun with fewer steps and no VTU: nothing of the earlier run stays.
+  void
+  check_rerun()
+  {
+    {
+      restore("results");
+      const Result r = run({"good.prm",
+                            "-s",
+                            "Loading/Load increments=0.1",
+                            "-s",
+                            "Output/Write VTU=false"});
+      std::cout << "* a rerun with fewer steps and without VTU\n  exit status "
+                << r.status << ", files:";
+      for (const auto &[name, text] : contents("results"))
+        std::cout << ' ' << name;
+      std::cout << "\n\n";
+    }
+  }
+
+
+  /// A staging directory of a process that is gone is cleared by the next run
+  /// into the same parent; that of a live one (this process) is not.
+  void
+  check_stale_staging()
+  {
+    {
+      fs::create_directories(".results.partial-999999999-0");
+      fs::create_directories(".results.partial-" + std::to_string(getpid()) +
+                             "-99");
+      const Result r = run({"good.prm"});
+      std::cout << "* staging directories of a process that is gone, and of "
+                   "this one\n  exit status "
+                << r.status << ", gone one cleared: "
+                << (fs::exists(".results.partial-999999999-0") ? "NO" : "yes")
+                << ", live one kept: "
+                << (fs::exists(".results.partial-" + std::to_string(getpid()) +
+                               "-99")
+                      ? "yes"
+                      : "NO")
+                << "\n\n";
+      fs::remove_all(".results.partial-" + std::to_string(getpid()) + "-99");
+    }
+  }
+
+
+  /// A sweep whose second run cannot be meshed into valid cells (height 0
+  /// makes them flat): a row with the error, and a non-zero exit.
+  void
+  check_sweep_with_error()
+  {
+    write("sweep.prm",
+          scene("sweep-results",
+                "subsection Sweep\n  set Values = height = 1, 0\nend\n"));
+    {
+      const Result r = run({"sweep.prm"});
+      std::cout << "* a sweep with a run that ended in an error\n  exit status "
+                << r.status << ", run-001 written: "
+                << (fs::exists("sweep-results/run-001/summary.json") ? "yes"
+                                                                     : "no")
+                << ", run-002 written: "
+                << (fs::exists("sweep-results/run-002") ? "yes" : "no")
+                << "\n  " << r.error << '\n';
+    }
+  }
+
+
+  /// gmsh: a geometry parameter that asks for 10^8 cells is stopped by its
+  /// memory within seconds; a signal while gmsh meshes stops it too. Either
+  /// way no gmsh process and no temporary directory of this process stay.
+  void
+  check_gmsh()
+  {
+    {
+      write("huge.geo", R"(
+  DefineConstant[ n = {2, Name "Parameters/n"} ];
+  Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0}; Point(3) = {1, 1, 0};
+  Point(4) = {0, 1, 0};
+  Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
+  Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};
+  Transfinite Curve{:} = n + 1; Transfinite Surface{1}; Recombine Surface{1};
+  Physical Surface("block", 1) = {1};
+  Physical Curve("bottom", 1) = {1}; Physical Curve("top", 2) = {3};
+  )");
+      std::string huge = read("good.prm");
+      huge.replace(huge.find("block.geo"), 9, "huge.geo");
+      write("huge.prm", huge);
+      restore("results");
+      const Result stopped =
+        run({"huge.prm", "-s", "Mesh/Geometry parameters=n=1e8"});
+      report("a geometry parameter that asks for 10^8 cells",
+             stopped,
+             contents("results") == previous_run);
+      std::cout << "  afterwards: " << gmsh_left() << "\n\n";
+
+      restore("results");
+      std::thread  sender([]() {
+        std::this_thread::sleep_for(std::chrono::milliseconds(300));
+        kill(getpid(), SIGINT);
+      });
+      const Result interrupted = run({"huge.prm",
+                                      "-s",
+                                      "Mesh/Geometry parameters=n=1e8",
+                                      "-s",
+                                      "Mesh/Maximum cells=1000000000"});
+      sender.join();
+      report("SIGINT while gmsh meshes",
+             interrupted,
+             contents("results") == previous_run);
+      std::cout << "  afterwards: " << gmsh_left() << "\n\n";
+    }
+  }
+
+
+  /// Standard output that cannot be written.
+  void
+  check_standard_output()
+  {
+    {
+      restore("results");
+      std::ostream       broken(nullptr);
+      std::ostringstream err;
+      const int status = thinlayer::run_command_line({"good.prm"}, broken, err);
+      std::cout << "* standard output cannot be written\n  exit status "
+                << status << "\n  " << err.str() << '\n';
+    }
+  }
+} // namespace
+
+
+int
+main()
+{
+  run_valid_scene();
+  check_directories();
+  check_failed_write();
+  check_signals();
+  check_rerun();
+  check_stale_staging();
+  check_sweep_with_error();
+  check_gmsh();
+  check_standard_output();
 }
