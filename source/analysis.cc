@@ -354,8 +354,10 @@ namespace thinlayer
       for (PointState &state : point->stations)
         {
           state.converged_stress = state.stress;
-          state.plastic_strain += state.step_plastic_strain;
-          state.step_plastic_strain = 0;
+          state.plastic_strain +=
+            state.step_plastic_strain - state.pending_plastic_strain;
+          state.step_plastic_strain    = 0;
+          state.pending_plastic_strain = 0;
         }
     accepted_lambda = load_factor;
     current_lambda  = load_factor;
@@ -373,8 +375,9 @@ namespace thinlayer
     for (PointHistory *point : history)
       for (PointState &state : point->stations)
         {
-          state.stress              = state.converged_stress;
-          state.step_plastic_strain = 0;
+          state.stress                 = state.converged_stress;
+          state.step_plastic_strain    = 0;
+          state.pending_plastic_strain = 0;
         }
     current_lambda = accepted_lambda;
     pending        = false;

@@ -30,7 +30,8 @@ namespace thinlayer
       {
         state.stress = state.converged_stress +
                        law.elastic_stress(strain - state.step_plastic_strain);
-        state.yielding = false;
+        state.pending_plastic_strain = 0; // now in the stress
+        state.yielding               = false;
         if (!law.can_yield())
           return 0;
         const double F = law.yield_function(state.stress);
@@ -41,6 +42,7 @@ namespace thinlayer
         const SymmetricTensor<2, 3> viscoplastic_strain =
           (time_step * F) * law.flow_direction(state.stress);
         state.step_plastic_strain += viscoplastic_strain;
+        state.pending_plastic_strain = viscoplastic_strain;
         // Project D (that strain) back onto every mode.
         add_body_load(law.elastic_stress(viscoplastic_strain));
         return 1;

@@ -24,6 +24,13 @@ namespace thinlayer
     SymmetricTensor<2, 3> plastic_strain;
     /// Viscoplastic strain of the current load step.
     SymmetricTensor<2, 3> step_plastic_strain;
+    /// The part of step_plastic_strain that the stress does not account
+    /// for yet: the paper's algorithm evaluates the stress and then adds
+    /// the increment that stress calls for, so the last increment of a
+    /// converged step has no stress of its own. Accepting the step leaves
+    /// it out of the plastic strain, which then belongs to the accepted
+    /// stress. Zero for the return-mapping methods.
+    SymmetricTensor<2, 3> pending_plastic_strain;
     /// F > 0 at the last evaluation.
     bool yielding = false;
   };
