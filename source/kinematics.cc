@@ -34,8 +34,10 @@ namespace thinlayer
     // The trapezoidal rule over [0, pi], doubled: the field over (pi, 2 pi)
     // mirrors the one over (0, pi), and the products T(m theta) with it
     // are even.
+    // One station (harmonic 0 alone, checked when reading) stands for the
+    // whole circle.
     const unsigned int S = station_angles.size();
-    k.weights.assign(S, 0.);
+    k.weights.assign(S, S == 1 ? 2 * numbers::PI : 0.);
     for (unsigned int s = 0; s + 1 < S; ++s)
       {
         const double h = station_angles[s + 1] - station_angles[s];

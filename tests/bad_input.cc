@@ -420,6 +420,8 @@ namespace
            "Kinematics/Harmonics=1, 3",
            "-s",
            "Kinematics/Stations=0, 90, 180"});
+    check("one Fourier station for harmonics other than 0",
+          {"axis.prm", "-s", "Kinematics/Stations=0"});
     check("Fourier stations not equally spaced",
           {"axis.prm",
            "-s",

@@ -171,10 +171,12 @@ namespace thinlayer
                       "torsion).");
     prm.declare_entry("Stations",
                       "0, 45, 90, 135, 180",
-                      Patterns::List(Patterns::Double(0, 180), 2),
-                      "Fourier: the angles (degrees, from 0 to 180, "
-                      "equally spaced for an exact projection) at which "
-                      "the material is evaluated.");
+                      Patterns::List(Patterns::Double(0, 180), 1),
+                      "Fourier: the angles (degrees, equally spaced from 0 "
+                      "to 180, at least n + 2 of them for harmonics up to "
+                      "n, so that the projection is exact) at which the "
+                      "material is evaluated. For harmonic 0 alone (an "
+                      "axisymmetric state) one station is enough.");
     prm.declare_entry("Axis boundary id",
                       "-1",
                       Patterns::Integer(-1),
@@ -198,6 +200,20 @@ namespace thinlayer
     // loads no longer balance, and the run ends in values that are not
     // numbers or in a collapse load a few per cent off.
     const unsigned int S = station_angles.size();
+    const unsigned int n_max =
+      *std::max_element(harmonics.begin(), harmonics.end());
+    if (S == 1)
+      {
+        if (n_max > 0)
+          throw InputError(file,
+                           "Kinematics/Stations",
+                           "one station serves harmonic 0 alone (an "
+                           "axisymmetric state); for harmonics up to " +
+                             std::to_string(n_max) + " expected at least " +
+                             std::to_string(n_max + 2) +
+                             " equally spaced stations from 0 to 180 degrees");
+        return;
+      }
     for (unsigned int s = 0; s < S; ++s)
       if (std::abs(station_angles[s] - s * numbers::PI / (S - 1)) > 1e-9)
         throw InputError(file,
@@ -206,8 +222,6 @@ namespace thinlayer
                          "degrees (the projection onto the harmonics is "
                          "exact only then), got " +
                            text);
-    const unsigned int n_max =
-      *std::max_element(harmonics.begin(), harmonics.end());
     if (S < n_max + 2)
       throw InputError(file,
                        "Kinematics/Stations",
@@ -247,8 +261,9 @@ namespace thinlayer
                          "Kinematics/Stations",
                          "expected increasing angles, got " +
                            prm.get("Stations"));
-    if (std::abs(station_angles.front()) > 1e-12 ||
-        std::abs(station_angles.back() - numbers::PI) > 1e-12)
+    if (station_angles.size() > 1 &&
+        (std::abs(station_angles.front()) > 1e-12 ||
+         std::abs(station_angles.back() - numbers::PI) > 1e-12))
       throw InputError(file,
                        "Kinematics/Stations",
                        "expected angles from 0 to 180 degrees, got " +
