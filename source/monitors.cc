@@ -48,12 +48,23 @@ namespace thinlayer
                                "of the body");
           }
       }
-    std::vector<bool> mask(analysis.get_kinematics().n_components(), false);
-    mask[parameters.load_component] = true;
-    reaction_dofs =
-      DoFTools::extract_boundary_dofs(analysis.get_dof_handler(),
-                                      ComponentMask(mask),
-                                      {parameters.load_boundary_id});
+    if (parameters.load_measure != MonitorParameters::LoadMeasure::reaction)
+      return;
+    const auto        &dof_handler  = analysis.get_dof_handler();
+    const unsigned int n_components = analysis.get_kinematics().n_components();
+    std::vector<Point<dim>> points(dof_handler.n_dofs());
+    DoFTools::map_dofs_to_support_points(analysis.get_mapping(),
+                                         dof_handler,
+                                         points);
+    reaction_dofs.resize(n_components);
+    for (unsigned int c = 0; c < n_components; ++c)
+      {
+        std::vector<bool> mask(n_components, false);
+        mask[c] = true;
+        for (const auto dof : DoFTools::extract_boundary_dofs(
+               dof_handler, ComponentMask(mask), {parameters.load_boundary_id}))
+          reaction_dofs[c].emplace_back(dof, points[dof]);
+      }
   }
 
 
@@ -61,7 +72,6 @@ namespace thinlayer
   double
   Monitors<dim>::load() const
   {
-    // The other measures are plane-strain ones (checked when reading).
     switch (parameters.load_measure)
       {
         case MonitorParameters::LoadMeasure::load_factor:
@@ -101,16 +111,65 @@ namespace thinlayer
 
   template <int dim>
   double
+  Monitors<dim>::boundary_sum(const Vector<double> &forces,
+                              const unsigned int    component,
+                              const int             weight_by) const
+  {
+    double sum = 0;
+    for (const auto &[dof, point] : reaction_dofs[component])
+      sum += forces[dof] * (weight_by < 0 ? 1. : point[weight_by]);
+    return sum;
+  }
+
+
+  template <int dim>
+  double
   Monitors<dim>::reaction() const
   {
-    const ModeState &mode = analysis.mode(0);
-    Vector<double>   residual(mode.internal_forces);
-    residual.add(-analysis.load_factor(), mode.unit_load);
-    analysis.get_element_constraints().condense(residual);
-    double sum = 0;
-    for (const auto dof : reaction_dofs)
-      sum += residual[dof];
-    return sum;
+    using Component              = MonitorParameters::LoadComponent;
+    const Kinematics &kinematics = analysis.get_kinematics();
+    const Component   component  = parameters.load_component;
+    // The mode the resultant comes from (checked to exist when reading).
+    const unsigned int harmonic =
+      (component == Component::x || component == Component::moment) &&
+          kinematics.is_fourier()
+        ? 1
+        : 0;
+    unsigned int m = 0;
+    while (kinematics.harmonic(m) != harmonic)
+      ++m;
+    const ModeState &mode = analysis.mode(m);
+    Vector<double>   f(mode.internal_forces);
+    f.add(-analysis.load_factor(), mode.unit_load);
+    analysis.get_element_constraints().condense(f);
+
+    // Components: 0 x or r, 1 y or z, 2 theta; coordinates 0 x or r,
+    // 1 y or z.
+    if (!kinematics.is_fourier())
+      switch (component)
+        {
+          case Component::x:
+            return boundary_sum(f, 0);
+          case Component::y:
+            return boundary_sum(f, 1);
+          case Component::moment:
+            return boundary_sum(f, 1, 0) - boundary_sum(f, 0, 1);
+          case Component::torque:
+            break; // refused when reading
+        }
+    switch (component)
+      {
+        case Component::x:
+          return boundary_sum(f, 0) - boundary_sum(f, 2);
+        case Component::y:
+          return boundary_sum(f, 1);
+        case Component::moment:
+          return boundary_sum(f, 0, 1) - boundary_sum(f, 2, 1) -
+                 boundary_sum(f, 1, 0);
+        case Component::torque:
+          return boundary_sum(f, 2, 0);
+      }
+    return std::numeric_limits<double>::quiet_NaN();
   }
 
 

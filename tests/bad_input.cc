@@ -319,6 +319,14 @@ namespace
            "Solver/Method=viscoplastic",
            "-s",
            "Solver/Convergence criterion=residual"});
+    check("a torque in plane strain",
+          {"good.prm",
+           "-s",
+           "Monitors/Load measure=reaction",
+           "-s",
+           "Monitors/Load boundary id=1",
+           "-s",
+           "Monitors/Load component=torque"});
     check("the body-load criterion with Newton",
           {"good.prm",
            "-s",
@@ -420,6 +428,14 @@ namespace
            "Kinematics/Harmonics=1, 3",
            "-s",
            "Kinematics/Stations=0, 90, 180"});
+    check("a Fourier reaction from a harmonic the series does not have",
+          {"axis.prm",
+           "-s",
+           "Monitors/Load measure=reaction",
+           "-s",
+           "Monitors/Load boundary id=1",
+           "-s",
+           "Monitors/Load component=torque"});
     check("one Fourier station for harmonics other than 0",
           {"axis.prm", "-s", "Kinematics/Stations=0"});
     check("Fourier stations not equally spaced",

@@ -58,17 +58,35 @@ namespace thinlayer
     stress_integral() const;
 
     /**
-     * The reactions: the residual f_int - f_ext at the supported DoFs of
-     * the load's boundary id, after the residuals of eliminated centre
-     * nodes are handed to their masters.
+     * The resultant of the reactions (MonitorParameters::LoadComponent):
+     * the residual f_int - f_ext at the DoFs of the load's boundary id,
+     * after the residuals of eliminated centre nodes are handed to their
+     * masters. In a Fourier analysis a mode's nodal forces are integrals
+     * over the circle (int f T(n theta) r dtheta), so the whole body's
+     * resultants are sums over the nodes of one mode: the axial force of
+     * harmonic 0 (f_z), the force along theta = 0 of harmonic 1
+     * (f_r - f_theta), its overturning moment (z (f_r - f_theta) - r f_z),
+     * and the torque of the antisymmetric harmonic 0 (r f_theta). Each is
+     * the work of the nodal forces on the rigid motion it belongs to,
+     * which the element represents exactly.
      */
     double
     reaction() const;
 
+    /// The sum over the load boundary's DoFs of component @p component of
+    /// @p forces, each times the support point's coordinate @p weight_by
+    /// (0: x or r, 1: y or z; -1: none).
+    double
+    boundary_sum(const Vector<double> &forces,
+                 const unsigned int    component,
+                 const int             weight_by = -1) const;
+
     const MonitorParameters &parameters;
     const Analysis<dim>     &analysis;
-    /// The load component's DoFs on the load's boundary id.
-    IndexSet reaction_dofs;
+    /// Per component, the DoFs on the load's boundary id and their
+    /// support points.
+    std::vector<std::vector<std::pair<types::global_dof_index, Point<dim>>>>
+      reaction_dofs;
   };
 } // namespace thinlayer
 

@@ -271,13 +271,29 @@ namespace thinlayer
       point
     };
 
+    /// The resultant of the reactions that the reaction measure reports.
+    enum class LoadComponent
+    {
+      /// Along x (Fourier: the direction theta = 0, from harmonic 1).
+      x,
+      /// Along y (Fourier: the axis, from harmonic 0).
+      y,
+      /// Plane strain: about the out-of-plane axis through the origin.
+      /// Fourier: about the horizontal axis through the origin normal to
+      /// theta = 0 (overturning, from harmonic 1).
+      moment,
+      /// Fourier: about the axis (torsion, the antisymmetric harmonic 0).
+      torque
+    };
+
     static const NameTable<LoadMeasure>         load_measure_names;
+    static const NameTable<LoadComponent>       load_component_names;
     static const NameTable<DisplacementMeasure> displacement_measure_names;
 
     LoadMeasure        load_measure;
     double             load_scale;
     types::boundary_id load_boundary_id;
-    unsigned int       load_component;
+    LoadComponent      load_component;
     types::material_id load_material_id;
     /// (i, j) of the averaged stress component.
     std::pair<unsigned int, unsigned int> load_stress_component;
@@ -291,11 +307,16 @@ namespace thinlayer
 
     static void
     declare(ParameterHandler &prm);
-    /// Reactions and stress averages are plane-strain measures so far.
     void
     parse(ParameterHandler           &prm,
           const std::string          &parameter_file,
           const KinematicsParameters &kinematics);
+
+  private:
+    /// An InputError for a reaction component the kinematics cannot give.
+    void
+    check_load_component(const std::string          &parameter_file,
+                         const KinematicsParameters &kinematics) const;
   };
 
 

@@ -5,6 +5,7 @@
 #include <thinlayer/parameter_checks.h>
 #include <thinlayer/parameters.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <regex>
@@ -336,6 +337,13 @@ namespace thinlayer
       {LoadMeasure::reaction, "reaction"},
       {LoadMeasure::stress_average, "stress average"}};
 
+  const NameTable<MonitorParameters::LoadComponent>
+    MonitorParameters::load_component_names = {
+      {LoadComponent::x, "x"},
+      {LoadComponent::y, "y"},
+      {LoadComponent::moment, "moment"},
+      {LoadComponent::torque, "torque"}};
+
   const NameTable<MonitorParameters::DisplacementMeasure>
     MonitorParameters::displacement_measure_names = {
       {DisplacementMeasure::boundary_average, "boundary average"},
@@ -350,10 +358,12 @@ namespace thinlayer
                       "load factor",
                       Patterns::Selection(load_measure_names.pattern()),
                       "What the 'load' column reports: the load factor; "
-                      "the sum of reactions on 'Load boundary id' in "
-                      "'Load component'; or the average of 'Load stress "
-                      "component' over 'Load material id'. Each is "
-                      "multiplied by 'Load scale' (e.g. a length).");
+                      "the resultant of the reactions on 'Load boundary "
+                      "id' ('Load component'); or the average of 'Load "
+                      "stress component' over 'Load material id' (Fourier: "
+                      "over its r-z section at theta = 0, weighted by r). "
+                      "Each is multiplied by 'Load scale' (e.g. a "
+                      "length).");
     prm.declare_entry("Load scale",
                       "1",
                       Patterns::Double(),
@@ -363,10 +373,17 @@ namespace thinlayer
                       "0",
                       Patterns::Integer(0),
                       "Boundary id whose reactions are summed.");
-    prm.declare_entry("Load component",
-                      "y",
-                      Patterns::Selection("x|y"),
-                      "Direction of the summed reactions.");
+    prm.declare_entry(
+      "Load component",
+      "y",
+      Patterns::Selection(load_component_names.pattern()),
+      "The resultant of the reactions. Plane strain (per unit length): x, "
+      "y, or the moment about the out-of-plane axis through the origin. "
+      "Fourier (the whole body): y the axial force (harmonic 0), x the "
+      "force in the direction theta = 0 (harmonic 1), moment the "
+      "overturning moment about the horizontal axis through the origin "
+      "normal to theta = 0 (harmonic 1), torque the moment about the axis "
+      "(the antisymmetric harmonic 0).");
     prm.declare_entry("Load material id",
                       "0",
                       Patterns::Integer(0),
@@ -412,6 +429,42 @@ namespace thinlayer
 
 
   void
+  MonitorParameters::check_load_component(
+    const std::string          &file,
+    const KinematicsParameters &kinematics) const
+  {
+    const std::string component = load_component_names.name(load_component);
+    if (!kinematics.fourier)
+      {
+        if (load_component == LoadComponent::torque)
+          throw InputError(file,
+                           "Monitors/Load component",
+                           "a torque needs Fourier kinematics; in plane "
+                           "strain expected x, y or moment");
+        return;
+      }
+    // The resultant comes from one harmonic of one series: without it the
+    // body carries no such resultant, which is not what was meant.
+    const unsigned int n      = (load_component == LoadComponent::y ||
+                            load_component == LoadComponent::torque)
+                                  ? 0
+                                  : 1;
+    const bool  antisymmetric = (load_component == LoadComponent::torque);
+    const auto &h             = kinematics.harmonics;
+    if (kinematics.antisymmetric != antisymmetric ||
+        std::find(h.begin(), h.end(), n) == h.end())
+      throw InputError(file,
+                       "Monitors/Load component",
+                       "the " + component +
+                         " resultant of Fourier reactions "
+                         "comes from harmonic " +
+                         std::to_string(n) + " of the " +
+                         (antisymmetric ? "antisymmetric" : "symmetric") +
+                         " series, which Kinematics does not have");
+  }
+
+
+  void
   MonitorParameters::parse(ParameterHandler           &prm,
                            const std::string          &file,
                            const KinematicsParameters &kinematics)
@@ -428,12 +481,9 @@ namespace thinlayer
       load_stress_component = {2u, 2u};
     displacement_angle =
       prm.get_double("Displacement angle") * numbers::PI / 180;
-    if (kinematics.fourier && load_measure != LoadMeasure::load_factor)
-      throw InputError(file,
-                       "Monitors/Load measure",
-                       "expected 'load factor' with Fourier kinematics "
-                       "(reactions and stress averages are plane-strain "
-                       "measures so far)");
+    load_component = load_component_names.value(prm.get("Load component"));
+    if (load_measure == LoadMeasure::reaction)
+      check_load_component(file, kinematics);
     displacement_measure =
       displacement_measure_names.value(prm.get("Displacement measure"));
     displacement_point.clear();
@@ -442,7 +492,6 @@ namespace thinlayer
       displacement_point.push_back(std::stod(x));
     load_scale               = prm.get_double("Load scale");
     load_boundary_id         = prm.get_integer("Load boundary id");
-    load_component           = (prm.get("Load component") == "x") ? 0 : 1;
     displacement_boundary_id = prm.get_integer("Displacement boundary id");
     displacement_component = (prm.get("Displacement component") == "x") ? 0 : 1;
     displacement_scale     = prm.get_double("Displacement scale");
