@@ -72,24 +72,27 @@ namespace thinlayer
   {
     /**
      * Cell averages of the point fields: the stresses live at Gauss points
-     * with their plastic history, not at nodes. Stress components at the
-     * first station; the equivalent stress, the equivalent plastic strain
-     * and the yield ratio at every station. The yield ratio is the cell's
-     * maximum, to show where drift into illegal stress space is.
+     * with their plastic history, not at nodes. At every station: the
+     * stress components (the four that plane strain has; all six for
+     * Fourier, where the shear stresses with theta come from the higher
+     * harmonics), the equivalent stress, the equivalent plastic strain and
+     * the yield ratio. The yield ratio is the cell's maximum, to show where
+     * drift into illegal stress space is.
      */
     struct CellFields
     {
       template <int dim>
       explicit CellFields(const Analysis<dim> &analysis);
 
-      /// (i, j) of the four stress components written.
-      static constexpr unsigned int components[4][2] = {{0, 0},
-                                                        {1, 1},
-                                                        {2, 2},
-                                                        {0, 1}};
-      std::vector<Vector<double>>   stress;
-      std::vector<Vector<double>>   equivalent, plastic_strain, yield_ratio;
-      Vector<double>                material;
+      /// (i, j) of the stress components written: plane strain the first
+      /// four (xx, yy, zz, xy), Fourier all six (rr, zz, tt, rz, rt, zt).
+      static constexpr unsigned int components[6][2] =
+        {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
+      unsigned int n_components;
+      /// Per station, per component.
+      std::vector<std::vector<Vector<double>>> stress;
+      std::vector<Vector<double>> equivalent, plastic_strain, yield_ratio;
+      Vector<double>              material;
     };
 
 
@@ -100,7 +103,10 @@ namespace thinlayer
       const unsigned int n_q  = analysis.n_quadrature_points();
       const unsigned int n_cells = tria.n_active_cells();
       const unsigned int n_s     = analysis.get_kinematics().n_stations();
-      stress.assign(4, Vector<double>(n_cells));
+      n_components = analysis.get_kinematics().is_fourier() ? 6 : 4;
+      stress.assign(n_s,
+                    std::vector<Vector<double>>(n_components,
+                                                Vector<double>(n_cells)));
       equivalent.assign(n_s, Vector<double>(n_cells));
       plastic_strain.assign(n_s, Vector<double>(n_cells));
       yield_ratio.assign(n_s, Vector<double>(n_cells));
@@ -117,10 +123,9 @@ namespace thinlayer
               for (unsigned int q = 0; q < n_q; ++q)
                 {
                   const PointState &state = analysis.point_state(c, q, s);
-                  if (s == 0)
-                    for (unsigned int k = 0; k < 4; ++k)
-                      stress[k][c] +=
-                        state.stress[components[k][0]][components[k][1]] / n_q;
+                  for (unsigned int k = 0; k < n_components; ++k)
+                    stress[s][k][c] +=
+                      state.stress[components[k][0]][components[k][1]] / n_q;
                   equivalent[s][c] += equivalent_stress(state.stress) / n_q;
                   // Equivalent plastic strain sqrt(2/3 e:e).
                   plastic_strain[s][c] +=
@@ -153,7 +158,9 @@ namespace thinlayer
       fourier ? std::vector<std::string>{"stress_rr",
                                          "stress_zz",
                                          "stress_tt",
-                                         "stress_rz"}
+                                         "stress_rz",
+                                         "stress_rt",
+                                         "stress_zt"}
               : std::vector<std::string>{"stress_xx",
                                          "stress_yy",
                                          "stress_zz",
@@ -178,14 +185,15 @@ namespace thinlayer
                              displacement_names,
                              DataOut<dim>::type_dof_data,
                              interpretation);
-    for (unsigned int k = 0; k < 4; ++k)
-      data_out.add_data_vector(fields.stress[k], names[k]);
     for (unsigned int s = 0; s < kinematics.n_stations(); ++s)
       {
+        // Fourier fields carry their station's angle in degrees.
         const std::string suffix =
           fourier ? "_" + std::to_string(static_cast<int>(std::round(
                             kinematics.station_angle(s) * 180 / numbers::PI)))
                   : std::string();
+        for (unsigned int k = 0; k < fields.n_components; ++k)
+          data_out.add_data_vector(fields.stress[s][k], names[k] + suffix);
         data_out.add_data_vector(fields.equivalent[s],
                                  "equivalent_stress" + suffix);
         data_out.add_data_vector(fields.plastic_strain[s],

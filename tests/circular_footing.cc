@@ -29,7 +29,7 @@ namespace
     std::ostringstream text;
     text << std::ifstream("results/summary.json").rdbuf();
     const std::string json = text.str();
-    const auto at = json.find("\"collapse_load\": ") + 17;
+    const auto        at   = json.find("\"collapse_load\": ") + 17;
     return std::atof(json.c_str() + at);
   }
 } // namespace
@@ -53,21 +53,19 @@ main()
        {Footing{"smooth", "z", 5.69}, Footing{"rough", "r, z", 6.05}})
     {
       const double classical = footing.classical;
-      double loads[2];
+      double       loads[2];
       for (unsigned int level = 0; level < 2; ++level)
-        loads[level] =
-          collapse_load({std::string(SOURCE_DIR) +
-                           "/../prm/circular-footing-rigid.prm",
-                         "-s",
-                         std::string("Mesh/Geometry parameters=") +
-                           meshes[level],
-                         "-s",
-                         std::string("Boundary 1/Constrained components=") +
-                           footing.constrained,
-                         "-s",
-                         "Output/Directory=results",
-                         "-s",
-                         "Output/Write VTU=false"});
+        loads[level] = collapse_load(
+          {std::string(SOURCE_DIR) + "/../prm/circular-footing-rigid.prm",
+           "-s",
+           std::string("Mesh/Geometry parameters=") + meshes[level],
+           "-s",
+           std::string("Boundary 1/Constrained components=") +
+             footing.constrained,
+           "-s",
+           "Output/Directory=results",
+           "-s",
+           "Output/Write VTU=false"});
       const double error_1 = loads[0] / classical - 1;
       const double error_2 = loads[1] / classical - 1;
       std::printf("%s footing, %.2f c: errors %+.1f%% and %+.1f%%; above "
