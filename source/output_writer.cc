@@ -1,8 +1,10 @@
 #include <deal.II/numerics/data_out.h>
 
+#include <thinlayer/cell_fields.h>
 #include <thinlayer/elasticity.h>
 #include <thinlayer/output_writer.h>
 #include <thinlayer/results_directory.h>
+#include <thinlayer/revolved_view.h>
 #include <thinlayer/text_format.h>
 
 #include <cerrno>
@@ -66,81 +68,6 @@ namespace thinlayer
             << std::flush;
     check_written(history, "history.csv");
   }
-
-
-  namespace
-  {
-    /**
-     * Cell averages of the point fields: the stresses live at Gauss points
-     * with their plastic history, not at nodes. At every station: the
-     * stress components (the four that plane strain has; all six for
-     * Fourier, where the shear stresses with theta come from the higher
-     * harmonics), the equivalent stress, the equivalent plastic strain and
-     * the yield ratio. The yield ratio is the cell's maximum, to show where
-     * drift into illegal stress space is.
-     */
-    struct CellFields
-    {
-      template <int dim>
-      explicit CellFields(const Analysis<dim> &analysis);
-
-      /// (i, j) of the stress components written: plane strain the first
-      /// four (xx, yy, zz, xy), Fourier all six (rr, zz, tt, rz, rt, zt).
-      static constexpr unsigned int components[6][2] =
-        {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
-      unsigned int n_components;
-      /// Per station, per component.
-      std::vector<std::vector<Vector<double>>> stress;
-      std::vector<Vector<double>> equivalent, plastic_strain, yield_ratio;
-      Vector<double>              material;
-    };
-
-
-    template <int dim>
-    CellFields::CellFields(const Analysis<dim> &analysis)
-    {
-      const auto        &tria = analysis.get_dof_handler().get_triangulation();
-      const unsigned int n_q  = analysis.n_quadrature_points();
-      const unsigned int n_cells = tria.n_active_cells();
-      const unsigned int n_s     = analysis.get_kinematics().n_stations();
-      n_components = analysis.get_kinematics().is_fourier() ? 6 : 4;
-      stress.assign(n_s,
-                    std::vector<Vector<double>>(n_components,
-                                                Vector<double>(n_cells)));
-      equivalent.assign(n_s, Vector<double>(n_cells));
-      plastic_strain.assign(n_s, Vector<double>(n_cells));
-      yield_ratio.assign(n_s, Vector<double>(n_cells));
-      material.reinit(n_cells);
-      for (const auto &cell : tria.active_cell_iterators())
-        {
-          const unsigned int c   = cell->active_cell_index();
-          const MaterialLaw &law = analysis.material_law(c);
-          for (unsigned int s = 0; s < n_s; ++s)
-            {
-              yield_ratio[s][c] = law.can_yield()
-                                    ? std::numeric_limits<double>::lowest()
-                                    : std::numeric_limits<double>::quiet_NaN();
-              for (unsigned int q = 0; q < n_q; ++q)
-                {
-                  const PointState &state = analysis.point_state(c, q, s);
-                  for (unsigned int k = 0; k < n_components; ++k)
-                    stress[s][k][c] +=
-                      state.stress[components[k][0]][components[k][1]] / n_q;
-                  equivalent[s][c] += equivalent_stress(state.stress) / n_q;
-                  // Equivalent plastic strain sqrt(2/3 e:e).
-                  plastic_strain[s][c] +=
-                    std::sqrt(2. / 3. *
-                              (state.plastic_strain * state.plastic_strain)) /
-                    n_q;
-                  if (law.can_yield())
-                    yield_ratio[s][c] = std::max(yield_ratio[s][c],
-                                                 law.yield_ratio(state.stress));
-                }
-            }
-          material[c] = cell->material_id();
-        }
-    }
-  } // namespace
 
 
   template <int dim>
@@ -215,6 +142,22 @@ namespace thinlayer
     std::ostringstream pvd;
     DataOutBase::write_pvd_record(pvd, pvd_records);
     write_file("fields.pvd", pvd.str());
+  }
+
+
+  void
+  OutputWriter::write_revolved_view(const unsigned int step,
+                                    const double       load_factor,
+                                    const Analysis<2> &analysis,
+                                    const unsigned int slices)
+  {
+    std::ostringstream name;
+    name << "revolved-" << std::setw(4) << std::setfill('0') << step << ".vtu";
+    write_file(name.str(), revolved_view_vtu(analysis, slices));
+    revolved_records.emplace_back(load_factor, name.str());
+    std::ostringstream pvd;
+    DataOutBase::write_pvd_record(pvd, revolved_records);
+    write_file("revolved.pvd", pvd.str());
   }
 
 

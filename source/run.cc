@@ -286,6 +286,11 @@ namespace thinlayer
                                   a.load_factor,
                                   analysis,
                                   p.monitors.displacement_angle);
+            if (p.output.write_vtu && p.output.view_slices > 0)
+              writer.write_revolved_view(a.step,
+                                         a.load_factor,
+                                         analysis,
+                                         p.output.view_slices);
             writer.write_displacements(analysis, p.monitors.displacement_angle);
           }
       }

@@ -319,6 +319,8 @@ namespace
            "Solver/Method=viscoplastic",
            "-s",
            "Solver/Convergence criterion=residual"});
+    check("a revolved 3D view in plane strain",
+          {"good.prm", "-s", "Output/3D view slices=12"});
     check("a torque in plane strain",
           {"good.prm",
            "-s",

@@ -69,6 +69,17 @@ namespace thinlayer
                  const double         theta);
 
     /**
+     * The body revolved about its axis (revolved_view_vtu(), @p slices
+     * angles) as revolved-NNNN.vtu, and revolved.pvd listing every step so
+     * far.
+     */
+    void
+    write_revolved_view(const unsigned int step,
+                        const double       load_factor,
+                        const Analysis<2> &analysis,
+                        const unsigned int slices);
+
+    /**
      * Vertex positions, displacements and the last step's displacement
      * increments as displacements.csv (x, y, u_x, u_y, du_x, du_y),
      * overwritten every step so that it holds the last one: at a failed
@@ -92,6 +103,7 @@ namespace thinlayer
     unsigned int                                vtu_subdivisions;
     std::ofstream                               history;
     std::vector<std::pair<double, std::string>> pvd_records;
+    std::vector<std::pair<double, std::string>> revolved_records;
   };
 } // namespace thinlayer
 

@@ -357,6 +357,8 @@ namespace thinlayer
     std::string  directory;
     bool         write_vtu;
     unsigned int vtu_subdivisions;
+    /// Fourier: slices of the revolved 3D view over the circle; 0 for none.
+    unsigned int view_slices;
     bool         print_timing;
 
     static void

@@ -185,6 +185,11 @@ namespace thinlayer
       p.reference.parse(prm, file, p.mesh);
       p.sweep.parse(prm, file);
       p.output.parse(prm, file);
+      if (p.output.view_slices > 0 && !p.kinematics.fourier)
+        throw InputError(file,
+                         "Output/3D view slices",
+                         "a revolved view needs Fourier kinematics; expected "
+                         "0 in plane strain");
       return p;
     }
   } // namespace

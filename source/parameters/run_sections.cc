@@ -592,6 +592,14 @@ namespace thinlayer
                       Patterns::Integer(1, 8),
                       "Patches per cell edge in VTU output (2 shows the "
                       "quadratic fields).");
+    prm.declare_entry("3D view slices",
+                      "0",
+                      Patterns::Integer(0, 360),
+                      "Fourier: with Write VTU, also write the body "
+                      "revolved about its axis, swept through this many "
+                      "equal angles over the circle, as revolved-NNNN.vtu "
+                      "(revolved.pvd) for ParaView: the summed displacement "
+                      "and the stations' stresses. 0 for none.");
     prm.declare_entry("Print timing",
                       "true",
                       Patterns::Bool(),
@@ -610,6 +618,7 @@ namespace thinlayer
       throw InputError(file, "Output/Directory", "expected a directory");
     write_vtu        = prm.get_bool("Write VTU");
     vtu_subdivisions = prm.get_integer("VTU subdivisions");
+    view_slices      = prm.get_integer("3D view slices");
     print_timing     = prm.get_bool("Print timing");
     prm.leave_subsection();
   }
