@@ -19,6 +19,8 @@
 
 #include <cstdio>
 
+#include "scene_test_utilities.h"
+
 namespace
 {
   /// The load measure of the scene @p kinematics + @p boundaries +
@@ -46,15 +48,16 @@ namespace
       "subsection Monitors\n"
       "  set Displacement boundary id = 3\n" +
       monitors + "end\n";
-    const thinlayer::Parameters p =
-      thinlayer::ParameterReader().read_from_string(prm, "fourier.prm");
-    const thinlayer::Scene scene(p, std::cout);
-    thinlayer::Analysis<2> analysis(p, scene.triangulation());
-    analysis.setup();
-    analysis.solve(1.0);
-    analysis.accept_step();
-    return thinlayer::Monitors<2>(p.monitors, analysis, p.parameter_file)
-      .load();
+    double load = 0;
+    thinlayer_tests::with_solved_step(
+      prm,
+      "fourier.prm",
+      [&](const thinlayer::Analysis<2> &analysis,
+          const thinlayer::Parameters  &p) {
+        load =
+          thinlayer::Monitors<2>(p.monitors, analysis, p.parameter_file).load();
+      });
+    return load;
   }
 
   void

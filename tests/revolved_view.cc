@@ -21,6 +21,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "scene_test_utilities.h"
+
 namespace
 {
   thinlayer::RevolvedView
@@ -40,14 +42,15 @@ namespace
       "end\n" +
       boundaries +
       "subsection Monitors\n  set Displacement boundary id = 3\nend\n";
-    const thinlayer::Parameters p =
-      thinlayer::ParameterReader().read_from_string(prm, "view.prm");
-    const thinlayer::Scene scene(p, std::cout);
-    thinlayer::Analysis<2> analysis(p, scene.triangulation());
-    analysis.setup();
-    analysis.solve(1.0);
-    analysis.accept_step();
-    return thinlayer::revolved_view(analysis, slices);
+    thinlayer::RevolvedView view;
+    thinlayer_tests::with_solved_step(
+      prm,
+      "view.prm",
+      [&](const thinlayer::Analysis<2> &analysis,
+          const thinlayer::Parameters &) {
+        view = thinlayer::revolved_view(analysis, slices);
+      });
+    return view;
   }
 } // namespace
 
