@@ -31,23 +31,7 @@ namespace
           const std::string &monitors)
   {
     const std::string prm =
-      "subsection Mesh\n"
-      "  set File = " SOURCE_DIR "/../meshes/block.geo\n"
-      "  set Geometry parameters = width=1, height=2, nx=3, ny=4\n"
-      "end\n"
-      "subsection Kinematics\n"
-      "  set Type = fourier\n"
-      "  set Axis boundary id = 4\n" +
-      kinematics +
-      "end\n"
-      "subsection Material 1\n"
-      "  set Young's modulus = 1000\n"
-      "  set Poisson's ratio = 0.3\n"
-      "end\n" +
-      boundaries +
-      "subsection Monitors\n"
-      "  set Displacement boundary id = 3\n" +
-      monitors + "end\n";
+      thinlayer_tests::elastic_cylinder(kinematics, boundaries, monitors);
     double load = 0;
     thinlayer_tests::with_solved_step(
       prm,

@@ -28,20 +28,8 @@ namespace
   thinlayer::RevolvedView
   view_of(const std::string &boundaries, const unsigned int slices)
   {
-    const std::string prm =
-      "subsection Mesh\n"
-      "  set File = " SOURCE_DIR "/../meshes/block.geo\n"
-      "  set Geometry parameters = width=1, height=2, nx=3, ny=4\n"
-      "end\n"
-      "subsection Kinematics\n"
-      "  set Type = fourier\n  set Harmonics = 1\n"
-      "  set Stations = 0, 90, 180\n  set Axis boundary id = 4\n"
-      "end\n"
-      "subsection Material 1\n"
-      "  set Young's modulus = 1000\n  set Poisson's ratio = 0.3\n"
-      "end\n" +
-      boundaries +
-      "subsection Monitors\n  set Displacement boundary id = 3\nend\n";
+    const std::string prm = thinlayer_tests::elastic_cylinder(
+      "  set Harmonics = 1\n  set Stations = 0, 90, 180\n", boundaries);
     thinlayer::RevolvedView view;
     thinlayer_tests::with_solved_step(
       prm,
