@@ -216,13 +216,6 @@ namespace thinlayer
   }
 
 
-  const std::string &
-  OutputWriter::get_directory() const
-  {
-    return directory;
-  }
-
-
   template void
   OutputWriter::write_displacements(const Analysis<2> &, const double) const;
 

@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -82,16 +81,32 @@ namespace thinlayer
       const auto is_quad = [](const int type) {
         return type == 3 || type == 10 || type == 16;
       };
-      const auto check = [](std::istringstream &nodes, const int element) {
-        std::vector<long> corners(4);
-        for (auto &c : corners)
-          nodes >> c;
-        for (unsigned int i = 0; i < 4; ++i)
-          for (unsigned int j = i + 1; j < 4; ++j)
-            if (corners[i] == corners[j])
-              return "element " + std::to_string(element) +
-                     " (gmsh's numbering) names node " +
-                     std::to_string(corners[i]) + " twice among its corners";
+      // The first repeated corner among the next n element lines; their
+      // type from the line (format 2: "id type n_tags tags... nodes") or,
+      // given, for the whole block (format 4: "id nodes").
+      const auto scan = [&](const long n, const int block_type) {
+        for (long k = 0; k < n && std::getline(in, line); ++k)
+          {
+            std::istringstream fields(line);
+            int                element, type = block_type, n_tags = 0, tag;
+            fields >> element;
+            if (block_type < 0)
+              fields >> type >> n_tags;
+            for (int t = 0; t < n_tags; ++t)
+              fields >> tag;
+            if (!is_quad(type))
+              continue;
+            std::vector<long> corners(4);
+            for (auto &c : corners)
+              fields >> c;
+            for (unsigned int i = 0; i < 4; ++i)
+              for (unsigned int j = i + 1; j < 4; ++j)
+                if (corners[i] == corners[j])
+                  return "element " + std::to_string(element) +
+                         " (gmsh's numbering) names node " +
+                         std::to_string(corners[i]) +
+                         " twice among its corners";
+          }
         return std::string();
       };
       if (version < 4)
@@ -99,19 +114,7 @@ namespace thinlayer
           long n = 0;
           in >> n;
           std::getline(in, line);
-          for (long k = 0; k < n && std::getline(in, line); ++k)
-            {
-              std::istringstream fields(line);
-              int                element, type, n_tags, tag;
-              fields >> element >> type >> n_tags;
-              for (int t = 0; t < n_tags; ++t)
-                fields >> tag;
-              if (is_quad(type))
-                if (const std::string found = check(fields, element);
-                    !found.empty())
-                  return found;
-            }
-          return "";
+          return scan(n, -1);
         }
       long n_blocks = 0, n_elements, min_tag, max_tag;
       in >> n_blocks >> n_elements >> min_tag >> max_tag;
@@ -121,16 +124,8 @@ namespace thinlayer
           long n = 0;
           in >> entity_dim >> entity >> type >> n;
           std::getline(in, line);
-          for (long k = 0; k < n && std::getline(in, line); ++k)
-            {
-              std::istringstream fields(line);
-              int                element;
-              fields >> element;
-              if (is_quad(type))
-                if (const std::string found = check(fields, element);
-                    !found.empty())
-                  return found;
-            }
+          if (const std::string found = scan(n, type); !found.empty())
+            return found;
         }
       return "";
     }

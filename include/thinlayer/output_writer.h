@@ -95,8 +95,6 @@ namespace thinlayer
     void
     write_file(const std::string &name, const std::string &content) const;
 
-    const std::string &
-    get_directory() const;
 
   private:
     std::string                                 directory;
