@@ -272,15 +272,28 @@ namespace thinlayer
           }
         catch (const std::exception &)
           {
+            const std::string matrix =
+              "the stiffness matrix" +
+              (kinematics.is_fourier()
+                 ? " of harmonic " + std::to_string(kinematics.harmonic(m))
+                 : std::string()) +
+              " is singular: ";
+            // Q9 with 2x2 points has zero-energy modes of its own, which
+            // few cells do not suppress: name the element, not the supports.
+            if (!parameters.discretisation.serendipity &&
+                parameters.discretisation.gauss_points_per_direction == 2)
+              throw InputError(parameters.parameter_file,
+                               "Discretisation/Element",
+                               matrix +
+                                 "Q9 with 2x2 Gauss points has spurious "
+                                 "zero-energy modes that this mesh does not "
+                                 "suppress; use Q8, or 3x3 points (or "
+                                 "constrain enough components)");
             throw InputError(parameters.parameter_file,
                              "Boundary <id>/Constrained components",
-                             "the stiffness matrix" +
-                               (kinematics.is_fourier()
-                                  ? " of harmonic " +
-                                      std::to_string(kinematics.harmonic(m))
-                                  : std::string()) +
-                               " is singular: constrain enough displacement "
-                               "components to prevent rigid-body motion");
+                             matrix +
+                               "constrain enough displacement components to "
+                               "prevent rigid-body motion");
           }
       }
 

@@ -207,6 +207,26 @@ namespace
                 "subsection Discretisation\n  set Element = Q4\nend\n"));
     check("an element that does not exist", {"element.prm"});
 
+    // One row of cells under Fourier kinematics, held only axially: Q8
+    // solves it (tests/fourier_cylinder_plastic.prm), Q9 with 2x2 points
+    // is singular.
+    write("q9-reduced.prm",
+          "subsection Mesh\n  set File = " + std::string(SOURCE_DIR) +
+            "/../meshes/block.geo\n  set Geometry parameters = x0=1, "
+            "height=0.25, nx=8, ny=1\nend\n"
+            "subsection Kinematics\n  set Type = fourier\n  set Harmonics "
+            "= 0\nend\n"
+            "subsection Discretisation\n  set Element = Q9\nend\n"
+            "subsection Material 1\nend\n"
+            "subsection Boundary 1\n  set Constrained components = z\nend\n"
+            "subsection Boundary 3\n  set Constrained components = z\nend\n"
+            "subsection Boundary 4\n  set Pressure = 1\nend\n"
+            "subsection Monitors\n  set Displacement boundary id = 4\nend\n"
+            "subsection Output\n  set Directory = results\nend\n");
+    check("Q9 with 2x2 points on a mesh too coarse to suppress its "
+          "zero-energy modes",
+          {"q9-reduced.prm"});
+
     write("increments.prm",
           scene("good.geo",
                 "",

@@ -288,8 +288,11 @@ namespace thinlayer
                       "Q8",
                       Patterns::Selection("Q8|Q9"),
                       "Q8: 8-node serendipity quadrilateral (a Q2 element "
-                      "whose centre node is constrained); Q9: Lagrangian "
-                      "9-node quadrilateral.");
+                      "whose centre node is constrained), the paper's; Q9: "
+                      "Lagrangian 9-node quadrilateral, a refinement level "
+                      "ahead of Q8 on rigid circular footings but, with 2x2 "
+                      "points, singular on meshes of few cells (spurious "
+                      "zero-energy modes).");
     prm.declare_entry("Gauss points per direction",
                       "2",
                       Patterns::Integer(2, 3),
