@@ -7,6 +7,8 @@
 //   block_height      height of each block at its shortest side
 //   elements_along    elements along the interface (and across the column)
 //   elements_block    elements up each block
+//   x0                x of the column's left side (default 0; off the axis
+//                     when the column is revolved as a hollow cylinder)
 //
 // Physical groups:
 //   surface 1 "block"      the column above and below the interface
@@ -18,7 +20,8 @@ DefineConstant[
   aspect_ratio   = {10, Name "Parameters/aspect_ratio"},
   block_height   = {1, Name "Parameters/block_height"},
   elements_along = {8, Name "Parameters/elements_along"},
-  elements_block = {8, Name "Parameters/elements_block"}
+  elements_block = {8, Name "Parameters/elements_block"},
+  x0             = {0, Name "Parameters/x0"}
 ];
 
 a  = alpha * Pi / 180;
@@ -28,14 +31,14 @@ tv = t / Cos(a);              // its vertical extent
 rise = Tan(a);                // vertical rise of the band across the column
 H  = 2 * block_height + tv + rise;
 
-Point(1) = {0, 0, 0};
-Point(2) = {1, 0, 0};
-Point(3) = {1, block_height + rise, 0};
-Point(4) = {0, block_height, 0};
-Point(5) = {0, block_height + tv, 0};
-Point(6) = {1, block_height + tv + rise, 0};
-Point(7) = {0, H, 0};
-Point(8) = {1, H, 0};
+Point(1) = {x0 + 0, 0, 0};
+Point(2) = {x0 + 1, 0, 0};
+Point(3) = {x0 + 1, block_height + rise, 0};
+Point(4) = {x0 + 0, block_height, 0};
+Point(5) = {x0 + 0, block_height + tv, 0};
+Point(6) = {x0 + 1, block_height + tv + rise, 0};
+Point(7) = {x0 + 0, H, 0};
+Point(8) = {x0 + 1, H, 0};
 
 Line(1)  = {1, 2};   // bottom
 Line(2)  = {2, 3};

@@ -70,13 +70,14 @@ namespace thinlayer
   }
 
 
-  template <int dim>
   void
-  OutputWriter::write_fields(const unsigned int   step,
-                             const double         load_factor,
-                             const Analysis<dim> &analysis,
-                             const double         theta)
+  OutputWriter::write_fields(const unsigned int                   step,
+                             const double                         load_factor,
+                             const Analysis<2>                   &analysis,
+                             const double                         theta,
+                             const std::vector<InterfaceProfile> &interfaces)
   {
+    constexpr int                  dim         = 2;
     const auto                    &dof_handler = analysis.get_dof_handler();
     const Kinematics              &kinematics  = analysis.get_kinematics();
     const bool                     fourier     = kinematics.is_fourier();
@@ -126,6 +127,22 @@ namespace thinlayer
         data_out.add_data_vector(fields.plastic_strain[s],
                                  "plastic_strain" + suffix);
         data_out.add_data_vector(fields.yield_ratio[s], "yield_ratio" + suffix);
+        // Every layer's cells in one field per quantity.
+        if (!interfaces.empty())
+          {
+            std::vector<Vector<double>> layers =
+              interfaces[0].cell_fields(analysis, s);
+            for (unsigned int i = 1; i < interfaces.size(); ++i)
+              {
+                const auto more = interfaces[i].cell_fields(analysis, s);
+                for (unsigned int k = 0; k < layers.size(); ++k)
+                  layers[k] += more[k];
+              }
+            for (unsigned int k = 0; k < layers.size(); ++k)
+              data_out.add_data_vector(layers[k],
+                                       InterfaceProfile::cell_field_names[k] +
+                                         suffix);
+          }
       }
     data_out.add_data_vector(fields.material, "material_id");
     data_out.build_patches(analysis.get_mapping(),
@@ -142,6 +159,22 @@ namespace thinlayer
     std::ostringstream pvd;
     DataOutBase::write_pvd_record(pvd, pvd_records);
     write_file("fields.pvd", pvd.str());
+  }
+
+
+  void
+  OutputWriter::write_interface_profiles(
+    const unsigned int                   step,
+    const Analysis<2>                   &analysis,
+    const std::vector<InterfaceProfile> &interfaces)
+  {
+    for (const InterfaceProfile &interface : interfaces)
+      {
+        std::ostringstream name;
+        name << "interface-" << static_cast<int>(interface.get_material_id())
+             << '-' << std::setw(4) << std::setfill('0') << step << ".csv";
+        write_file(name.str(), interface.csv(analysis));
+      }
   }
 
 
@@ -218,10 +251,4 @@ namespace thinlayer
 
   template void
   OutputWriter::write_displacements(const Analysis<2> &, const double) const;
-
-  template void
-  OutputWriter::write_fields(const unsigned int,
-                             const double,
-                             const Analysis<2> &,
-                             const double);
 } // namespace thinlayer

@@ -1,6 +1,7 @@
 #include <deal.II/base/timer.h>
 
 #include <thinlayer/analysis.h>
+#include <thinlayer/interface_profile.h>
 #include <thinlayer/interruption.h>
 #include <thinlayer/load_stepping.h>
 #include <thinlayer/monitors.h>
@@ -108,15 +109,17 @@ namespace thinlayer
     class Programme
     {
     public:
-      Programme(const Parameters  &p,
-                Analysis<2>       &analysis,
-                const Monitors<2> &monitors,
-                OutputWriter      &writer,
-                TimerOutput       &timer,
-                std::ostream      &out)
+      Programme(const Parameters                    &p,
+                Analysis<2>                         &analysis,
+                const Monitors<2>                   &monitors,
+                const std::vector<InterfaceProfile> &interfaces,
+                OutputWriter                        &writer,
+                TimerOutput                         &timer,
+                std::ostream                        &out)
         : p(p)
         , analysis(analysis)
         , monitors(monitors)
+        , interfaces(interfaces)
         , writer(writer)
         , timer(timer)
         , out(out)
@@ -164,13 +167,14 @@ namespace thinlayer
       void
       probe_beyond(const Attempt &failed);
 
-      const Parameters  &p;
-      Analysis<2>       &analysis;
-      const Monitors<2> &monitors;
-      OutputWriter      &writer;
-      TimerOutput       &timer;
-      std::ostream      &out;
-      ProgrammeResult    result;
+      const Parameters                    &p;
+      Analysis<2>                         &analysis;
+      const Monitors<2>                   &monitors;
+      const std::vector<InterfaceProfile> &interfaces;
+      OutputWriter                        &writer;
+      TimerOutput                         &timer;
+      std::ostream                        &out;
+      ProgrammeResult                      result;
     };
 
 
@@ -285,13 +289,15 @@ namespace thinlayer
               writer.write_fields(a.step,
                                   a.load_factor,
                                   analysis,
-                                  p.monitors.displacement_angle);
+                                  p.monitors.displacement_angle,
+                                  interfaces);
             if (p.output.write_vtu && p.output.view_slices > 0)
               writer.write_revolved_view(a.step,
                                          a.load_factor,
                                          analysis,
                                          p.output.view_slices);
             writer.write_displacements(analysis, p.monitors.displacement_angle);
+            writer.write_interface_profiles(a.step, analysis, interfaces);
           }
       }
       print_attempt(a.step,
@@ -435,6 +441,9 @@ namespace thinlayer
         analysis.setup();
       }
       const Monitors<2> monitors(p.monitors, analysis, p.parameter_file);
+      std::vector<InterfaceProfile> interfaces;
+      for (const types::material_id id : p.interfaces.material_ids)
+        interfaces.emplace_back(analysis, id, p.parameter_file);
 
       RunSummary summary;
       describe_model(p, scene, analysis, summary);
@@ -447,7 +456,7 @@ namespace thinlayer
       print_model(p, scene, analysis, summary.warnings, out);
 
       const ProgrammeResult run =
-        Programme(p, analysis, monitors, writer, timer, out).run();
+        Programme(p, analysis, monitors, interfaces, writer, timer, out).run();
 
       judge_outcome(analysis, run, summary);
       summary.converged           = run.converged;

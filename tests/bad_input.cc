@@ -227,6 +227,18 @@ namespace
           "zero-energy modes",
           {"q9-reduced.prm"});
 
+    write("interface-id.prm",
+          scene("good.geo",
+                "",
+                "subsection Interfaces\n  set Material ids = 7\nend\n"));
+    check("an interface with no Material section", {"interface-id.prm"});
+
+    write("interface-thick.prm",
+          scene("good.geo",
+                "",
+                "subsection Interfaces\n  set Material ids = 1\nend\n"));
+    check("an interface more than one cell thick", {"interface-thick.prm"});
+
     write("increments.prm",
           scene("good.geo",
                 "",

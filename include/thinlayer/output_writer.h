@@ -4,6 +4,7 @@
 #include <deal.II/base/data_out_base.h>
 
 #include <thinlayer/analysis.h>
+#include <thinlayer/interface_profile.h>
 #include <thinlayer/monitors.h>
 #include <thinlayer/parameters.h>
 #include <thinlayer/solution_method.h>
@@ -59,14 +60,24 @@ namespace thinlayer
     /**
      * The fields of load step @p step as fields-NNNN.vtu, and fields.pvd
      * listing every step so far. For Fourier kinematics the displacement
-     * is the one in the cut at angle @p theta.
+     * is the one in the cut at angle @p theta. The profiles of
+     * @p interfaces add their cell fields (zero off the layers).
      */
-    template <int dim>
     void
-    write_fields(const unsigned int   step,
-                 const double         load_factor,
-                 const Analysis<dim> &analysis,
-                 const double         theta);
+    write_fields(const unsigned int                   step,
+                 const double                         load_factor,
+                 const Analysis<2>                   &analysis,
+                 const double                         theta,
+                 const std::vector<InterfaceProfile> &interfaces);
+
+    /**
+     * The profile of every one of @p interfaces at load step @p step, as
+     * interface-<id>-NNNN.csv (InterfaceProfile::csv()).
+     */
+    void
+    write_interface_profiles(const unsigned int                   step,
+                             const Analysis<2>                   &analysis,
+                             const std::vector<InterfaceProfile> &interfaces);
 
     /**
      * The body revolved about its axis (revolved_view_vtu(), @p slices

@@ -8,6 +8,7 @@
 
 #include <iosfwd>
 #include <map>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -87,6 +88,22 @@ namespace thinlayer
     declare(ParameterHandler &prm);
     void
     parse(ParameterHandler &prm);
+  };
+
+
+  /// "Interfaces": the thin layers whose profile a run reports.
+  struct InterfaceParameters
+  {
+    /// Material ids of thin layers (one cell thick).
+    std::vector<types::material_id> material_ids;
+
+    static void
+    declare(ParameterHandler &prm);
+    /// Every id must have its Material section (@p materials).
+    void
+    parse(ParameterHandler                   &prm,
+          const std::string                  &parameter_file,
+          const std::set<types::material_id> &materials);
   };
 
 
@@ -384,6 +401,7 @@ namespace thinlayer
     MeshParameters                                   mesh;
     KinematicsParameters                             kinematics;
     DiscretisationParameters                         discretisation;
+    InterfaceParameters                              interfaces;
     std::map<types::material_id, MaterialParameters> materials;
     std::map<types::boundary_id, BoundaryParameters> boundaries;
     LoadingParameters                                loading;

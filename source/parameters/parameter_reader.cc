@@ -139,6 +139,7 @@ namespace thinlayer
       MeshParameters::declare(prm);
       KinematicsParameters::declare(prm);
       DiscretisationParameters::declare(prm);
+      InterfaceParameters::declare(prm);
       LoadingParameters::declare(prm);
       SolverParameters::declare(prm);
       MonitorParameters::declare(prm);
@@ -170,8 +171,13 @@ namespace thinlayer
                          "Material <id>",
                          "expected at least one 'subsection Material <id>' "
                          "for the physical surfaces of the mesh");
+      std::set<types::material_id> materials;
       for (const auto id : material_ids)
-        p.materials[id].parse(prm, file, id);
+        {
+          p.materials[id].parse(prm, file, id);
+          materials.insert(id);
+        }
+      p.interfaces.parse(prm, file, materials);
       for (const auto id : boundary_ids)
         p.boundaries[id].parse(prm, file, id, p.kinematics, p.mesh);
       p.loading.parse(prm, file);
