@@ -32,6 +32,7 @@ if [ "$which" = case2 ] || [ "$which" = all ]; then
   for scene in case2-strip-footing case2-strip-footing-better-mesh; do
     "$thinlayer" prm/$scene.prm
     $plot scripts/plot_scene.py output/$scene "L C_w"
+    $plot scripts/plot_interface.py output/$scene
   done
   "$thinlayer" prm/case2-study.prm
   $plot scripts/plot_study.py output/case2-study aspect_ratio
@@ -41,6 +42,7 @@ if [ "$which" = case3 ] || [ "$which" = all ]; then
   for scene in case3-circular-footing case3-circular-footing-better-mesh; do
     "$thinlayer" prm/$scene.prm
     $plot scripts/plot_scene.py output/$scene "pi R^2 C_w"
+    $plot scripts/plot_interface.py output/$scene
   done
   "$thinlayer" prm/case3-study.prm
   $plot scripts/plot_study.py output/case3-study Kinematics/Stations
@@ -49,6 +51,8 @@ fi
 if [ "$which" = case4 ] || [ "$which" = all ]; then
   "$thinlayer" prm/case4-smooth-wall.prm
   "$thinlayer" prm/case4-rough-wall.prm
+  $plot scripts/plot_interface.py output/case4-smooth-wall
+  $plot scripts/plot_interface.py output/case4-rough-wall
   "$thinlayer" prm/case4-figure12.prm
   $plot scripts/plot_case4.py output/case4-smooth-wall output/case4-figure12
   "$thinlayer" prm/case4-study.prm
