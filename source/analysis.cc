@@ -137,6 +137,13 @@ namespace thinlayer
                                         modes[m]->constraints,
                                         /*keep_constrained_dofs=*/true);
       }
+    interface_elements.reinit(dof_handler,
+                              mapping,
+                              kinematics,
+                              parameters.interface_curves,
+                              parameters.parameter_file);
+    for (unsigned int m = 0; m < kinematics.n_modes(); ++m)
+      interface_elements.add_sparsity(dsp, modes[m]->constraints);
     sparsity.copy_from(dsp);
   }
 
@@ -254,6 +261,11 @@ namespace thinlayer
           modes[m]->constraints.distribute_local_to_global(
             cell_matrix, dofs, modes[m]->condensed_stiffness);
         }
+    for (unsigned int m = 0; m < kinematics.n_modes(); ++m)
+      interface_elements.assemble_elastic(m,
+                                          modes[m]->stiffness,
+                                          modes[m]->condensed_stiffness,
+                                          modes[m]->constraints);
   }
 
 
@@ -343,7 +355,14 @@ namespace thinlayer
                 : std::max(result.max_yield_ratio,
                            law.yield_ratio(state.stress));
       }
+    const double interface_ratio = interface_elements.max_yield_ratio();
+    if (!std::isnan(interface_ratio))
+      result.max_yield_ratio =
+        std::isnan(result.max_yield_ratio)
+          ? interface_ratio
+          : std::max(result.max_yield_ratio, interface_ratio);
     point_loop.compute_internal_forces(modes);
+    interface_elements.add_internal_forces(modes);
     return result;
   }
 
@@ -372,6 +391,7 @@ namespace thinlayer
           state.step_plastic_strain    = 0;
           state.pending_plastic_strain = 0;
         }
+    interface_elements.accept();
     accepted_lambda = load_factor;
     current_lambda  = load_factor;
     pending         = false;
@@ -392,9 +412,11 @@ namespace thinlayer
           state.step_plastic_strain    = 0;
           state.pending_plastic_strain = 0;
         }
+    interface_elements.reject();
     current_lambda = accepted_lambda;
     pending        = false;
     point_loop.compute_internal_forces(modes);
+    interface_elements.add_internal_forces(modes);
     method->state_rejected();
   }
 
@@ -427,7 +449,8 @@ namespace thinlayer
   unsigned int
   Analysis<dim>::update_viscoplastic_stresses()
   {
-    return point_loop.viscoplastic_update(time_step, modes);
+    return point_loop.viscoplastic_update(time_step, modes) +
+           interface_elements.viscoplastic_update(modes);
   }
 
 
@@ -437,7 +460,12 @@ namespace thinlayer
                                    std::vector<SymmetricTensor<4, 3>> *tangents)
   {
     ResidualNorms norms{
-      point_loop.return_mapping_update(modes, tangents), 0, 0, 0, 0};
+      point_loop.return_mapping_update(modes, tangents) +
+        interface_elements.return_mapping_update(modes, tangents != nullptr),
+      0,
+      0,
+      0,
+      0};
     for (auto &mode : modes)
       {
         Vector<double> &r = mode->residual;
@@ -540,6 +568,14 @@ namespace thinlayer
 
 
   template <int dim>
+  const std::vector<std::unique_ptr<ModeState>> &
+  Analysis<dim>::get_modes() const
+  {
+    return modes;
+  }
+
+
+  template <int dim>
   double
   Analysis<dim>::viscoplastic_time_step() const
   {
@@ -551,7 +587,7 @@ namespace thinlayer
   bool
   Analysis<dim>::all_laws_associated() const
   {
-    bool associated = true;
+    bool associated = interface_elements.all_associated();
     for (const auto &[id, law] : laws)
       associated = associated && law->is_associated();
     return associated;
@@ -683,6 +719,22 @@ namespace thinlayer
   Analysis<dim>::substitution_seconds() const
   {
     return substitution_time;
+  }
+
+
+  template <int dim>
+  const ZeroThicknessElements &
+  Analysis<dim>::get_interface_elements() const
+  {
+    return interface_elements;
+  }
+
+
+  template <int dim>
+  bool
+  Analysis<dim>::is_pending() const
+  {
+    return pending;
   }
 
 

@@ -298,35 +298,14 @@ namespace thinlayer
   std::string
   InterfaceProfile::csv(const Analysis<2> &analysis) const
   {
-    const Kinematics  &kinematics = analysis.get_kinematics();
-    const auto         number     = text_format::csv_number;
-    std::ostringstream out;
-    out << "run,arc_length,x,y,angle,slip,slip_out_of_plane,opening,"
-           "slip_increment,opening_increment,shear_traction,"
-           "shear_traction_out_of_plane,normal_traction,yield_ratio,"
-           "plastic\n";
-    for (unsigned int station = 0; station < kinematics.n_stations(); ++station)
-      {
-        const double angle =
-          kinematics.station_angle(station) * 180 / numbers::PI;
-        const std::vector<InterfaceValues> values = evaluate(analysis, station);
-        for (unsigned int k = 0; k < samples.size(); ++k)
-          {
-            const Sample          &s = samples[k];
-            const InterfaceValues &v = values[k];
-            out << s.run << ',' << number(s.arc_length) << ','
-                << number(s.position[0]) << ',' << number(s.position[1]) << ','
-                << number(angle) << ',' << number(v.slip) << ','
-                << number(v.slip_out_of_plane) << ',' << number(v.opening)
-                << ',' << number(v.slip_increment) << ','
-                << number(v.opening_increment) << ','
-                << number(v.shear_traction) << ','
-                << number(v.shear_traction_out_of_plane) << ','
-                << number(v.normal_traction) << ',' << number(v.yield_ratio)
-                << ',' << (v.plastic ? 1 : 0) << '\n';
-          }
-      }
-    return out.str();
+    std::vector<ProfileSample> where;
+    for (const Sample &s : samples)
+      where.push_back({s.run, s.arc_length, s.position});
+    return profile_csv(where,
+                       analysis.get_kinematics(),
+                       [&](const unsigned int station) {
+                         return evaluate(analysis, station);
+                       });
   }
 
 

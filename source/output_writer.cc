@@ -175,6 +175,17 @@ namespace thinlayer
              << '-' << std::setw(4) << std::setfill('0') << step << ".csv";
         write_file(name.str(), interface.csv(analysis));
       }
+    const ZeroThicknessElements &elements = analysis.get_interface_elements();
+    for (const types::boundary_id curve : elements.curve_ids())
+      {
+        std::ostringstream name;
+        name << "interface-curve-" << static_cast<int>(curve) << '-'
+             << std::setw(4) << std::setfill('0') << step << ".csv";
+        write_file(name.str(),
+                   elements.csv(curve,
+                                analysis.get_modes(),
+                                analysis.is_pending()));
+      }
   }
 
 

@@ -3,6 +3,7 @@
 #include <thinlayer/file_utilities.h>
 #include <thinlayer/gmsh_process.h>
 #include <thinlayer/input_error.h>
+#include <thinlayer/mesh_splitting.h>
 #include <thinlayer/scene.h>
 
 #include <algorithm>
@@ -226,6 +227,13 @@ namespace thinlayer
                        repeated +
                          ": expected a quadrilateral with four distinct "
                          "corners");
+    if (!p.interface_curves.empty())
+      {
+        std::set<unsigned int> curves;
+        for (const auto &[id, curve] : p.interface_curves)
+          curves.insert(id);
+        msh = split_along_curves(msh, curves, p.mesh.file);
+      }
     try
       {
         GridIn<2> grid_in;

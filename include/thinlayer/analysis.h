@@ -20,6 +20,7 @@
 #include <thinlayer/point_loop.h>
 #include <thinlayer/solution_method.h>
 #include <thinlayer/strain_operator.h>
+#include <thinlayer/zero_thickness_elements.h>
 
 #include <map>
 #include <memory>
@@ -155,6 +156,9 @@ namespace thinlayer
     std::vector<std::unique_ptr<ModeState>> &
     get_modes();
 
+    const std::vector<std::unique_ptr<ModeState>> &
+    get_modes() const;
+
     /**
      * The paper's point rule at every point and station for the modes'
      * step increments (PointLoop::viscoplastic_update()). Returns the
@@ -197,6 +201,16 @@ namespace thinlayer
 
     PointLoop &
     get_point_loop();
+
+    /// The zero-thickness interface elements (none unless the scene has
+    /// Interface curve sections).
+    const ZeroThicknessElements &
+    get_interface_elements() const;
+
+    /// Whether the current state is a pending step (solution plus
+    /// step_increment) rather than the accepted one.
+    bool
+    is_pending() const;
 
     /// @}
 
@@ -310,6 +324,7 @@ namespace thinlayer
                                 history_storage;
     std::vector<PointHistory *> history;
     PointLoop                   point_loop;
+    ZeroThicknessElements       interface_elements;
 
     /// The component of every DoF.
     std::vector<unsigned int> dof_component;

@@ -72,7 +72,8 @@ namespace thinlayer
 
     /**
      * The profile of every one of @p interfaces at load step @p step, as
-     * interface-<id>-NNNN.csv (InterfaceProfile::csv()).
+     * interface-<id>-NNNN.csv (InterfaceProfile::csv()), and of every curve
+     * of zero-thickness elements as interface-curve-<id>-NNNN.csv.
      */
     void
     write_interface_profiles(const unsigned int                   step,

@@ -146,6 +146,54 @@ namespace thinlayer
 
 
   /**
+   * "Interface curve <id>", one per gmsh physical curve that carries
+   * zero-thickness (Goodman-type) interface elements: the mesh is split
+   * along the curve when read, and each pair of facing cell sides is
+   * coupled by an InterfaceLaw.
+   */
+  struct InterfaceCurveParameters
+  {
+    enum class Criterion
+    {
+      elastic,
+      tresca,
+      mohr_coulomb
+    };
+    enum class Integration
+    {
+      gauss,
+      lobatto
+    };
+    static const NameTable<Criterion>   criterion_names;
+    static const NameTable<Integration> integration_names;
+
+    std::string name;
+    /// k_n and k_s, traction per unit relative displacement.
+    double    normal_stiffness;
+    double    shear_stiffness;
+    Criterion criterion;
+    /// c (adhesion), phi and psi (degrees), and the tension cut-off T
+    /// (infinity for none).
+    double      adhesion;
+    double      friction_angle;
+    double      dilation_angle;
+    double      tensile_strength;
+    Integration integration;
+    /// Points per cell side: Gauss 2 or 3; Lobatto 3 (the side's nodes).
+    unsigned int points;
+
+    static std::string
+    section(const unsigned int id);
+    static void
+    declare(ParameterHandler &prm, const unsigned int id);
+    void
+    parse(ParameterHandler  &prm,
+          const std::string &parameter_file,
+          const unsigned int id);
+  };
+
+
+  /**
    * "Boundary <id>", one per boundary id (a gmsh physical curve).
    * Prescribed displacements, tractions and pressures are all given per
    * unit load factor, so that one load programme scales all of them
@@ -404,12 +452,14 @@ namespace thinlayer
     InterfaceParameters                              interfaces;
     std::map<types::material_id, MaterialParameters> materials;
     std::map<types::boundary_id, BoundaryParameters> boundaries;
-    LoadingParameters                                loading;
-    SolverParameters                                 solver;
-    MonitorParameters                                monitors;
-    ReferenceParameters                              reference;
-    SweepParameters                                  sweep;
-    OutputParameters                                 output;
+    /// Physical curves of zero-thickness interface elements.
+    std::map<types::boundary_id, InterfaceCurveParameters> interface_curves;
+    LoadingParameters                                      loading;
+    SolverParameters                                       solver;
+    MonitorParameters                                      monitors;
+    ReferenceParameters                                    reference;
+    SweepParameters                                        sweep;
+    OutputParameters                                       output;
   };
 
 

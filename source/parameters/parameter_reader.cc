@@ -134,7 +134,8 @@ namespace thinlayer
     void
     declare_sections(ParameterHandler                        &prm,
                      const std::set<types::global_dof_index> &material_ids,
-                     const std::set<types::global_dof_index> &boundary_ids)
+                     const std::set<types::global_dof_index> &boundary_ids,
+                     const std::set<types::global_dof_index> &curve_ids)
     {
       MeshParameters::declare(prm);
       KinematicsParameters::declare(prm);
@@ -150,6 +151,8 @@ namespace thinlayer
         MaterialParameters::declare(prm, id);
       for (const auto id : boundary_ids)
         BoundaryParameters::declare(prm, id);
+      for (const auto id : curve_ids)
+        InterfaceCurveParameters::declare(prm, id);
     }
 
 
@@ -159,7 +162,8 @@ namespace thinlayer
     parse_sections(ParameterHandler                        &prm,
                    const std::string                       &file,
                    const std::set<types::global_dof_index> &material_ids,
-                   const std::set<types::global_dof_index> &boundary_ids)
+                   const std::set<types::global_dof_index> &boundary_ids,
+                   const std::set<types::global_dof_index> &curve_ids)
     {
       Parameters p;
       p.parameter_file = file;
@@ -180,6 +184,16 @@ namespace thinlayer
       p.interfaces.parse(prm, file, materials);
       for (const auto id : boundary_ids)
         p.boundaries[id].parse(prm, file, id, p.kinematics, p.mesh);
+      for (const auto id : curve_ids)
+        {
+          if (boundary_ids.count(id) != 0)
+            throw InputError(file,
+                             InterfaceCurveParameters::section(id),
+                             "a physical curve either of boundary conditions "
+                             "or of interface elements; 'Boundary " +
+                               std::to_string(id) + "' names it too");
+          p.interface_curves[id].parse(prm, file, id);
+        }
       p.loading.parse(prm, file);
       p.solver.parse(prm, file);
       // With automatic stepping the load stepping halves a failed step and
@@ -225,9 +239,10 @@ namespace thinlayer
     check_nothing_given_twice(text, file);
     const auto material_ids = ids_of_sections(text, overrides, "Material");
     const auto boundary_ids = ids_of_sections(text, overrides, "Boundary");
+    const auto curve_ids = ids_of_sections(text, overrides, "Interface curve");
 
     ParameterHandler prm;
-    declare_sections(prm, material_ids, boundary_ids);
+    declare_sections(prm, material_ids, boundary_ids, curve_ids);
     try
       {
         std::istringstream in(text);
@@ -241,7 +256,7 @@ namespace thinlayer
       apply_override(prm, o);
 
     Parameters parameters =
-      parse_sections(prm, file, material_ids, boundary_ids);
+      parse_sections(prm, file, material_ids, boundary_ids, curve_ids);
     // The record names the mesh by its absolute path, so that it can be
     // run again from anywhere.
     prm.enter_subsection("Mesh");
@@ -265,10 +280,12 @@ namespace thinlayer
   ParameterReader::print_parameters(std::ostream &out) const
   {
     ParameterHandler prm;
-    declare_sections(prm, {1}, {1});
+    declare_sections(prm, {1}, {1}, {1});
     out
       << "# thinlayer parameters. 'Material <id>' and 'Boundary <id>' may be\n"
-      << "# repeated for every physical surface and curve id of the mesh.\n";
+      << "# repeated for every physical surface and curve id of the mesh,\n"
+      << "# 'Interface curve <id>' for every physical curve of zero-thickness\n"
+      << "# interface elements.\n";
     prm.print_parameters(out, ParameterHandler::PRM);
   }
 } // namespace thinlayer

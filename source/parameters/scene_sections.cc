@@ -312,46 +312,6 @@ namespace thinlayer
   }
 
 
-  void
-  InterfaceParameters::declare(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Interfaces");
-    prm.declare_entry(
-      "Material ids",
-      "",
-      Patterns::List(Patterns::Integer(0, 255)),
-      "Thin layers (material ids of layers one cell thick) whose profile "
-      "is written at every step: slip, opening, shear and normal traction "
-      "and plasticity against arc length, as interface-<id>-NNNN.csv and as "
-      "cell fields in the VTU. Empty for none.");
-    prm.leave_subsection();
-  }
-
-
-  void
-  InterfaceParameters::parse(ParameterHandler                   &prm,
-                             const std::string                  &file,
-                             const std::set<types::material_id> &materials)
-  {
-    prm.enter_subsection("Interfaces");
-    material_ids.clear();
-    for (const int id : Utilities::string_to_int(
-           Utilities::split_string_list(prm.get("Material ids"))))
-      {
-        if (materials.count(id) == 0)
-          throw InputError(file,
-                           "Interfaces/Material ids",
-                           "expected the id of a material the file describes "
-                           "('subsection Material " +
-                             std::to_string(id) + "' is missing)");
-        if (std::find(material_ids.begin(), material_ids.end(), id) ==
-            material_ids.end())
-          material_ids.push_back(id);
-      }
-    prm.leave_subsection();
-  }
-
-
   const NameTable<YieldCriterion> MaterialParameters::yield_criterion_names = {
     {YieldCriterion::elastic, "elastic"},
     {YieldCriterion::tresca, "tresca"},

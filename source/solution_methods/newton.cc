@@ -33,6 +33,7 @@ namespace thinlayer
         cell_dofs(c, dofs);
         constraints.add_entries_local_to_global(dofs, dsp, /*keep=*/true);
       }
+    analysis.get_interface_elements().add_coupled_sparsity(dsp, constraints, n);
     sparsity.copy_from(dsp);
     tangent.reinit(sparsity);
     cell_matrices.assign(n_cells,
@@ -150,7 +151,18 @@ namespace thinlayer
 
     ++result.factorisations;
     if (!factorise_tangent())
-      return false;
+      {
+        // A singular tangent: the active set is a mechanism (an interface
+        // sliding along its whole length, say). An iteration with the
+        // elastic factors keeps going, so that the state shows the
+        // mechanism rather than stopping at the predictor.
+        this->remember_increments();
+        this->elastic_corrections();
+        for (unsigned int m = 0; m < n_modes; ++m)
+          analysis.mode(m).step_increment += this->correction[m];
+        norms = analysis.evaluate_residual(target, &tangents);
+        return true;
+      }
     // The coupled solve: the residuals (each condensed with its mode's
     // constraints) one after the other.
     for (unsigned int m = 0; m < n_modes; ++m)
@@ -313,6 +325,8 @@ namespace thinlayer
                                                dofs,
                                                tangent);
       }
+    this->analysis.get_interface_elements().add_coupled_tangent(
+      tangent, constraints, this->analysis.get_dof_handler().n_dofs());
     try
       {
         factorisation->factorize(tangent);

@@ -1,0 +1,652 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <thinlayer/input_error.h>
+#include <thinlayer/zero_thickness_elements.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <sstream>
+
+namespace thinlayer
+{
+  namespace
+  {
+    using CellIterator = DoFHandler<2>::active_cell_iterator;
+
+    /// A cell side on an interface curve.
+    struct Side
+    {
+      CellIterator            cell;
+      unsigned int            face;
+      types::boundary_id      curve;
+      Point<2>                centre;
+      std::array<Point<2>, 2> ends;
+    };
+
+    bool
+    lower_left(const Point<2> &a, const Point<2> &b, const double tolerance)
+    {
+      if (std::abs(a[0] - b[0]) > tolerance)
+        return a[0] < b[0];
+      return a[1] < b[1] - tolerance;
+    }
+  } // namespace
+
+
+  void
+  ZeroThicknessElements::reinit(
+    const DoFHandler<2>                                          &dof_handler,
+    const Mapping<2>                                             &mapping,
+    const Kinematics                                             &kinematics,
+    const std::map<types::boundary_id, InterfaceCurveParameters> &curves,
+    const std::string &parameter_file)
+  {
+    this->kinematics = &kinematics;
+    laws.clear();
+    elements.clear();
+    points.clear();
+    if (curves.empty())
+      return;
+    for (const auto &[id, parameters] : curves)
+      laws[id] = std::make_unique<InterfaceLaw>(parameters);
+
+    const double tolerance =
+      1e-9 * GridTools::diameter(dof_handler.get_triangulation());
+    std::vector<Side> sides;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (cell->at_boundary(f) && curves.count(cell->face(f)->boundary_id()))
+          sides.push_back(
+            {cell,
+             f,
+             cell->face(f)->boundary_id(),
+             cell->face(f)->center(),
+             {{cell->face(f)->vertex(0), cell->face(f)->vertex(1)}}});
+
+    // Pair facing sides; a pair is (minus side, plus side) once the runs
+    // give it a direction.
+    std::vector<std::pair<unsigned int, unsigned int>> pairs;
+    std::vector<int> partner(sides.size(), -1);
+    for (unsigned int i = 0; i < sides.size(); ++i)
+      if (partner[i] < 0)
+        {
+          for (unsigned int j = i + 1; j < sides.size(); ++j)
+            if (partner[j] < 0 && sides[j].curve == sides[i].curve &&
+                sides[j].cell != sides[i].cell &&
+                sides[j].centre.distance(sides[i].centre) < tolerance)
+              {
+                partner[i] = j;
+                partner[j] = i;
+                pairs.emplace_back(i, j);
+                break;
+              }
+          if (partner[i] < 0)
+            {
+              std::ostringstream message;
+              message << "every cell side on the curve to face another, as "
+                         "along a curve through the body; the side at ("
+                      << sides[i].centre << ") faces none";
+              throw InputError(parameter_file,
+                               InterfaceCurveParameters::section(
+                                 sides[i].curve),
+                               message.str());
+            }
+        }
+    for (const auto &[id, parameters] : curves)
+      if (std::none_of(sides.begin(), sides.end(), [id = id](const Side &s) {
+            return s.curve == id;
+          }))
+        throw InputError(parameter_file,
+                         InterfaceCurveParameters::section(id),
+                         "a physical curve of the mesh with cells on both "
+                         "sides; the mesh has no curve " +
+                           std::to_string(id));
+
+    // Runs: pairs chained through shared ends, each from its end nearest
+    // the lower left; the direction of travel is the tangent s.
+    const auto same = [&](const Point<2> &a, const Point<2> &b) {
+      return a.distance(b) < tolerance;
+    };
+    const auto n_neighbours = [&](const unsigned int k, const Point<2> &end) {
+      unsigned int count = 0;
+      for (unsigned int l = 0; l < pairs.size(); ++l)
+        if (l != k &&
+            sides[pairs[l].first].curve == sides[pairs[k].first].curve)
+          for (const Point<2> &e : sides[pairs[l].first].ends)
+            count += same(e, end);
+      return count;
+    };
+    std::vector<std::pair<Point<2>, std::pair<unsigned int, unsigned int>>>
+      starts; // (free end, (pair, which end))
+    for (unsigned int k = 0; k < pairs.size(); ++k)
+      for (unsigned int e = 0; e < 2; ++e)
+        if (n_neighbours(k, sides[pairs[k].first].ends[e]) == 0)
+          starts.push_back({sides[pairs[k].first].ends[e], {k, e}});
+    std::sort(starts.begin(), starts.end(), [&](const auto &a, const auto &b) {
+      return lower_left(a.first, b.first, tolerance);
+    });
+    for (unsigned int k = 0; k < pairs.size(); ++k)
+      starts.push_back({sides[pairs[k].first].ends[0], {k, 0}});
+
+
+    const FiniteElement<2>                    &fe = dof_handler.get_fe();
+    std::vector<types::global_dof_index>       cell_dofs(fe.n_dofs_per_cell());
+    std::vector<bool>                          done(pairs.size(), false);
+    std::map<types::boundary_id, unsigned int> runs;
+    for (const auto &start : starts)
+      {
+        unsigned int k     = start.second.first;
+        Point<2>     entry = sides[pairs[k].first].ends[start.second.second];
+        if (done[k])
+          continue;
+        const types::boundary_id curve = sides[pairs[k].first].curve;
+        const unsigned int       run   = runs[curve]++;
+        double                   arc   = 0;
+        while (true)
+          {
+            done[k]              = true;
+            const Side    &first = sides[pairs[k].first];
+            const Point<2> exit =
+              same(first.ends[0], entry) ? first.ends[1] : first.ends[0];
+            const Tensor<1, 2> chord   = exit - entry;
+            const double       length  = chord.norm();
+            const Tensor<1, 2> tangent = chord / length;
+            const Tensor<1, 2> normal({-tangent[1], tangent[0]});
+            // The plus side is the one whose cell lies along +n.
+            const bool first_is_plus =
+              (first.cell->center() - first.centre) * normal > 0;
+            const Side &plus  = first_is_plus ? first : sides[pairs[k].second];
+            const Side &minus = first_is_plus ? sides[pairs[k].second] : first;
+
+            const InterfaceCurveParameters &p = curves.at(curve);
+            const Quadrature<1>             rule =
+              p.integration == InterfaceCurveParameters::Integration::lobatto
+                            ? Quadrature<1>(QGaussLobatto<1>(3))
+                            : Quadrature<1>(QGauss<1>(p.points));
+
+            Element element{laws.at(curve).get(), {}};
+            std::map<types::global_dof_index, unsigned int> local;
+            for (unsigned int q = 0; q < rule.size(); ++q)
+              {
+                IntegrationPoint point;
+                point.element    = elements.size();
+                point.curve      = curve;
+                point.run        = run;
+                point.position   = entry + rule.point(q)[0] * chord;
+                point.arc_length = arc + rule.point(q)[0] * length;
+                point.tangent    = tangent;
+                point.normal     = normal;
+                point.weight     = rule.weight(q) * length *
+                               kinematics.area_factor(point.position);
+                for (const Side *side : {&plus, &minus})
+                  {
+                    const double           sign = (side == &plus) ? 1. : -1.;
+                    const dealii::Point<2> unit =
+                      mapping.transform_real_to_unit_cell(side->cell,
+                                                          point.position);
+                    side->cell->get_dof_indices(cell_dofs);
+                    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                      {
+                        const double value = fe.shape_value(i, unit);
+                        if (std::abs(value) < 1e-12)
+                          continue;
+                        const auto [it, inserted] =
+                          local.emplace(cell_dofs[i], element.dofs.size());
+                        if (inserted)
+                          element.dofs.push_back(cell_dofs[i]);
+                        point.entries.push_back(
+                          {it->second,
+                           fe.system_to_component_index(i).first,
+                           sign * value});
+                      }
+                  }
+                points.push_back(point);
+              }
+            elements.push_back(element);
+            arc += length;
+
+            // The next pair of this curve sharing the exit.
+            int next = -1;
+            for (unsigned int l = 0; l < pairs.size() && next < 0; ++l)
+              if (!done[l] && sides[pairs[l].first].curve == curve)
+                for (const Point<2> &e : sides[pairs[l].first].ends)
+                  if (same(e, exit))
+                    next = l;
+            if (next < 0)
+              break;
+            k     = next;
+            entry = exit;
+          }
+      }
+
+    states.assign(points.size() * kinematics.n_stations(),
+                  InterfacePointState());
+    tangents.assign(states.size(), Tensor<2, 3>());
+    for (unsigned int p = 0; p < points.size(); ++p)
+      for (unsigned int s = 0; s < kinematics.n_stations(); ++s)
+        tangents[p * kinematics.n_stations() + s] =
+          elements[points[p].element].law->elasticity();
+  }
+
+
+  bool
+  ZeroThicknessElements::empty() const
+  {
+    return elements.empty();
+  }
+
+
+  Tensor<1, 3>
+  ZeroThicknessElements::local_jump(
+    const IntegrationPoint                    &point,
+    const unsigned int                         s,
+    const std::vector<const Vector<double> *> &vectors) const
+  {
+    const Element &element = elements[point.element];
+    Tensor<1, 3>   jump; // (x, y, theta) summed over the modes
+    for (unsigned int m = 0; m < vectors.size(); ++m)
+      {
+        const double t1 = kinematics->T1(m, s), t2 = kinematics->T2(m, s);
+        for (const Entry &e : point.entries)
+          jump[e.component] += (e.component < 2 ? t1 : t2) * e.value *
+                               (*vectors[m])[element.dofs[e.local_dof]];
+      }
+    return Tensor<1, 3>(
+      {jump[0] * point.tangent[0] + jump[1] * point.tangent[1],
+       jump[0] * point.normal[0] + jump[1] * point.normal[1],
+       jump[2]});
+  }
+
+
+  void
+  ZeroThicknessElements::add_forces(
+    const IntegrationPoint        &point,
+    const unsigned int             s,
+    const Tensor<1, 3>            &traction,
+    std::vector<Vector<double> *> &targets) const
+  {
+    const Element &element = elements[point.element];
+    const double   weight  = kinematics->station_weight(s) * point.weight;
+    // The traction in (x, y, theta).
+    const double global[3] = {traction[0] * point.tangent[0] +
+                                traction[1] * point.normal[0],
+                              traction[0] * point.tangent[1] +
+                                traction[1] * point.normal[1],
+                              traction[2]};
+    for (unsigned int m = 0; m < targets.size(); ++m)
+      {
+        const double t1 = kinematics->T1(m, s), t2 = kinematics->T2(m, s);
+        for (const Entry &e : point.entries)
+          (*targets[m])[element.dofs[e.local_dof]] +=
+            weight * (e.component < 2 ? t1 : t2) * e.value *
+            global[e.component];
+      }
+  }
+
+
+  void
+  ZeroThicknessElements::jump_operator(const IntegrationPoint &point,
+                                       const unsigned int      s,
+                                       FullMatrix<double>     &G) const
+  {
+    const Element     &element = elements[point.element];
+    const unsigned int n       = element.dofs.size();
+    G.reinit(3, kinematics->n_modes() * n);
+    for (unsigned int m = 0; m < kinematics->n_modes(); ++m)
+      {
+        const double t1 = kinematics->T1(m, s), t2 = kinematics->T2(m, s);
+        for (const Entry &e : point.entries)
+          {
+            const unsigned int column = m * n + e.local_dof;
+            if (e.component < 2)
+              {
+                G(0, column) += t1 * e.value * point.tangent[e.component];
+                G(1, column) += t1 * e.value * point.normal[e.component];
+              }
+            else
+              G(2, column) += t2 * e.value;
+          }
+      }
+  }
+
+
+  void
+  ZeroThicknessElements::add_sparsity(
+    DynamicSparsityPattern          &dsp,
+    const AffineConstraints<double> &constraints) const
+  {
+    for (const Element &element : elements)
+      constraints.add_entries_local_to_global(element.dofs,
+                                              dsp,
+                                              /*keep_constrained=*/true);
+  }
+
+
+  void
+  ZeroThicknessElements::assemble_elastic(
+    const unsigned int               m,
+    SparseMatrix<double>            &stiffness,
+    SparseMatrix<double>            &condensed,
+    const AffineConstraints<double> &constraints) const
+  {
+    // K_m = int (c1 G1^T K G1 + c2 G2^T K G2) w: the in-plane components
+    // with T1, the out-of-plane one with T2, integrated exactly over the
+    // circle (as the cells' stiffness), so the harmonics decouple.
+    std::vector<FullMatrix<double>> matrices(elements.size());
+    for (unsigned int k = 0; k < elements.size(); ++k)
+      matrices[k].reinit(elements[k].dofs.size(), elements[k].dofs.size());
+    for (const IntegrationPoint &point : points)
+      {
+        const Element     &element = elements[point.element];
+        const unsigned int n       = element.dofs.size();
+        const Tensor<2, 3> K       = element.law->elasticity();
+        FullMatrix<double> G(3, n);
+        for (const Entry &e : point.entries)
+          if (e.component < 2)
+            {
+              G(0, e.local_dof) += e.value * point.tangent[e.component];
+              G(1, e.local_dof) += e.value * point.normal[e.component];
+            }
+          else
+            G(2, e.local_dof) += e.value;
+        const double        c[3] = {kinematics->c1(m),
+                                    kinematics->c1(m),
+                                    kinematics->c2(m)};
+        FullMatrix<double> &A    = matrices[point.element];
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n; ++j)
+            for (unsigned int a = 0; a < 3; ++a)
+              A(i, j) += point.weight * c[a] * G(a, i) * K[a][a] * G(a, j);
+      }
+    for (unsigned int k = 0; k < elements.size(); ++k)
+      {
+        stiffness.add(elements[k].dofs, matrices[k]);
+        constraints.distribute_local_to_global(matrices[k],
+                                               elements[k].dofs,
+                                               condensed);
+      }
+  }
+
+
+  unsigned int
+  ZeroThicknessElements::viscoplastic_update(
+    std::vector<std::unique_ptr<ModeState>> &modes)
+  {
+    std::vector<const Vector<double> *> increments;
+    std::vector<Vector<double> *>       targets;
+    for (auto &mode : modes)
+      {
+        increments.push_back(&mode->step_increment);
+        targets.push_back(&mode->body_load_change);
+      }
+    const unsigned int n_stations = kinematics->n_stations();
+    unsigned int       n_yielding = 0;
+    for (unsigned int p = 0; p < points.size(); ++p)
+      for (unsigned int s = 0; s < n_stations; ++s)
+        {
+          const InterfaceLaw  &law   = *elements[points[p].element].law;
+          InterfacePointState &state = states[p * n_stations + s];
+          const Tensor<1, 3>   jump  = local_jump(points[p], s, increments);
+          state.traction             = state.converged_traction +
+                           law.elastic_traction(jump - state.step_plastic_jump);
+          state.pending_plastic_jump = 0;
+          state.yielding             = false;
+          if (!law.can_yield())
+            continue;
+          const double F = law.yield_function(state.traction);
+          if (F <= 0)
+            continue;
+          state.yielding = true;
+          ++n_yielding;
+          const Tensor<1, 3> plastic = (law.viscoplastic_time_step() * F) *
+                                       law.flow_direction(state.traction);
+          state.step_plastic_jump += plastic;
+          state.pending_plastic_jump = plastic;
+          add_forces(points[p], s, law.elastic_traction(plastic), targets);
+        }
+    return n_yielding;
+  }
+
+
+  unsigned int
+  ZeroThicknessElements::return_mapping_update(
+    std::vector<std::unique_ptr<ModeState>> &modes,
+    const bool                               with_tangents)
+  {
+    std::vector<const Vector<double> *> increments;
+    std::vector<Vector<double> *>       forces, excess;
+    for (auto &mode : modes)
+      {
+        increments.push_back(&mode->step_increment);
+        forces.push_back(&mode->internal_forces);
+        excess.push_back(&mode->body_loads);
+      }
+    const unsigned int n_stations = kinematics->n_stations();
+    unsigned int       n_yielding = 0;
+    for (unsigned int p = 0; p < points.size(); ++p)
+      for (unsigned int s = 0; s < n_stations; ++s)
+        {
+          const InterfaceLaw  &law   = *elements[points[p].element].law;
+          InterfacePointState &state = states[p * n_stations + s];
+          const Tensor<1, 3>   trial =
+            state.converged_traction +
+            law.elastic_traction(local_jump(points[p], s, increments));
+          const InterfaceReturnMapping r =
+            law.return_mapping(trial, with_tangents);
+          state.traction = r.traction;
+          state.yielding = (r.region != InterfaceReturn::elastic);
+          if (with_tangents)
+            tangents[p * n_stations + s] = r.tangent;
+          if (state.yielding)
+            {
+              ++n_yielding;
+              state.step_plastic_jump = law.compliance() * (trial - r.traction);
+              add_forces(points[p], s, trial - r.traction, excess);
+            }
+          else
+            state.step_plastic_jump = 0;
+          add_forces(points[p], s, state.traction, forces);
+        }
+    return n_yielding;
+  }
+
+
+  void
+  ZeroThicknessElements::add_internal_forces(
+    std::vector<std::unique_ptr<ModeState>> &modes) const
+  {
+    std::vector<Vector<double> *> forces;
+    for (auto &mode : modes)
+      forces.push_back(&mode->internal_forces);
+    const unsigned int n_stations = kinematics->n_stations();
+    for (unsigned int p = 0; p < points.size(); ++p)
+      for (unsigned int s = 0; s < n_stations; ++s)
+        add_forces(points[p], s, states[p * n_stations + s].traction, forces);
+  }
+
+
+  void
+  ZeroThicknessElements::accept()
+  {
+    for (InterfacePointState &state : states)
+      {
+        state.converged_traction = state.traction;
+        state.plastic_jump +=
+          state.step_plastic_jump - state.pending_plastic_jump;
+        state.step_plastic_jump    = 0;
+        state.pending_plastic_jump = 0;
+      }
+  }
+
+
+  void
+  ZeroThicknessElements::reject()
+  {
+    for (InterfacePointState &state : states)
+      {
+        state.traction             = state.converged_traction;
+        state.step_plastic_jump    = 0;
+        state.pending_plastic_jump = 0;
+      }
+  }
+
+
+  double
+  ZeroThicknessElements::max_yield_ratio() const
+  {
+    double             ratio      = std::numeric_limits<double>::quiet_NaN();
+    const unsigned int n_stations = kinematics ? kinematics->n_stations() : 1;
+    for (unsigned int p = 0; p < points.size(); ++p)
+      {
+        const InterfaceLaw &law = *elements[points[p].element].law;
+        if (law.can_yield())
+          for (unsigned int s = 0; s < n_stations; ++s)
+            {
+              const double r =
+                law.yield_ratio(states[p * n_stations + s].traction);
+              ratio = std::isnan(ratio) ? r : std::max(ratio, r);
+            }
+      }
+    return ratio;
+  }
+
+
+  bool
+  ZeroThicknessElements::all_associated() const
+  {
+    for (const auto &[id, law] : laws)
+      if (!law->is_associated())
+        return false;
+    return true;
+  }
+
+
+  void
+  ZeroThicknessElements::add_coupled_sparsity(
+    DynamicSparsityPattern          &dsp,
+    const AffineConstraints<double> &coupled_constraints,
+    const types::global_dof_index    n_dofs) const
+  {
+    std::vector<types::global_dof_index> dofs;
+    for (const Element &element : elements)
+      {
+        dofs.clear();
+        for (unsigned int m = 0; m < kinematics->n_modes(); ++m)
+          for (const auto dof : element.dofs)
+            dofs.push_back(m * n_dofs + dof);
+        coupled_constraints.add_entries_local_to_global(dofs, dsp, true);
+      }
+  }
+
+
+  void
+  ZeroThicknessElements::add_coupled_tangent(
+    SparseMatrix<double>            &tangent,
+    const AffineConstraints<double> &coupled_constraints,
+    const types::global_dof_index    n_dofs) const
+  {
+    const unsigned int              n_stations = kinematics->n_stations();
+    const unsigned int              n_modes    = kinematics->n_modes();
+    std::vector<FullMatrix<double>> matrices(elements.size());
+    for (unsigned int k = 0; k < elements.size(); ++k)
+      matrices[k].reinit(n_modes * elements[k].dofs.size(),
+                         n_modes * elements[k].dofs.size());
+    FullMatrix<double> G;
+    for (unsigned int p = 0; p < points.size(); ++p)
+      for (unsigned int s = 0; s < n_stations; ++s)
+        {
+          jump_operator(points[p], s, G);
+          const Tensor<2, 3> &C = tangents[p * n_stations + s];
+          const double        weight =
+            kinematics->station_weight(s) * points[p].weight;
+          FullMatrix<double> &A = matrices[points[p].element];
+          for (unsigned int i = 0; i < G.n(); ++i)
+            for (unsigned int a = 0; a < 3; ++a)
+              if (G(a, i) != 0)
+                for (unsigned int b = 0; b < 3; ++b)
+                  if (C[a][b] != 0)
+                    for (unsigned int j = 0; j < G.n(); ++j)
+                      A(i, j) += weight * G(a, i) * C[a][b] * G(b, j);
+        }
+    std::vector<types::global_dof_index> dofs;
+    for (unsigned int k = 0; k < elements.size(); ++k)
+      {
+        dofs.clear();
+        for (unsigned int m = 0; m < n_modes; ++m)
+          for (const auto dof : elements[k].dofs)
+            dofs.push_back(m * n_dofs + dof);
+        coupled_constraints.distribute_local_to_global(matrices[k],
+                                                       dofs,
+                                                       tangent);
+      }
+  }
+
+
+  std::vector<types::boundary_id>
+  ZeroThicknessElements::curve_ids() const
+  {
+    std::vector<types::boundary_id> ids;
+    for (const auto &[id, law] : laws)
+      ids.push_back(id);
+    return ids;
+  }
+
+
+  std::string
+  ZeroThicknessElements::csv(
+    const types::boundary_id                       curve,
+    const std::vector<std::unique_ptr<ModeState>> &modes,
+    const bool                                     pending) const
+  {
+    const unsigned int                  n_stations = kinematics->n_stations();
+    std::vector<Vector<double>>         totals;
+    std::vector<const Vector<double> *> total, increment;
+    for (const auto &mode : modes)
+      {
+        totals.push_back(mode->solution);
+        if (pending)
+          totals.back() += mode->step_increment;
+        increment.push_back(&mode->step_increment);
+      }
+    for (const auto &t : totals)
+      total.push_back(&t);
+
+    std::vector<ProfileSample> samples;
+    std::vector<unsigned int>  indices;
+    for (unsigned int p = 0; p < points.size(); ++p)
+      if (points[p].curve == curve)
+        {
+          samples.push_back(
+            {points[p].run, points[p].arc_length, points[p].position});
+          indices.push_back(p);
+        }
+    return profile_csv(samples, *kinematics, [&](const unsigned int s) {
+      std::vector<InterfaceValues> values;
+      for (const unsigned int p : indices)
+        {
+          const InterfaceLaw        &law   = *elements[points[p].element].law;
+          const InterfacePointState &state = states[p * n_stations + s];
+          const Tensor<1, 3>         jump  = local_jump(points[p], s, total);
+          const Tensor<1, 3> djump = local_jump(points[p], s, increment);
+          InterfaceValues    v;
+          v.slip                        = jump[0];
+          v.opening                     = jump[1];
+          v.slip_out_of_plane           = jump[2];
+          v.slip_increment              = djump[0];
+          v.opening_increment           = djump[1];
+          v.shear_traction              = state.traction[0];
+          v.normal_traction             = state.traction[1];
+          v.shear_traction_out_of_plane = state.traction[2];
+          v.yield_ratio                 = law.can_yield()
+                                            ? law.yield_ratio(state.traction)
+                                            : std::numeric_limits<double>::quiet_NaN();
+          v.plastic                     = state.yielding;
+          values.push_back(v);
+        }
+      return values;
+    });
+  }
+} // namespace thinlayer
