@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <map>
+#include <set>
 #include <sstream>
 #include <vector>
 
@@ -138,17 +139,15 @@ namespace thinlayer
             cells_of_node[v].push_back(k);
         }
 
-    // The curves' edges, their left and right cells, and per node the
-    // cells that start each side's fan.
-    std::map<Edge, unsigned int>             curve_edge;
-    std::map<long, std::vector<std::size_t>> left_seeds, right_seeds;
-    std::map<long, unsigned int>             edges_at_node;
+    // The curves' edges, each with a cell on either side.
+    std::map<Edge, unsigned int> curve_edge;
+    std::set<long>               curve_nodes;
     for (const MshElement &line : elements)
       if (is_curve_line(line))
         {
           const long a = line.nodes[0], b = line.nodes[1];
-          const auto beside = cells_of_edge[edge(a, b)];
-          if (beside.size() != 2)
+          const auto beside = cells_of_edge[edge(a, b)].size();
+          if (beside != 2)
             {
               std::ostringstream message;
               message << "physical curve " << line.tags[0]
@@ -156,118 +155,98 @@ namespace thinlayer
                          "with a cell on each side; its line from ("
                       << position[a][0] << ", " << position[a][1] << ") to ("
                       << position[b][0] << ", " << position[b][1] << ") has "
-                      << beside.size();
+                      << beside;
               fail(message.str());
             }
           curve_edge[edge(a, b)] = line.tags[0];
-          for (const std::size_t k : beside)
-            {
-              double cx = 0, cy = 0;
-              for (const long v : elements[k].nodes)
-                {
-                  cx += position[v][0] / 4;
-                  cy += position[v][1] / 4;
-                }
-              const double cross =
-                (position[b][0] - position[a][0]) * (cy - position[a][1]) -
-                (position[b][1] - position[a][1]) * (cx - position[a][0]);
-              for (const long v : {a, b})
-                (cross > 0 ? left_seeds : right_seeds)[v].push_back(k);
-            }
-          for (const long v : {a, b})
-            if (++edges_at_node[v] > 2)
-              {
-                std::ostringstream message;
-                message << "interface curves that neither branch nor meet; "
-                           "three or more of their lines meet at ("
-                        << position[v][0] << ", " << position[v][1] << ")";
-                fail(message.str());
-              }
+          curve_nodes.insert(a);
+          curve_nodes.insert(b);
         }
 
-    // Each node's left fan: the cells around it reached from its left seeds
-    // without crossing a curve. If the fan reaches a right seed, the curve
-    // ends inside the body there (a tip): the node stays shared.
-    std::map<long, long> duplicate;
-    for (const auto &[v, seeds] : left_seeds)
+    // Around each node of a curve, the curves' edges part the cells into
+    // sectors (cells joined through edges at the node that are not on a
+    // curve). Every sector but the first gets its own copy of the node; a
+    // node with one sector (a curve's end inside the body) stays shared.
+    const std::vector<MshElement> original = elements;
+    for (const long v : curve_nodes)
       {
-        const auto              &around = cells_of_node[v];
-        std::vector<bool>        in_fan(around.size(), false);
-        std::vector<std::size_t> queue;
-        for (std::size_t i = 0; i < around.size(); ++i)
-          if (std::count(seeds.begin(), seeds.end(), around[i]))
+        const auto      &around = cells_of_node[v];
+        std::vector<int> sector(around.size(), -1);
+        int              n_sectors = 0;
+        for (std::size_t start = 0; start < around.size(); ++start)
+          if (sector[start] < 0)
             {
-              in_fan[i] = true;
-              queue.push_back(i);
+              std::vector<std::size_t> queue = {start};
+              sector[start]                  = n_sectors;
+              while (!queue.empty())
+                {
+                  const std::size_t i = queue.back();
+                  queue.pop_back();
+                  for (const Edge &e : quad_edges(original[around[i]].nodes))
+                    if ((e.first == v || e.second == v) && !curve_edge.count(e))
+                      for (std::size_t j = 0; j < around.size(); ++j)
+                        if (sector[j] < 0)
+                          {
+                            const auto edges =
+                              quad_edges(original[around[j]].nodes);
+                            if (std::find(edges.begin(), edges.end(), e) !=
+                                edges.end())
+                              {
+                                sector[j] = n_sectors;
+                                queue.push_back(j);
+                              }
+                          }
+                }
+              ++n_sectors;
             }
-        while (!queue.empty())
+        std::vector<long> copy_of_sector(n_sectors, v);
+        for (int k = 1; k < n_sectors; ++k)
           {
-            const std::size_t i = queue.back();
-            queue.pop_back();
-            for (const Edge &e : quad_edges(elements[around[i]].nodes))
-              if ((e.first == v || e.second == v) && !curve_edge.count(e))
-                for (std::size_t j = 0; j < around.size(); ++j)
-                  if (!in_fan[j])
-                    {
-                      const auto edges = quad_edges(elements[around[j]].nodes);
-                      if (std::find(edges.begin(), edges.end(), e) !=
-                          edges.end())
-                        {
-                          in_fan[j] = true;
-                          queue.push_back(j);
-                        }
-                    }
+            copy_of_sector[k]              = ++max_node;
+            coordinates[copy_of_sector[k]] = coordinates[v];
+            position[copy_of_sector[k]]    = position[v];
           }
-        bool tip = false;
         for (std::size_t i = 0; i < around.size(); ++i)
-          if (in_fan[i] && std::count(right_seeds[v].begin(),
-                                      right_seeds[v].end(),
-                                      around[i]))
-            tip = true;
-        if (tip)
-          continue;
-        const long copy   = ++max_node;
-        duplicate[v]      = copy;
-        position[copy]    = position[v];
-        coordinates[copy] = coordinates[v];
-        for (std::size_t i = 0; i < around.size(); ++i)
-          if (in_fan[i])
-            std::replace(elements[around[i]].nodes.begin(),
-                         elements[around[i]].nodes.end(),
-                         v,
-                         copy);
+          std::replace(elements[around[i]].nodes.begin(),
+                       elements[around[i]].nodes.end(),
+                       v,
+                       copy_of_sector[sector[i]]);
       }
 
-    // Lines: a curve's line is repeated with the left side's nodes; any
-    // other line whose nodes were copied follows the cell it bounds.
-    std::map<Edge, bool> renumbered_cell_edge;
-    for (const MshElement &e : elements)
-      if (e.type == 3)
-        for (const Edge &edge_of_cell : quad_edges(e.nodes))
-          renumbered_cell_edge[edge_of_cell] = true;
-    const auto copied = [&](const long v) {
-      const auto it = duplicate.find(v);
-      return it == duplicate.end() ? v : it->second;
+    // A line takes the nodes of the cell beside it: a curve's line becomes
+    // two, one for each side's cell; any other line follows its one cell.
+    const auto nodes_in_cell = [&](const std::size_t cell, const long v) {
+      const auto &before = original[cell].nodes;
+      return elements[cell]
+        .nodes[std::find(before.begin(), before.end(), v) - before.begin()];
     };
-    std::vector<MshElement> added;
-    for (MshElement &e : elements)
+    std::vector<MshElement> lines;
+    for (const MshElement &e : original)
       if (e.type == 1)
         {
-          MshElement left = e;
-          left.nodes      = {copied(e.nodes[0]), copied(e.nodes[1])};
-          if (left.nodes == e.nodes)
-            continue;
-          if (is_curve_line(e))
+          const auto beside = cells_of_edge[edge(e.nodes[0], e.nodes[1])];
+          for (std::size_t k = 0; k < beside.size(); ++k)
             {
-              left.id = ++max_element;
-              added.push_back(left);
+              MshElement line = e;
+              line.nodes      = {nodes_in_cell(beside[k], e.nodes[0]),
+                                 nodes_in_cell(beside[k], e.nodes[1])};
+              if (k > 0)
+                {
+                  if (!is_curve_line(e))
+                    break;
+                  line.id = ++max_element;
+                }
+              lines.push_back(line);
             }
-          else if (renumbered_cell_edge.count(
-                     edge(left.nodes[0], left.nodes[1])) &&
-                   !renumbered_cell_edge.count(edge(e.nodes[0], e.nodes[1])))
-            e.nodes = left.nodes;
+          if (beside.empty())
+            lines.push_back(e);
         }
-    elements.insert(elements.end(), added.begin(), added.end());
+    std::vector<MshElement> result;
+    for (const MshElement &e : elements)
+      if (e.type != 1)
+        result.push_back(e);
+    result.insert(result.end(), lines.begin(), lines.end());
+    elements = result;
 
     std::ostringstream out;
     out << msh.substr(0, nodes_begin) << "$Nodes\n" << position.size() << '\n';

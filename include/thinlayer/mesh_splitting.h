@@ -11,16 +11,16 @@ namespace thinlayer
    * cut along the physical curves @p curves, so that zero-thickness
    * interface elements can join the two sides (ZeroThicknessElements):
    *
-   * - every node of a curve is duplicated for the cells on the curve's left
-   *   (seen along each of its line elements), except where the curve ends
-   *   inside the body (a crack tip, where the sides stay joined);
-   * - the curve's line elements are kept for the right side and repeated
-   *   with the new nodes for the left, so that deal.II sees both sides as
-   *   boundary faces with the curve's id;
-   * - other line elements on the left side follow their cells' new nodes.
+   * - around every node of a curve, the curves' edges part the cells into
+   *   sectors; each sector but one gets its own copy of the node (a curve's
+   *   end inside the body, a crack tip, has one sector and stays joined;
+   *   corners and branches are cut as they divide the cells);
+   * - each curve line becomes two, one with the nodes of the cell on each
+   *   side, so that deal.II sees both sides as boundary faces with the
+   *   curve's id; other lines take their cell's nodes.
    *
-   * Throws InputError (naming @p mesh_file) for another format, a curve
-   * line without a cell on each side, or curves that branch or meet.
+   * Throws InputError (naming @p mesh_file) for another format, or a
+   * curve line without a cell on each side.
    */
   std::string
   split_along_curves(const std::string            &msh,
