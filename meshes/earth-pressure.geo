@@ -14,11 +14,16 @@
 //   n_x            elements from the column to the side
 //   growth         ratio of neighbouring element sizes away from the wall
 //   refinement     multiplies every element count (and refines the grading)
+//   zero_thickness 1: the column over the wall's height is the wall itself
+//                  (a body of width t, material 2), joined to the soil by
+//                  zero-thickness interface elements on its face (curve 6)
+//                  and its toe (curve 7)
 //
 // Physical groups:
 //   surfaces 1 "soil", 2 "wall column" (the interface)
 //   curves   1 "wall" (x = 0, -H < y < 0), 2 "below wall" (x = 0, y < -H),
-//            3 "bottom", 4 "side" (x = width), 5 "ground" (y = 0)
+//            3 "bottom", 4 "side" (x = width), 5 "ground" (y = 0);
+//            zero_thickness: 6 "wall face" (x = t), 7 "wall toe" (y = -H)
 DefineConstant[
   wall_height  = {1, Name "Parameters/wall_height"},
   width        = {3, Name "Parameters/width"},
@@ -28,7 +33,8 @@ DefineConstant[
   n_below      = {5, Name "Parameters/n_below"},
   n_x          = {12, Name "Parameters/n_x"},
   growth       = {1.15, Name "Parameters/growth"},
-  refinement   = {1, Name "Parameters/refinement"}
+  refinement   = {1, Name "Parameters/refinement"},
+  zero_thickness = {0, Name "Parameters/zero_thickness"}
 ];
 
 H = wall_height;
@@ -66,7 +72,13 @@ Transfinite Surface{1, 2, 3, 4};
 Recombine Surface{1, 2, 3, 4};
 
 Physical Surface("soil", 1) = {2, 3, 4};
-Physical Surface("wall column", 2) = {1};
+If (zero_thickness)
+  Physical Surface("wall", 2) = {1};
+  Physical Curve("wall face", 6) = {8};
+  Physical Curve("wall toe", 7) = {3};
+Else
+  Physical Surface("wall column", 2) = {1};
+EndIf
 Physical Curve("wall", 1) = {7};
 Physical Curve("below wall", 2) = {10};
 Physical Curve("bottom", 3) = {5, 6};
