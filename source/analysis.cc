@@ -141,6 +141,7 @@ namespace thinlayer
                               mapping,
                               kinematics,
                               parameters.interface_curves,
+                              parameters.materials,
                               parameters.parameter_file);
     for (unsigned int m = 0; m < kinematics.n_modes(); ++m)
       interface_elements.add_sparsity(dsp, modes[m]->constraints);

@@ -42,6 +42,7 @@ namespace thinlayer
     const Mapping<2>                                             &mapping,
     const Kinematics                                             &kinematics,
     const std::map<types::boundary_id, InterfaceCurveParameters> &curves,
+    const std::map<types::material_id, MaterialParameters>       &materials,
     const std::string &parameter_file)
   {
     this->kinematics = &kinematics;
@@ -162,10 +163,33 @@ namespace thinlayer
             const Side &minus = first_is_plus ? sides[pairs[k].second] : first;
 
             const InterfaceCurveParameters &p = curves.at(curve);
-            const Quadrature<1>             rule =
+            const double                    E =
+              std::min(materials.at(plus.cell->material_id()).youngs_modulus,
+                       materials.at(minus.cell->material_id()).youngs_modulus);
+            const double limit = max_stiffness_ratio * E / length;
+            for (const auto &[entry, k] :
+                 {std::pair<const char *, double>{"Normal stiffness",
+                                                  p.normal_stiffness},
+                  {"Shear stiffness", p.shear_stiffness}})
+              if (k > limit)
+                {
+                  std::ostringstream message;
+                  message << "at most " << max_stiffness_ratio
+                          << " E / h = " << limit << " for the element at ("
+                          << first.centre << ") (E = " << E
+                          << " of the cells beside it, "
+                          << "side h = " << length << "), got " << k
+                          << ": a stiffer interface adds no accuracy, and "
+                             "round-off takes its tractions";
+                  throw InputError(parameter_file,
+                                   InterfaceCurveParameters::section(curve) +
+                                     "/" + entry,
+                                   "expected " + message.str());
+                }
+            const Quadrature<1> rule =
               p.integration == InterfaceCurveParameters::Integration::lobatto
-                            ? Quadrature<1>(QGaussLobatto<1>(3))
-                            : Quadrature<1>(QGauss<1>(p.points));
+                ? Quadrature<1>(QGaussLobatto<1>(3))
+                : Quadrature<1>(QGauss<1>(p.points));
 
             Element element{laws.at(curve).get(), {}};
             std::map<types::global_dof_index, unsigned int> local;

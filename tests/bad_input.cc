@@ -239,6 +239,21 @@ namespace
                 "subsection Interfaces\n  set Material ids = 1\nend\n"));
     check("an interface more than one cell thick", {"interface-thick.prm"});
 
+    // Two blocks joined by zero-thickness elements 1e7 times as stiff as
+    // the cells beside them (E / h = 1e5 / 0.25).
+    write("interface-stiffness.prm",
+          "subsection Mesh\n  set File = " + std::string(SOURCE_DIR) +
+            "/../meshes/interface-patch.geo\nend\n"
+            "subsection Material 1\nend\n"
+            "subsection Interface curve 3\n  set Normal stiffness = 4e12\n"
+            "end\n"
+            "subsection Boundary 1\n  set Constrained components = x, y\nend\n"
+            "subsection Boundary 2\n  set Traction = 0; -1\nend\n"
+            "subsection Monitors\n  set Displacement boundary id = 2\nend\n"
+            "subsection Output\n  set Directory = results\nend\n");
+    check("zero-thickness elements too stiff for round-off",
+          {"interface-stiffness.prm"});
+
     write("increments.prm",
           scene("good.geo",
                 "",

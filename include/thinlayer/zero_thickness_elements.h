@@ -64,14 +64,28 @@ namespace thinlayer
     /**
      * Pair the faces of every curve of @p curves. Throws InputError
      * (naming @p parameter_file and the curve's section) where a face of a
-     * curve has no facing partner.
+     * curve has no facing partner, or where an interface stiffness exceeds
+     * max_stiffness_ratio E / h of the cells beside it (@p materials).
      */
     void
     reinit(const DoFHandler<2> &dof_handler,
            const Mapping<2>    &mapping,
            const Kinematics    &kinematics,
            const std::map<types::boundary_id, InterfaceCurveParameters> &curves,
+           const std::map<types::material_id, MaterialParameters> &materials,
            const std::string &parameter_file);
+
+    /**
+     * The largest interface stiffness accepted, in units of E / h (E the
+     * smaller Young's modulus of the two cells beside an element, h its
+     * side's length). Stiffer interfaces add no accuracy (the interface's
+     * compliance is already a millionth of the cells'), but the tractions,
+     * k times a jump that is the difference of two nearly equal
+     * displacements, lose their digits to round-off: in
+     * benchmarks/interfaces.py, Cases 2 and 3 at 1.25e6 E/h and above end
+     * in "collapses" at a tenth of the sliding load, or do not converge.
+     */
+    static constexpr double max_stiffness_ratio = 1e6;
 
     bool
     empty() const;
