@@ -148,18 +148,19 @@ def chart(rows, path):
         for row, (key, label, scale) in enumerate(metrics):
             axis = axes[row][column]
             for case, (title, *_rest) in CASES.items():
-                points = [r for r in rows if r["case"] == case and r["model"] == model]
-                good = [r for r in points
-                        if math.isfinite(r[key]) and (key != "error" or math.isfinite(r["error"]))]
+                # A refused run (outcome error) has no figures at all.
+                points = [r for r in rows if r["case"] == case and r["model"] == model
+                          and r["outcome"] != "error"]
+                good = [r for r in points if math.isfinite(r[key])]
                 axis.plot([r["parameter"] for r in good], [scale * r[key] for r in good],
                           marker=markers[case], label=title)
                 if key == "error":
                     # Runs without a collapse load: marked at zero, never on the curve.
-                    failed = [r for r in points if not math.isfinite(r["error"])]
+                    failed = [r for r in rows if r["case"] == case and r["model"] == model
+                              and not math.isfinite(r["error"])]
                     if failed:
                         axis.plot([r["parameter"] for r in failed], [0] * len(failed), "x",
-                                  color="red", markersize=9,
-                                  label="no collapse load (%s)" % title if column == 0 else None)
+                                  color=axis.lines[-1].get_color(), markersize=10)
             axis.set_xscale("log")
             if key in ("wall_seconds", "iterations"):
                 axis.set_yscale("log")
@@ -169,10 +170,19 @@ def chart(rows, path):
             axis.grid(alpha=0.3, which="both")
         axes[-1][column].set_xlabel(xlabel)
     axes[0][0].legend(fontsize=8)
+    axes[0][1].plot([], [], "x", color="grey", markersize=10,
+                    label="no collapse load: not converged, or refused\n"
+                          "(k above 1e6 E/h of the cells beside it)")
+    axes[0][1].legend(fontsize=8)
+    figure.text(0.01, 0.003,
+                "Case 3's thin layer at aspect ratio 10000: the default method accepted a "
+                "state at load factor 0.5 whose displacements are 1e9 times the elastic "
+                "ones,\nmoving against the load; the run's 'collapse' there is that "
+                "spurious state, not the body's.", fontsize=8)
     axes[0][0].set_title("thin layers (one element thick)")
     axes[0][1].set_title("zero-thickness (Goodman-type) elements")
     figure.suptitle("Thin layers against zero-thickness interface elements, default method")
-    figure.tight_layout()
+    figure.tight_layout(rect=(0, 0.03, 1, 1))
     figure.savefig(path, dpi=100)
     plt.close(figure)
 
@@ -182,9 +192,20 @@ def main():
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--quick", action="store_true",
                         help="aspect ratios 10 and 1000, stiffnesses 10, 1e4 and 1e8 E/L")
+    parser.add_argument("--replot", action="store_true",
+                        help="redraw the chart from the last interfaces.csv, running nothing")
     parser.add_argument("--cases", default=",".join(CASES),
                         help="comma-separated subset of " + ", ".join(CASES))
     arguments = parser.parse_args()
+    if arguments.replot:
+        rows = results.read_csv(os.path.join(OUT, "interfaces.csv"))
+        for r in rows:
+            for key in ("parameter", "collapse_load", "analytic", "error",
+                        "iterations", "wall_seconds", "oscillation"):
+                r[key] = results.number(r[key])
+        chart(rows, os.path.join(OUT, "interfaces.png"))
+        print("wrote", os.path.join(OUT, "interfaces.png"))
+        return
     ratios = [10, 1000] if arguments.quick else ASPECT_RATIOS
     factors = [10, 1e4, 1e8] if arguments.quick else STIFFNESS_FACTORS
     os.makedirs(OUT, exist_ok=True)

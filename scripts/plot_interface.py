@@ -1,13 +1,16 @@
 #!/usr/bin/python3
 """Profiles along a thin-layer interface of one thinlayer run.
 
-Reads OUTPUT_DIR/interface-<id>-NNNN.csv (written when the scene names the
-layer in Interfaces/Material ids) and history.csv, and writes
-OUTPUT_DIR/interface-<id>.png: slip, opening, shear and normal traction
+Reads OUTPUT_DIR/interface-<id>-NNNN.csv (a thin layer the scene names in
+Interfaces/Material ids) or interface-curve-<id>-NNNN.csv (zero-thickness
+elements on an Interface curve), and history.csv, and writes one chart per
+interface, interface-<id>.png or interface-curve-<id>.png: slip, opening,
+shear and normal traction
 against arc length along the layer, at a few load steps. Converged,
 accepted steps are solid lines, plastic points filled. A step that ended
-the run without an accepted state (a failure) is drawn apart, dashed, with
-its last increment of slip, which shows the mechanism. Units are the
+the run without an accepted state (a failure) is drawn apart: its tractions
+dashed, and for its slip the shape of its last increment (the mechanism),
+scaled to the largest converged slip, since its displacements run away. Units are the
 scene's own (lengths of the mesh, displacements and stresses of its
 parameters).
 """
@@ -24,22 +27,27 @@ import matplotlib.pyplot as plt  # noqa: E402
 import results  # noqa: E402
 
 
-def profile_files(directory, material_id):
-    """{step: path} of the interface-<id>-NNNN.csv files."""
+SERIES = re.compile(r"(interface-(?:curve-)?\d+)-(\d+)\.csv$")
+
+
+def profile_files(directory, series):
+    """{step: path} of the files SERIES-NNNN.csv."""
     files = {}
-    for path in glob.glob(os.path.join(directory, "interface-%d-*.csv" % material_id)):
-        match = re.search(r"-(\d+)\.csv$", path)
-        files[int(match.group(1))] = path
+    for path in glob.glob(os.path.join(directory, series + "-*.csv")):
+        match = SERIES.search(path)
+        if match and match.group(1) == series:
+            files[int(match.group(2))] = path
     return files
 
 
-def layer_ids(directory):
-    ids = set()
-    for path in glob.glob(os.path.join(directory, "interface-*-*.csv")):
-        match = re.search(r"interface-(\d+)-\d+\.csv$", path)
+def all_series(directory):
+    """The interfaces written: interface-<id> and interface-curve-<id>."""
+    names = set()
+    for path in glob.glob(os.path.join(directory, "interface-*.csv")):
+        match = SERIES.search(path)
         if match:
-            ids.add(int(match.group(1)))
-    return sorted(ids)
+            names.add(match.group(1))
+    return sorted(names)
 
 
 def chosen_steps(rows, available, count):
@@ -60,12 +68,13 @@ def load_factor(rows, step):
     return results.number(matching[-1]["load_factor"]) if matching else float("nan")
 
 
-def plot(directory, material_id, steps, angle, count):
+def plot(directory, series, steps, angle, count):
     rows = results.history(directory)
-    files = profile_files(directory, material_id)
+    files = profile_files(directory, series)
     if not files:
-        raise SystemExit("no interface-%d-NNNN.csv in %s: does the scene name "
-                         "the layer in Interfaces/Material ids?" % (material_id, directory))
+        raise SystemExit("no %s-NNNN.csv in %s: does the scene name the layer "
+                         "in Interfaces/Material ids, or have an Interface curve "
+                         "section?" % (series, directory))
     if steps:
         missing = [s for s in steps if s not in files]
         if missing:
@@ -82,22 +91,40 @@ def plot(directory, material_id, steps, angle, count):
               ("shear_traction", "shear traction"),
               ("normal_traction", "normal traction (tension +)")]
     colours = plt.get_cmap("viridis")
-    series = [(s, False) for s in accepted] + [(s, True) for s in failed]
-    for index, (step, is_failure) in enumerate(series):
-        profile = [r for r in results.read_csv(files[step])
-                   if abs(results.number(r["angle"]) - angle) < 1e-6]
-        if not profile:
+    drawn = [(s, False) for s in accepted] + [(s, True) for s in failed]
+    profiles = {}
+    for step, _ in drawn:
+        profiles[step] = [r for r in results.read_csv(files[step])
+                          if abs(results.number(r["angle"]) - angle) < 1e-6]
+        if not profiles[step]:
             raise SystemExit("no station at %g degrees in %s" % (angle, files[step]))
+    # A failed state's displacements run away along the mechanism: its slip
+    # is drawn as the shape of its last increment, scaled to the largest
+    # converged slip, and its opening not at all.
+    largest_slip = max([abs(results.number(r["slip"])) for step in accepted
+                        for r in profiles[step]] + [0]) or 1
+    for index, (step, is_failure) in enumerate(drawn):
+        profile = profiles[step]
         colour = "tab:red" if is_failure else colours(index / max(len(accepted), 1))
         label = "step %d, load factor %.4g%s" % (
             step, load_factor(rows, step), " (failed: no equilibrium)" if is_failure else "")
         for run in sorted({r["run"] for r in profile}):
             points = [r for r in profile if r["run"] == run]
             s = [results.number(r["arc_length"]) for r in points]
+            first = run == sorted({r["run"] for r in profile})[0]
             for axis, (column, _) in zip(axes.flat, panels):
                 values = [results.number(r[column]) for r in points]
+                if is_failure and column == "slip":
+                    increment = [results.number(r["slip_increment"]) for r in points]
+                    scale = largest_slip / (max(abs(v) for v in increment) or 1)
+                    axis.plot(s, [scale * v for v in increment], ":", color=colour,
+                              label=label + ":\nshape of its last slip increment "
+                              "(the mechanism), scaled" if first else None)
+                    continue
+                if is_failure and column == "opening":
+                    continue
                 axis.plot(s, values, "--" if is_failure else "-", color=colour,
-                          label=label if run == points[0]["run"] and column == "slip" else None)
+                          label=label if first and column == "slip" else None)
                 plastic = [(x, y) for x, y, r in zip(s, values, points) if r["plastic"] == "1"]
                 elastic = [(x, y) for x, y, r in zip(s, values, points) if r["plastic"] != "1"]
                 if plastic:
@@ -105,11 +132,6 @@ def plot(directory, material_id, steps, angle, count):
                 if elastic:
                     axis.plot(*zip(*elastic), "o", color=colour, markersize=4,
                               markerfacecolor="white")
-            if is_failure:
-                increment = [results.number(r["slip_increment"]) for r in points]
-                axes.flat[0].plot(s, increment, ":", color="black",
-                                  label="its last increment of slip (the mechanism)"
-                                  if run == points[0]["run"] else None)
     for axis, (_, title) in zip(axes.flat, panels):
         axis.set_ylabel(title + "\n(scene units)")
         axis.axhline(0, color="grey", linewidth=0.5)
@@ -118,10 +140,12 @@ def plot(directory, material_id, steps, angle, count):
         axis.set_xlabel("arc length along the interface (mesh length units)")
     axes.flat[0].legend(fontsize=8)
     where = " at %g degrees" % angle if angle else ""
-    figure.suptitle("Interface (material id %d)%s: %s\nfilled markers: plastic; "
-                    "open: elastic" % (material_id, where, os.path.basename(os.path.normpath(directory))))
+    kind = ("zero-thickness elements on curve %s" % series.split("-")[-1]
+            if "curve" in series else "thin layer, material id %s" % series.split("-")[-1])
+    figure.suptitle("Interface (%s)%s: %s\nfilled markers: plastic; open: elastic"
+                    % (kind, where, os.path.basename(os.path.normpath(directory))))
     figure.tight_layout()
-    output = os.path.join(directory, "interface-%d.png" % material_id)
+    output = os.path.join(directory, series + ".png")
     figure.savefig(output, dpi=110)
     plt.close(figure)
     print("wrote", output)
@@ -131,8 +155,9 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("directory", help="a run's results directory")
-    parser.add_argument("--id", type=int, action="append",
-                        help="material id of the layer (default: every layer written)")
+    parser.add_argument("--series", action="append",
+                        help="interface-<id> (a thin layer) or interface-curve-<id> "
+                             "(zero-thickness elements); default: every one written")
     parser.add_argument("--steps", type=int, nargs="+",
                         help="load steps to draw (default: a few accepted steps "
                              "and the failure that ended the run)")
@@ -141,12 +166,15 @@ def main():
     parser.add_argument("--angle", type=float, default=0,
                         help="Fourier scenes: the station, in degrees (default 0)")
     arguments = parser.parse_args()
-    ids = arguments.id or layer_ids(arguments.directory)
-    if not ids:
-        raise SystemExit("no interface-<id>-NNNN.csv in %s: name the layer in "
-                         "Interfaces/Material ids" % arguments.directory)
-    for material_id in ids:
-        plot(arguments.directory, material_id, arguments.steps, arguments.angle,
+    if not os.path.isdir(arguments.directory):
+        raise SystemExit("%s is not a results directory" % arguments.directory)
+    names = arguments.series or all_series(arguments.directory)
+    if not names:
+        raise SystemExit("no interface-*-NNNN.csv in %s: name a thin layer in "
+                         "Interfaces/Material ids, or add an Interface curve "
+                         "section" % arguments.directory)
+    for series in names:
+        plot(arguments.directory, series, arguments.steps, arguments.angle,
              arguments.count)
 
 

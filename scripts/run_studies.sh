@@ -24,12 +24,16 @@ if [ "$which" = case1 ] || [ "$which" = all ]; then
   done
   "$thinlayer" prm/case1-stability-map.prm
   $plot scripts/plot_stability.py output/case1-stability-map
+  for scene in case1-inclined-adhesive-zero-thickness case1-inclined-frictional-zero-thickness; do
+    "$thinlayer" prm/$scene.prm
+  done
+  $plot scripts/plot_interface.py output/case1-inclined-adhesive-zero-thickness
   "$thinlayer" prm/prandtl-strip-footing.prm
   $plot scripts/plot_scene.py output/prandtl-strip-footing "(2 + pi) c"
 fi
 
 if [ "$which" = case2 ] || [ "$which" = all ]; then
-  for scene in case2-strip-footing case2-strip-footing-better-mesh; do
+  for scene in case2-strip-footing case2-strip-footing-better-mesh case2-strip-footing-zero-thickness; do
     "$thinlayer" prm/$scene.prm
     $plot scripts/plot_scene.py output/$scene "L C_w"
     $plot scripts/plot_interface.py output/$scene
@@ -39,7 +43,7 @@ if [ "$which" = case2 ] || [ "$which" = all ]; then
 fi
 
 if [ "$which" = case3 ] || [ "$which" = all ]; then
-  for scene in case3-circular-footing case3-circular-footing-better-mesh; do
+  for scene in case3-circular-footing case3-circular-footing-better-mesh case3-circular-footing-zero-thickness; do
     "$thinlayer" prm/$scene.prm
     $plot scripts/plot_scene.py output/$scene "pi R^2 C_w"
     $plot scripts/plot_interface.py output/$scene
@@ -53,6 +57,8 @@ if [ "$which" = case4 ] || [ "$which" = all ]; then
   "$thinlayer" prm/case4-rough-wall.prm
   $plot scripts/plot_interface.py output/case4-smooth-wall
   $plot scripts/plot_interface.py output/case4-rough-wall
+  "$thinlayer" prm/case4-rough-wall-zero-thickness.prm
+  $plot scripts/plot_interface.py output/case4-rough-wall-zero-thickness
   "$thinlayer" prm/case4-figure12.prm
   $plot scripts/plot_case4.py output/case4-smooth-wall output/case4-figure12
   "$thinlayer" prm/case4-study.prm

@@ -295,17 +295,17 @@ namespace thinlayer
   }
 
 
-  std::string
-  InterfaceProfile::csv(const Analysis<2> &analysis) const
+  Profile
+  InterfaceProfile::profile(const Analysis<2> &analysis) const
   {
-    std::vector<ProfileSample> where;
+    Profile result;
     for (const Sample &s : samples)
-      where.push_back({s.run, s.arc_length, s.position});
-    return profile_csv(where,
-                       analysis.get_kinematics(),
-                       [&](const unsigned int station) {
-                         return evaluate(analysis, station);
-                       });
+      result.samples.push_back({s.run, s.arc_length, s.position});
+    for (unsigned int station = 0;
+         station < analysis.get_kinematics().n_stations();
+         ++station)
+      result.stations.push_back(evaluate(analysis, station));
+    return result;
   }
 
 

@@ -165,27 +165,36 @@ namespace thinlayer
   void
   OutputWriter::write_interface_profiles(
     const unsigned int                   step,
+    const double                         load_factor,
     const Analysis<2>                   &analysis,
-    const std::vector<InterfaceProfile> &interfaces)
+    const std::vector<InterfaceProfile> &interfaces,
+    const bool                           with_vtu)
   {
+    const Kinematics &kinematics = analysis.get_kinematics();
+    // Each profile as NAME-NNNN.csv, and with_vtu as NAME-NNNN.vtu listed
+    // in NAME.pvd.
+    const auto write = [&](const std::string &base, const Profile &profile) {
+      std::ostringstream name;
+      name << base << '-' << std::setw(4) << std::setfill('0') << step;
+      write_file(name.str() + ".csv", profile_csv(profile, kinematics));
+      if (!with_vtu)
+        return;
+      write_file(name.str() + ".vtu", profile_vtu(profile, kinematics));
+      auto &records = profile_records[base];
+      records.emplace_back(load_factor, name.str() + ".vtu");
+      std::ostringstream pvd;
+      DataOutBase::write_pvd_record(pvd, records);
+      write_file(base + ".pvd", pvd.str());
+    };
     for (const InterfaceProfile &interface : interfaces)
-      {
-        std::ostringstream name;
-        name << "interface-" << static_cast<int>(interface.get_material_id())
-             << '-' << std::setw(4) << std::setfill('0') << step << ".csv";
-        write_file(name.str(), interface.csv(analysis));
-      }
+      write("interface-" + std::to_string(interface.get_material_id()),
+            interface.profile(analysis));
     const ZeroThicknessElements &elements = analysis.get_interface_elements();
     for (const types::boundary_id curve : elements.curve_ids())
-      {
-        std::ostringstream name;
-        name << "interface-curve-" << static_cast<int>(curve) << '-'
-             << std::setw(4) << std::setfill('0') << step << ".csv";
-        write_file(name.str(),
-                   elements.csv(curve,
-                                analysis.get_modes(),
-                                analysis.is_pending()));
-      }
+      write("interface-curve-" + std::to_string(curve),
+            elements.profile(curve,
+                             analysis.get_modes(),
+                             analysis.is_pending()));
   }
 
 

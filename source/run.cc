@@ -297,7 +297,8 @@ namespace thinlayer
                                          analysis,
                                          p.output.view_slices);
             writer.write_displacements(analysis, p.monitors.displacement_angle);
-            writer.write_interface_profiles(a.step, analysis, interfaces);
+            writer.write_interface_profiles(
+              a.step, a.load_factor, analysis, interfaces, p.output.write_vtu);
           }
       }
       print_attempt(a.step,

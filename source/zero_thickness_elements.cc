@@ -619,8 +619,8 @@ namespace thinlayer
   }
 
 
-  std::string
-  ZeroThicknessElements::csv(
+  Profile
+  ZeroThicknessElements::profile(
     const types::boundary_id                       curve,
     const std::vector<std::unique_ptr<ModeState>> &modes,
     const bool                                     pending) const
@@ -638,39 +638,40 @@ namespace thinlayer
     for (const auto &t : totals)
       total.push_back(&t);
 
-    std::vector<ProfileSample> samples;
-    std::vector<unsigned int>  indices;
+    Profile                   result;
+    std::vector<unsigned int> indices;
     for (unsigned int p = 0; p < points.size(); ++p)
       if (points[p].curve == curve)
         {
-          samples.push_back(
+          result.samples.push_back(
             {points[p].run, points[p].arc_length, points[p].position});
           indices.push_back(p);
         }
-    return profile_csv(samples, *kinematics, [&](const unsigned int s) {
-      std::vector<InterfaceValues> values;
-      for (const unsigned int p : indices)
-        {
-          const InterfaceLaw        &law   = *elements[points[p].element].law;
-          const InterfacePointState &state = states[p * n_stations + s];
-          const Tensor<1, 3>         jump  = local_jump(points[p], s, total);
-          const Tensor<1, 3> djump = local_jump(points[p], s, increment);
-          InterfaceValues    v;
-          v.slip                        = jump[0];
-          v.opening                     = jump[1];
-          v.slip_out_of_plane           = jump[2];
-          v.slip_increment              = djump[0];
-          v.opening_increment           = djump[1];
-          v.shear_traction              = state.traction[0];
-          v.normal_traction             = state.traction[1];
-          v.shear_traction_out_of_plane = state.traction[2];
-          v.yield_ratio                 = law.can_yield()
-                                            ? law.yield_ratio(state.traction)
-                                            : std::numeric_limits<double>::quiet_NaN();
-          v.plastic                     = state.yielding;
-          values.push_back(v);
-        }
-      return values;
-    });
+    for (unsigned int s = 0; s < n_stations; ++s)
+      {
+        std::vector<InterfaceValues> &values = result.stations.emplace_back();
+        for (const unsigned int p : indices)
+          {
+            const InterfaceLaw        &law   = *elements[points[p].element].law;
+            const InterfacePointState &state = states[p * n_stations + s];
+            const Tensor<1, 3>         jump  = local_jump(points[p], s, total);
+            const Tensor<1, 3> djump = local_jump(points[p], s, increment);
+            InterfaceValues    v;
+            v.slip                        = jump[0];
+            v.opening                     = jump[1];
+            v.slip_out_of_plane           = jump[2];
+            v.slip_increment              = djump[0];
+            v.opening_increment           = djump[1];
+            v.shear_traction              = state.traction[0];
+            v.normal_traction             = state.traction[1];
+            v.shear_traction_out_of_plane = state.traction[2];
+            v.yield_ratio                 = law.can_yield()
+                                              ? law.yield_ratio(state.traction)
+                                              : std::numeric_limits<double>::quiet_NaN();
+            v.plastic                     = state.yielding;
+            values.push_back(v);
+          }
+      }
+    return result;
   }
 } // namespace thinlayer

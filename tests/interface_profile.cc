@@ -108,8 +108,10 @@ namespace
                     out_of_plane < 1e-12 ? "zero" : "NOT zero");
 
         // The run and its arc length, from the CSV.
-        std::istringstream csv(profile.csv(analysis));
-        std::string        line;
+        std::istringstream csv(
+          thinlayer::profile_csv(profile.profile(analysis),
+                                 analysis.get_kinematics()));
+        std::string line;
         std::getline(csv, line);
         double previous = -1, first = -1, last = -1, x_previous = -1;
         bool   one_run = true, increasing = true, rightwards = true;

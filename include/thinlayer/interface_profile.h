@@ -59,12 +59,9 @@ namespace thinlayer
     std::vector<InterfaceValues>
     evaluate(const Analysis<2> &analysis, const unsigned int station) const;
 
-    /**
-     * The profile as CSV: one row per sample and station, with the run,
-     * arc length, position, station angle (degrees) and the values.
-     */
-    std::string
-    csv(const Analysis<2> &analysis) const;
+    /// The values at every sample and station.
+    Profile
+    profile(const Analysis<2> &analysis) const;
 
     /**
      * Cell averages of slip, opening, shear and normal traction at station

@@ -5,7 +5,6 @@
 
 #include <thinlayer/kinematics.h>
 
-#include <functional>
 #include <string>
 #include <vector>
 
@@ -55,15 +54,31 @@ namespace thinlayer
 
 
   /**
+   * An interface's profile at one state: where its samples lie, and their
+   * values at every station (one station in plane strain).
+   */
+  struct Profile
+  {
+    std::vector<ProfileSample>                samples;
+    std::vector<std::vector<InterfaceValues>> stations;
+  };
+
+
+  /**
    * The CSV of a profile (thin layer or zero-thickness elements): one row
    * per sample and station, the run, arc length, position, station angle
-   * (degrees) and the InterfaceValues that @p values gives for a station.
+   * (degrees) and the values.
    */
   std::string
-  profile_csv(
-    const std::vector<ProfileSample>                                &samples,
-    const Kinematics                                                &kinematics,
-    const std::function<std::vector<InterfaceValues>(unsigned int)> &values);
+  profile_csv(const Profile &profile, const Kinematics &kinematics);
+
+  /**
+   * The profile as a VTU for ParaView: each run a polyline through its
+   * samples (z = 0), the values as point data (in Fourier scenes one set
+   * per station, suffixed with its angle in degrees).
+   */
+  std::string
+  profile_vtu(const Profile &profile, const Kinematics &kinematics);
 
 
 } // namespace thinlayer

@@ -71,14 +71,18 @@ namespace thinlayer
                  const std::vector<InterfaceProfile> &interfaces);
 
     /**
-     * The profile of every one of @p interfaces at load step @p step, as
-     * interface-<id>-NNNN.csv (InterfaceProfile::csv()), and of every curve
-     * of zero-thickness elements as interface-curve-<id>-NNNN.csv.
+     * The profile of every one of @p interfaces at load step @p step
+     * (load factor @p load_factor), as interface-<id>-NNNN.csv, and of
+     * every curve of zero-thickness elements as interface-curve-<id>-NNNN.csv;
+     * @p with_vtu, also each as a VTU polyline, listed in
+     * interface-<id>.pvd and interface-curve-<id>.pvd.
      */
     void
     write_interface_profiles(const unsigned int                   step,
+                             const double                         load_factor,
                              const Analysis<2>                   &analysis,
-                             const std::vector<InterfaceProfile> &interfaces);
+                             const std::vector<InterfaceProfile> &interfaces,
+                             const bool                           with_vtu);
 
     /**
      * The body revolved about its axis (revolved_view_vtu(), @p slices
@@ -114,6 +118,8 @@ namespace thinlayer
     std::ofstream                               history;
     std::vector<std::pair<double, std::string>> pvd_records;
     std::vector<std::pair<double, std::string>> revolved_records;
+    std::map<std::string, std::vector<std::pair<double, std::string>>>
+      profile_records;
   };
 } // namespace thinlayer
 

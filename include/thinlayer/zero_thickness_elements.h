@@ -155,14 +155,14 @@ namespace thinlayer
     curve_ids() const;
 
     /**
-     * The profile of curve @p curve, as InterfaceProfile::csv(): with the
-     * displacement of every mode in @p modes (accepted solution plus the
-     * pending increment where @p pending).
+     * The profile of curve @p curve: with the displacement of every mode
+     * in @p modes (the accepted solution plus the pending increment where
+     * @p pending).
      */
-    std::string
-    csv(const types::boundary_id                       curve,
-        const std::vector<std::unique_ptr<ModeState>> &modes,
-        const bool                                     pending) const;
+    Profile
+    profile(const types::boundary_id                       curve,
+            const std::vector<std::unique_ptr<ModeState>> &modes,
+            const bool                                     pending) const;
     /// @}
 
   private:
