@@ -77,10 +77,12 @@ else
   build_in "$debug" Debug
   (cd "$debug" && ctest --output-on-failure -j"$(nproc)")
 
-  # valgrind: a plane-strain scene (the default method, Newton included) and
-  # a Fourier one, with their VTU output, each about 20 s.
+  # valgrind: a plane-strain scene (the default method, Newton included), a
+  # Fourier one, and one with zero-thickness interface elements (the mesh
+  # split along a curve, Newton's singular tangent at the mechanism), with
+  # their VTU output, each about 20 s.
   mkdir -p "$build/valgrind"
-  for scene in case2_default_thin fourier_cylinder_plastic; do
+  for scene in case2_default_thin fourier_cylinder_plastic case2_zero_thickness; do
     echo "thinlayer setup: valgrind on tests/$scene.prm"
     if ! valgrind -q --error-exitcode=99 "$build/thinlayer" "$top/tests/$scene.prm" \
          -s "Output/Directory=$build/valgrind/$scene" > "$build/valgrind/$scene.log" 2>&1; then
