@@ -20,10 +20,8 @@ paper's average stress in the column, which the zero-thickness wall does
 not have), against CP2's 2.6 (the slip-line value is 2.571).
 """
 import argparse
-import json
 import math
 import os
-import subprocess
 import sys
 
 import matplotlib
@@ -32,61 +30,48 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from run import results, write_results  # noqa: E402 (scripts/ on the path)
+from outcomes import run  # noqa: E402 (a run by the default method)
 
 TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-THINLAYER = os.environ.get("THINLAYER", os.path.join(TOP, "build", "thinlayer"))
 OUT = os.path.join(TOP, "output", "benchmarks", "interfaces")
 
 E_OVER_L = 1e5  # every case: E = 1e5 of the soil or blocks, L = 1
 
 # case: title, thin-layer file, its geometry with {ar}, layer material id;
-# zero-thickness file, its interface curves, the curve profiled; entries for
-# both models.
+# zero-thickness file, its geometry, its interface curves, the curve
+# profiled; entries for both models.
 CASES = {
     "case1": ("Case 1, adhesive, alpha 45",
               "prm/case1-inclined-adhesive.prm",
               "alpha=45, aspect_ratio={ar}, elements_along=8, elements_block=8", 2,
-              "prm/case1-inclined-adhesive-zero-thickness.prm", [3], 3, []),
+              "prm/case1-inclined-adhesive-zero-thickness.prm",
+              "alpha=45, elements_along=8, elements_block=8, zero_thickness=1", [3], 3, []),
     "case2": ("Case 2, strip footing",
               "prm/case2-strip-footing-better-mesh.prm",
               "half_width=1, width=5, depth=3, aspect_ratio={ar}, n_footing=8, "
               "n_side=12, n_depth=10, interface_beyond_footing=0", 2,
-              "prm/case2-strip-footing-zero-thickness.prm", [5], 5, []),
+              "prm/case2-strip-footing-zero-thickness.prm",
+              "half_width=1, width=5, depth=3, n_footing=8, n_side=12, n_depth=10, "
+              "zero_thickness=1", [5], 5, []),
     "case3": ("Case 3, circular footing",
               "prm/case3-circular-footing-better-mesh.prm",
               "half_width=1, width=5, depth=3, aspect_ratio={ar}, n_footing=8, "
               "n_side=12, n_depth=10, interface_beyond_footing=0", 2,
-              "prm/case3-circular-footing-zero-thickness.prm", [5], 5, []),
+              "prm/case3-circular-footing-zero-thickness.prm",
+              "half_width=1, width=5, depth=3, n_footing=8, n_side=12, n_depth=10, "
+              "zero_thickness=1", [5], 5, []),
     "case4": ("Case 4, rough wall",
               "prm/case4-rough-wall.prm",
               "wall_height=1, width=3, depth=2, aspect_ratio={ar}, n_wall=10, "
               "n_below=5, n_x=12", 2,
-              "prm/case4-rough-wall-zero-thickness.prm", [6, 7], 6,
+              "prm/case4-rough-wall-zero-thickness.prm",
+              "wall_height=1, width=3, depth=2, aspect_ratio=10, n_wall=10, n_below=5, "
+              "n_x=12, zero_thickness=1", [6, 7], 6,
               ["Monitors/Load measure=reaction", "Monitors/Load boundary id=1",
                "Monitors/Load component=x", "Monitors/Load scale=1"]),
 }
 ASPECT_RATIOS = [10, 100, 1000, 10000]
 STIFFNESS_FACTORS = [10, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8]
-DEFAULT_SOLVER = ["Solver/Method=accelerated with newton fallback",
-                  "Solver/Convergence criterion=default",
-                  "Solver/Tolerance=1e-4",
-                  "Solver/Maximum iterations=250"]
-
-
-def run(prm, entries, directory):
-    command = [THINLAYER, os.path.join(TOP, prm)]
-    for entry in entries + ["Loading/Collapse resolution=0.005",
-                            "Output/Directory=" + directory,
-                            "Output/Write VTU=false",
-                            "Output/Print timing=false"]:
-        command += ["-s", entry]
-    done = subprocess.run(command, capture_output=True, text=True)
-    if done.returncode != 0:
-        return {"outcome": "error", "reason": done.stderr.strip()[-200:]}
-    with open(os.path.join(directory, "summary.json")) as f:
-        return json.load(f)
-
-
 def oscillation(directory, pattern):
     """Median |second difference| over median |value| of the normal
     traction along the first run at angle 0, at the last accepted step."""
@@ -213,12 +198,12 @@ def main():
     for case in arguments.cases.split(","):
         if case not in CASES:
             sys.exit("unknown case %r; expected one of %s" % (case, ", ".join(CASES)))
-        title, thin, geometry, material, zero, curves, profiled, common = CASES[case]
+        (title, thin, geometry, material, zero, zero_geometry, curves, profiled,
+         common) = CASES[case]
         for ratio in ratios:
             directory = os.path.join(OUT, "%s-thin-%d" % (case, ratio))
-            summary = run(thin, DEFAULT_SOLVER + [
-                "Mesh/Geometry parameters=" + geometry.format(ar=ratio),
-                "Interfaces/Material ids=%d" % material] + common, directory)
+            summary = run(thin, geometry.format(ar=ratio), "default", directory,
+                          ["Interfaces/Material ids=%d" % material] + common)
             rows.append(measure(case, "thin layer", ratio, summary, directory,
                                 "interface-%d-%%04d.csv" % material))
             print(format_row(rows[-1]), flush=True)
@@ -228,7 +213,7 @@ def main():
             for curve in curves:
                 entries += ["Interface curve %d/Normal stiffness=%g" % (curve, factor * E_OVER_L),
                             "Interface curve %d/Shear stiffness=%g" % (curve, factor * E_OVER_L)]
-            summary = run(zero, entries + common, directory)
+            summary = run(zero, zero_geometry, "default", directory, entries + common)
             rows.append(measure(case, "zero thickness", factor, summary, directory,
                                 "interface-curve-%d-%%04d.csv" % profiled))
             print(format_row(rows[-1]), flush=True)

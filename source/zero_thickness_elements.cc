@@ -26,6 +26,18 @@ namespace thinlayer
       std::array<Point<2>, 2> ends;
     };
 
+    /// One vector of every mode (ModeState::*@p member), for the point
+    /// rules.
+    std::vector<Vector<double> *>
+    mode_vectors(const std::vector<std::unique_ptr<ModeState>> &modes,
+                 Vector<double> ModeState::*member)
+    {
+      std::vector<Vector<double> *> vectors;
+      for (const auto &mode : modes)
+        vectors.push_back(&((*mode).*member));
+      return vectors;
+    }
+
     bool
     lower_left(const Point<2> &a, const Point<2> &b, const double tolerance)
     {
@@ -395,43 +407,64 @@ namespace thinlayer
   }
 
 
+  template <typename Rule>
   unsigned int
-  ZeroThicknessElements::viscoplastic_update(
-    std::vector<std::unique_ptr<ModeState>> &modes)
+  ZeroThicknessElements::for_each_point(
+    std::vector<std::unique_ptr<ModeState>> &modes,
+    const Rule                              &rule)
   {
-    std::vector<const Vector<double> *> increments;
-    std::vector<Vector<double> *>       targets;
-    for (auto &mode : modes)
-      {
-        increments.push_back(&mode->step_increment);
-        targets.push_back(&mode->body_load_change);
-      }
+    const auto increments_of_modes =
+      mode_vectors(modes, &ModeState::step_increment);
+    const std::vector<const Vector<double> *> increments(
+      increments_of_modes.begin(), increments_of_modes.end());
     const unsigned int n_stations = kinematics->n_stations();
     unsigned int       n_yielding = 0;
     for (unsigned int p = 0; p < points.size(); ++p)
       for (unsigned int s = 0; s < n_stations; ++s)
-        {
-          const InterfaceLaw  &law   = *elements[points[p].element].law;
-          InterfacePointState &state = states[p * n_stations + s];
-          const Tensor<1, 3>   jump  = local_jump(points[p], s, increments);
-          state.traction             = state.converged_traction +
-                           law.elastic_traction(jump - state.step_plastic_jump);
-          state.pending_plastic_jump = 0;
-          state.yielding             = false;
-          if (!law.can_yield())
-            continue;
-          const double F = law.yield_function(state.traction);
-          if (F <= 0)
-            continue;
-          state.yielding = true;
-          ++n_yielding;
-          const Tensor<1, 3> plastic = (law.viscoplastic_time_step() * F) *
-                                       law.flow_direction(state.traction);
-          state.step_plastic_jump += plastic;
-          state.pending_plastic_jump = plastic;
-          add_forces(points[p], s, law.elastic_traction(plastic), targets);
-        }
+        n_yielding += rule(points[p],
+                           s,
+                           *elements[points[p].element].law,
+                           states[p * n_stations + s],
+                           local_jump(points[p], s, increments),
+                           p * n_stations + s);
     return n_yielding;
+  }
+
+
+  unsigned int
+  ZeroThicknessElements::viscoplastic_update(
+    std::vector<std::unique_ptr<ModeState>> &modes)
+  {
+    std::vector<Vector<double> *> targets =
+      mode_vectors(modes, &ModeState::body_load_change);
+    // The paper's rule: the traction of the step's jump less its
+    // viscoplastic jump; where F > 0, a viscoplastic jump increment
+    // dt F dQ/dt whose K-projection is a body load.
+    return for_each_point(
+      modes,
+      [&](const IntegrationPoint &point,
+          const unsigned int      s,
+          const InterfaceLaw     &law,
+          InterfacePointState    &state,
+          const Tensor<1, 3>     &jump,
+          const unsigned int /*point_station*/) {
+        state.traction = state.converged_traction +
+                         law.elastic_traction(jump - state.step_plastic_jump);
+        state.pending_plastic_jump = 0;
+        state.yielding             = false;
+        if (!law.can_yield())
+          return 0u;
+        const double F = law.yield_function(state.traction);
+        if (F <= 0)
+          return 0u;
+        state.yielding             = true;
+        const Tensor<1, 3> plastic = (law.viscoplastic_time_step() * F) *
+                                     law.flow_direction(state.traction);
+        state.step_plastic_jump += plastic;
+        state.pending_plastic_jump = plastic;
+        add_forces(point, s, law.elastic_traction(plastic), targets);
+        return 1u;
+      });
   }
 
 
@@ -440,41 +473,36 @@ namespace thinlayer
     std::vector<std::unique_ptr<ModeState>> &modes,
     const bool                               with_tangents)
   {
-    std::vector<const Vector<double> *> increments;
-    std::vector<Vector<double> *>       forces, excess;
-    for (auto &mode : modes)
-      {
-        increments.push_back(&mode->step_increment);
-        forces.push_back(&mode->internal_forces);
-        excess.push_back(&mode->body_loads);
-      }
-    const unsigned int n_stations = kinematics->n_stations();
-    unsigned int       n_yielding = 0;
-    for (unsigned int p = 0; p < points.size(); ++p)
-      for (unsigned int s = 0; s < n_stations; ++s)
-        {
-          const InterfaceLaw  &law   = *elements[points[p].element].law;
-          InterfacePointState &state = states[p * n_stations + s];
-          const Tensor<1, 3>   trial =
-            state.converged_traction +
-            law.elastic_traction(local_jump(points[p], s, increments));
-          const InterfaceReturnMapping r =
-            law.return_mapping(trial, with_tangents);
-          state.traction = r.traction;
-          state.yielding = (r.region != InterfaceReturn::elastic);
-          if (with_tangents)
-            tangents[p * n_stations + s] = r.tangent;
-          if (state.yielding)
-            {
-              ++n_yielding;
-              state.step_plastic_jump = law.compliance() * (trial - r.traction);
-              add_forces(points[p], s, trial - r.traction, excess);
-            }
-          else
-            state.step_plastic_jump = 0;
-          add_forces(points[p], s, state.traction, forces);
-        }
-    return n_yielding;
+    std::vector<Vector<double> *> forces =
+      mode_vectors(modes, &ModeState::internal_forces);
+    std::vector<Vector<double> *> excess =
+      mode_vectors(modes, &ModeState::body_loads);
+    // The trial traction returned to the admissible set: the traction
+    // gives the internal forces, the excess a body load.
+    return for_each_point(modes,
+                          [&](const IntegrationPoint &point,
+                              const unsigned int      s,
+                              const InterfaceLaw     &law,
+                              InterfacePointState    &state,
+                              const Tensor<1, 3>     &jump,
+                              const unsigned int      point_station) {
+                            const Tensor<1, 3> trial =
+                              state.converged_traction +
+                              law.elastic_traction(jump);
+                            const InterfaceReturnMapping r =
+                              law.return_mapping(trial, with_tangents);
+                            state.traction = r.traction;
+                            state.yielding =
+                              (r.region != InterfaceReturn::elastic);
+                            if (with_tangents)
+                              tangents[point_station] = r.tangent;
+                            state.step_plastic_jump =
+                              law.compliance() * (trial - r.traction);
+                            if (state.yielding)
+                              add_forces(point, s, trial - r.traction, excess);
+                            add_forces(point, s, state.traction, forces);
+                            return state.yielding ? 1u : 0u;
+                          });
   }
 
 
@@ -482,9 +510,8 @@ namespace thinlayer
   ZeroThicknessElements::add_internal_forces(
     std::vector<std::unique_ptr<ModeState>> &modes) const
   {
-    std::vector<Vector<double> *> forces;
-    for (auto &mode : modes)
-      forces.push_back(&mode->internal_forces);
+    std::vector<Vector<double> *> forces =
+      mode_vectors(modes, &ModeState::internal_forces);
     const unsigned int n_stations = kinematics->n_stations();
     for (unsigned int p = 0; p < points.size(); ++p)
       for (unsigned int s = 0; s < n_stations; ++s)

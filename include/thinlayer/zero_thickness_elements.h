@@ -211,6 +211,16 @@ namespace thinlayer
                const Tensor<1, 3>            &traction,
                std::vector<Vector<double> *> &targets) const;
 
+    /**
+     * Run @p rule(point, station, law, state, jump, point_station) at every
+     * point and station, with the jump of the modes' step increments; the
+     * sum of what it returns (its yielding count).
+     */
+    template <typename Rule>
+    unsigned int
+    for_each_point(std::vector<std::unique_ptr<ModeState>> &modes,
+                   const Rule                              &rule);
+
     /// The 3 x (modes x element DoFs) map from the element's DoFs of all
     /// modes to the local jump at point @p point and station @p s.
     void
