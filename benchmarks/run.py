@@ -28,6 +28,7 @@ Peak memory is the maximum resident set size reported by /usr/bin/time
 (about 170 MB of it are the libraries deal.II loads). THINLAYER in the
 environment names another binary (so that a build can go on meanwhile).
 """
+import argparse
 import csv
 import json
 import os
@@ -222,18 +223,31 @@ def method_entries(method, criterion):
 
 
 def main():
-    repeat = int(sys.argv[sys.argv.index("--repeat") + 1]) if "--repeat" in sys.argv else 3
+    parser = argparse.ArgumentParser(description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--quick", action="store_true", help="mesh level 1 only")
+    parser.add_argument("--repeat", type=int, default=3,
+                        help="runs of each configuration; times are their median (default 3)")
+    which = parser.add_mutually_exclusive_group()
+    which.add_argument("--ladder", action="store_true", help="the cost ladder")
+    which.add_argument("--stability", action="store_true", help="the Case 1 stability maps")
+    which.add_argument("--performance", action="store_true",
+                       help="Prandtl with 2048 and 8192 elements")
+    arguments = parser.parse_args()
+    repeat = arguments.repeat
+    if repeat < 1:
+        parser.error("--repeat: expected at least 1")
     os.makedirs(OUT, exist_ok=True)
-    if "--ladder" in sys.argv:
+    if arguments.ladder:
         ladder(repeat)
         return
-    if "--stability" in sys.argv:
+    if arguments.stability:
         stability()
         return
-    if "--performance" in sys.argv:
+    if arguments.performance:
         performance(repeat)
         return
-    quick = "--quick" in sys.argv
+    quick = arguments.quick
     rows = []
     for case, (prm, levels) in CASES.items():
         for level, geometry in sorted(levels.items()):

@@ -1,8 +1,12 @@
+#!/usr/bin/python3
 """Closed-form values the scripts and benchmarks compare thinlayer against.
 
 Each function names the body it is exact (or a bound) for, so that a table
-can say which truth a computed value is measured against.
+can say which truth a computed value is measured against. Run as a script,
+prints them for the paper's cases: Table 1 (Case 1) with the thin layer's
+upper bound at aspect ratios 10, 100 and 1000, and Case 4's K_pc.
 """
+import argparse
 import math
 
 
@@ -46,3 +50,24 @@ def passive_rough_wall(adhesion_ratio):
     K_pc = 1 + asin(a) + sqrt(1 - a^2), 2 for a smooth wall."""
     a = adhesion_ratio
     return 1 + math.asin(a) + math.sqrt(1 - a * a)
+
+
+def main():
+    argparse.ArgumentParser(description=__doc__,
+                            formatter_class=argparse.RawDescriptionHelpFormatter).parse_args()
+    print("Case 1, Table 1: P_ult / C_w, and the upper bound of a layer of aspect ratio")
+    print("| alpha | 1/(sin a cos a) | layer bound, 10 | 100 | 1000 |")
+    print("|---|---|---|---|---|")
+    for alpha in (10, 20, 30, 40, 45, 50, 60, 70, 80):
+        print("| %d | %.4f | %.4f | %.4f | %.4f |" % (
+            alpha, inclined_interface_load(alpha),
+            *(inclined_layer_upper_bound(alpha, r) for r in (10, 100, 1000))))
+    print("\nCase 4: slip-line K_pc of a weightless Tresca soil")
+    print("| C_w / c_u | K_pc |")
+    print("|---|---|")
+    for a in (0, 0.5, 1):
+        print("| %g | %.4f |" % (a, passive_rough_wall(a)))
+
+
+if __name__ == "__main__":
+    main()

@@ -11,10 +11,10 @@ Run with Debian's python3 (it has python3-matplotlib):
 Each reads DIR/sweep.csv and the runs' history.csv files and writes PNG
 (and for table1 a Markdown and a CSV table) into DIR.
 """
+import argparse
 import csv
 import math
 import os
-import sys
 
 import matplotlib
 
@@ -182,6 +182,9 @@ def frictional(directory):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 3 or sys.argv[1] not in ("table1", "figure3", "frictional"):
-        sys.exit(__doc__)
-    {"table1": table1, "figure3": figure3, "frictional": frictional}[sys.argv[1]](sys.argv[2])
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("figure", choices=("table1", "figure3", "frictional"))
+    parser.add_argument("directory", help="the results directory of the study")
+    arguments = parser.parse_args()
+    {"table1": table1, "figure3": figure3, "frictional": frictional}[arguments.figure](
+        arguments.directory)

@@ -8,9 +8,9 @@ prm/case4-figure12.prm (a sweep over the wall column's adhesion). Writes
 figure12.png (passive force against wall movement for each C_w / c_u) and
 table2.md (computed K_pc against CP2's 2.0, 2.4, 2.6) into ROUGH_SWEEP_DIR.
 """
+import argparse
 import csv
 import os
-import sys
 
 import matplotlib
 
@@ -64,6 +64,8 @@ def main(smooth, rough):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 3:
-        sys.exit(__doc__)
-    main(*sys.argv[1:])
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("smooth", help="results of prm/case4-smooth-wall.prm")
+    parser.add_argument("rough", help="results of prm/case4-figure12.prm (a sweep)")
+    arguments = parser.parse_args()
+    main(arguments.smooth, arguments.rough)

@@ -10,11 +10,11 @@ displacement_vectors.png (the displacements at the last step and that
 step's increment, which at a failed step is the mechanism, drawn as arrows
 at the vertices).
 """
+import argparse
 import csv
 import json
 import math
 import os
-import sys
 
 import matplotlib
 
@@ -78,6 +78,9 @@ def main(directory, reference_label="analytic"):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) not in (2, 3):
-        sys.exit(__doc__)
-    main(*sys.argv[1:])
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("directory", help="a run's results directory")
+    parser.add_argument("reference_label", nargs="?", default="analytic",
+                        help="the name of the analytic reference in the legend")
+    arguments = parser.parse_args()
+    main(arguments.directory, arguments.reference_label)

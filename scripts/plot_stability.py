@@ -10,10 +10,10 @@ value ('x' where no step failed, i.e. collapse was not detected) and the
 drift into illegal stress space, the largest max_yield_ratio over the
 converged steps. stability.md has the same as a table.
 """
+import argparse
 import csv
 import math
 import os
-import sys
 
 import matplotlib
 
@@ -79,6 +79,6 @@ def main(directory):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 2:
-        sys.exit(__doc__)
-    main(sys.argv[1])
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("directory", help="the results directory of a stability-map sweep")
+    main(parser.parse_args().directory)

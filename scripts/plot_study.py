@@ -10,10 +10,10 @@ against X_NAME; open markers where no step failed, i.e. collapse was not
 detected within the load programme) and study.md (the same as a table, with
 iterations and DoFs).
 """
+import argparse
 import csv
 import math
 import os
-import sys
 
 import matplotlib
 
@@ -91,6 +91,8 @@ def main(directory, x_name):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 3:
-        sys.exit(__doc__)
-    main(*sys.argv[1:])
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("directory", help="the results directory of a sweep")
+    parser.add_argument("x_name", help="the swept name on the horizontal axis")
+    arguments = parser.parse_args()
+    main(arguments.directory, arguments.x_name)

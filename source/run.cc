@@ -140,6 +140,8 @@ namespace thinlayer
         /// A converged attempt on the mechanism (mechanism_knee_ratio):
         /// never accepted under automatic stepping.
         bool on_mechanism;
+        /// A converged attempt moving against its load: counted as failed.
+        bool against_load;
       };
 
       /// Solve the step to @p load_factor and measure it.
@@ -225,11 +227,12 @@ namespace thinlayer
             }
           result.stopped              = true;
           result.stopped_on_mechanism = a.on_mechanism;
+          result.against_load         = a.against_load;
           result.non_finite           = a.result.non_finite;
           result.failed_load_factor   = a.load_factor;
           result.stiffness_ratio      = a.stiffness_ratio;
           result.growth_ratio         = a.result.growth_ratio;
-          if (stepping.automatic() && !a.result.non_finite &&
+          if (stepping.automatic() && !a.result.non_finite && !a.against_load &&
               analysis.has_external_load() &&
               !shows_mechanism(a.stiffness_ratio, a.result.growth_ratio))
             probe_beyond(a);
@@ -242,7 +245,7 @@ namespace thinlayer
     Programme::Attempt
     Programme::attempt(const unsigned int step, const double load_factor)
     {
-      Attempt a{step, load_factor, {}, 0, 0, false};
+      Attempt a{step, load_factor, {}, 0, 0, false, false};
       {
         TimerOutput::Scope scope(timer, "load steps");
         const StepProgress progress(out, step, load_factor);
@@ -258,7 +261,18 @@ namespace thinlayer
       result.total_iterations += a.result.iterations;
       ++result.attempts;
       a.stiffness_ratio = analysis.secant_stiffness_ratio();
-      a.on_mechanism    = a.result.converged &&
+      // A state that does negative work on its load increment is no
+      // response of an elastic-plastic body (Drucker's stability): the
+      // iterations have found a spurious equilibrium (seen with the
+      // default method on Case 3's layer at aspect ratio 10000, at
+      // displacements 1e9 times the elastic ones). It is a failed attempt.
+      if (a.result.converged && analysis.has_external_load() &&
+          a.stiffness_ratio < 0)
+        {
+          a.result.converged = false;
+          a.against_load     = true;
+        }
+      a.on_mechanism = a.result.converged &&
                        p.loading.collapse_resolution > 0 &&
                        analysis.has_external_load() && a.stiffness_ratio >= 0 &&
                        a.stiffness_ratio < mechanism_knee_ratio;

@@ -88,6 +88,13 @@ namespace thinlayer
     if (run.non_finite)
       s.reason =
         "values that are not finite numbers" + at(run.failed_load_factor);
+    else if (run.against_load)
+      s.reason = "the step" + at(run.failed_load_factor) +
+                 " converged to a state moving against its load (secant "
+                 "stiffness " +
+                 printf("%.2g", run.stiffness_ratio) +
+                 " of the elastic one): a spurious equilibrium, no response "
+                 "of the body and no mechanism";
     else if (!analysis.has_external_load())
       s.reason = "the step failed" + at(run.failed_load_factor) +
                  " under prescribed displacement, where a failed step is "

@@ -72,11 +72,16 @@ namespace thinlayer
     /// How a run that a failed step ended, ended.
     bool stopped = false;
     /// The step that ended it converged, on the mechanism.
-    bool   stopped_on_mechanism = false;
-    bool   non_finite           = false;
-    double failed_load_factor   = std::numeric_limits<double>::quiet_NaN();
-    double stiffness_ratio      = std::numeric_limits<double>::quiet_NaN();
-    double growth_ratio         = std::numeric_limits<double>::quiet_NaN();
+    bool stopped_on_mechanism = false;
+    /// The step that ended it converged to a state moving against its load
+    /// (negative secant stiffness): no state the body can reach, since
+    /// under a load increment an elastic-plastic body does positive work
+    /// (Drucker), and no mechanism either.
+    bool   against_load       = false;
+    bool   non_finite         = false;
+    double failed_load_factor = std::numeric_limits<double>::quiet_NaN();
+    double stiffness_ratio    = std::numeric_limits<double>::quiet_NaN();
+    double growth_ratio       = std::numeric_limits<double>::quiet_NaN();
     /// Where a probe beyond the failed step showed the mechanism.
     double probe_load_factor = std::numeric_limits<double>::quiet_NaN();
     /// The signal that interrupted the run (0: none), and the load
