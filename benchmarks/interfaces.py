@@ -159,15 +159,10 @@ def chart(rows, path):
                     label="no collapse load: not converged, or refused\n"
                           "(k above 1e6 E/h of the cells beside it)")
     axes[0][1].legend(fontsize=8)
-    figure.text(0.01, 0.003,
-                "Case 3's thin layer at aspect ratio 10000: the default method accepted a "
-                "state at load factor 0.5 whose displacements are 1e9 times the elastic "
-                "ones,\nmoving against the load; the run's 'collapse' there is that "
-                "spurious state, not the body's.", fontsize=8)
     axes[0][0].set_title("thin layers (one element thick)")
     axes[0][1].set_title("zero-thickness (Goodman-type) elements")
     figure.suptitle("Thin layers against zero-thickness interface elements, default method")
-    figure.tight_layout(rect=(0, 0.03, 1, 1))
+    figure.tight_layout()
     figure.savefig(path, dpi=100)
     plt.close(figure)
 
