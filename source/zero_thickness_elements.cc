@@ -1,5 +1,4 @@
 #include <deal.II/base/quadrature_lib.h>
-#include <deal.II/grid/grid_tools.h>
 
 #include <thinlayer/input_error.h>
 #include <thinlayer/zero_thickness_elements.h>
@@ -14,18 +13,6 @@ namespace thinlayer
 {
   namespace
   {
-    using CellIterator = DoFHandler<2>::active_cell_iterator;
-
-    /// A cell side on an interface curve.
-    struct Side
-    {
-      CellIterator            cell;
-      unsigned int            face;
-      types::boundary_id      curve;
-      Point<2>                centre;
-      std::array<Point<2>, 2> ends;
-    };
-
     /// One vector of every mode (ModeState::*@p member), for the point
     /// rules.
     std::vector<Vector<double> *>
@@ -36,14 +23,6 @@ namespace thinlayer
       for (const auto &mode : modes)
         vectors.push_back(&((*mode).*member));
       return vectors;
-    }
-
-    bool
-    lower_left(const Point<2> &a, const Point<2> &b, const double tolerance)
-    {
-      if (std::abs(a[0] - b[0]) > tolerance)
-        return a[0] < b[0];
-      return a[1] < b[1] - tolerance;
     }
   } // namespace
 
@@ -61,202 +40,22 @@ namespace thinlayer
     laws.clear();
     elements.clear();
     points.clear();
-    if (curves.empty())
-      return;
+    std::set<types::boundary_id> ids;
     for (const auto &[id, parameters] : curves)
-      laws[id] = std::make_unique<InterfaceLaw>(parameters);
-
-    const double tolerance =
-      1e-9 * GridTools::diameter(dof_handler.get_triangulation());
-    std::vector<Side> sides;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      for (const unsigned int f : cell->face_indices())
-        if (cell->at_boundary(f) && curves.count(cell->face(f)->boundary_id()))
-          sides.push_back(
-            {cell,
-             f,
-             cell->face(f)->boundary_id(),
-             cell->face(f)->center(),
-             {{cell->face(f)->vertex(0), cell->face(f)->vertex(1)}}});
-
-    // Pair facing sides; a pair is (minus side, plus side) once the runs
-    // give it a direction.
-    std::vector<std::pair<unsigned int, unsigned int>> pairs;
-    std::vector<int> partner(sides.size(), -1);
-    for (unsigned int i = 0; i < sides.size(); ++i)
-      if (partner[i] < 0)
-        {
-          for (unsigned int j = i + 1; j < sides.size(); ++j)
-            if (partner[j] < 0 && sides[j].curve == sides[i].curve &&
-                sides[j].cell != sides[i].cell &&
-                sides[j].centre.distance(sides[i].centre) < tolerance)
-              {
-                partner[i] = j;
-                partner[j] = i;
-                pairs.emplace_back(i, j);
-                break;
-              }
-          if (partner[i] < 0)
-            {
-              std::ostringstream message;
-              message << "every cell side on the curve to face another, as "
-                         "along a curve through the body; the side at ("
-                      << sides[i].centre << ") faces none";
-              throw InputError(parameter_file,
-                               InterfaceCurveParameters::section(
-                                 sides[i].curve),
-                               message.str());
-            }
-        }
-    for (const auto &[id, parameters] : curves)
-      if (std::none_of(sides.begin(), sides.end(), [id = id](const Side &s) {
-            return s.curve == id;
-          }))
-        throw InputError(parameter_file,
-                         InterfaceCurveParameters::section(id),
-                         "a physical curve of the mesh with cells on both "
-                         "sides; the mesh has no curve " +
-                           std::to_string(id));
-
-    // Runs: pairs chained through shared ends, each from its end nearest
-    // the lower left; the direction of travel is the tangent s.
-    const auto same = [&](const Point<2> &a, const Point<2> &b) {
-      return a.distance(b) < tolerance;
-    };
-    const auto n_neighbours = [&](const unsigned int k, const Point<2> &end) {
-      unsigned int count = 0;
-      for (unsigned int l = 0; l < pairs.size(); ++l)
-        if (l != k &&
-            sides[pairs[l].first].curve == sides[pairs[k].first].curve)
-          for (const Point<2> &e : sides[pairs[l].first].ends)
-            count += same(e, end);
-      return count;
-    };
-    std::vector<std::pair<Point<2>, std::pair<unsigned int, unsigned int>>>
-      starts; // (free end, (pair, which end))
-    for (unsigned int k = 0; k < pairs.size(); ++k)
-      for (unsigned int e = 0; e < 2; ++e)
-        if (n_neighbours(k, sides[pairs[k].first].ends[e]) == 0)
-          starts.push_back({sides[pairs[k].first].ends[e], {k, e}});
-    std::sort(starts.begin(), starts.end(), [&](const auto &a, const auto &b) {
-      return lower_left(a.first, b.first, tolerance);
-    });
-    for (unsigned int k = 0; k < pairs.size(); ++k)
-      starts.push_back({sides[pairs[k].first].ends[0], {k, 0}});
-
-
-    const FiniteElement<2>                    &fe = dof_handler.get_fe();
-    std::vector<types::global_dof_index>       cell_dofs(fe.n_dofs_per_cell());
-    std::vector<bool>                          done(pairs.size(), false);
-    std::map<types::boundary_id, unsigned int> runs;
-    for (const auto &start : starts)
       {
-        unsigned int k     = start.second.first;
-        Point<2>     entry = sides[pairs[k].first].ends[start.second.second];
-        if (done[k])
-          continue;
-        const types::boundary_id curve = sides[pairs[k].first].curve;
-        const unsigned int       run   = runs[curve]++;
-        double                   arc   = 0;
-        while (true)
-          {
-            done[k]              = true;
-            const Side    &first = sides[pairs[k].first];
-            const Point<2> exit =
-              same(first.ends[0], entry) ? first.ends[1] : first.ends[0];
-            const Tensor<1, 2> chord   = exit - entry;
-            const double       length  = chord.norm();
-            const Tensor<1, 2> tangent = chord / length;
-            const Tensor<1, 2> normal({-tangent[1], tangent[0]});
-            // The plus side is the one whose cell lies along +n.
-            const bool first_is_plus =
-              (first.cell->center() - first.centre) * normal > 0;
-            const Side &plus  = first_is_plus ? first : sides[pairs[k].second];
-            const Side &minus = first_is_plus ? sides[pairs[k].second] : first;
-
-            const InterfaceCurveParameters &p = curves.at(curve);
-            const double                    E =
-              std::min(materials.at(plus.cell->material_id()).youngs_modulus,
-                       materials.at(minus.cell->material_id()).youngs_modulus);
-            const double limit = max_stiffness_ratio * E / length;
-            for (const auto &[entry, k] :
-                 {std::pair<const char *, double>{"Normal stiffness",
-                                                  p.normal_stiffness},
-                  {"Shear stiffness", p.shear_stiffness}})
-              if (k > limit)
-                {
-                  std::ostringstream message;
-                  message << "at most " << max_stiffness_ratio
-                          << " E / h = " << limit << " for the element at ("
-                          << first.centre << ") (E = " << E
-                          << " of the cells beside it, "
-                          << "side h = " << length << "), got " << k
-                          << ": a stiffer interface adds no accuracy, and "
-                             "round-off takes its tractions";
-                  throw InputError(parameter_file,
-                                   InterfaceCurveParameters::section(curve) +
-                                     "/" + entry,
-                                   "expected " + message.str());
-                }
-            const Quadrature<1> rule =
-              p.integration == InterfaceCurveParameters::Integration::lobatto
-                ? Quadrature<1>(QGaussLobatto<1>(3))
-                : Quadrature<1>(QGauss<1>(p.points));
-
-            Element element{laws.at(curve).get(), {}};
-            std::map<types::global_dof_index, unsigned int> local;
-            for (unsigned int q = 0; q < rule.size(); ++q)
-              {
-                IntegrationPoint point;
-                point.element    = elements.size();
-                point.curve      = curve;
-                point.run        = run;
-                point.position   = entry + rule.point(q)[0] * chord;
-                point.arc_length = arc + rule.point(q)[0] * length;
-                point.tangent    = tangent;
-                point.normal     = normal;
-                point.weight     = rule.weight(q) * length *
-                               kinematics.area_factor(point.position);
-                for (const Side *side : {&plus, &minus})
-                  {
-                    const double           sign = (side == &plus) ? 1. : -1.;
-                    const dealii::Point<2> unit =
-                      mapping.transform_real_to_unit_cell(side->cell,
-                                                          point.position);
-                    side->cell->get_dof_indices(cell_dofs);
-                    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-                      {
-                        const double value = fe.shape_value(i, unit);
-                        if (std::abs(value) < 1e-12)
-                          continue;
-                        const auto [it, inserted] =
-                          local.emplace(cell_dofs[i], element.dofs.size());
-                        if (inserted)
-                          element.dofs.push_back(cell_dofs[i]);
-                        point.entries.push_back(
-                          {it->second,
-                           fe.system_to_component_index(i).first,
-                           sign * value});
-                      }
-                  }
-                points.push_back(point);
-              }
-            elements.push_back(element);
-            arc += length;
-
-            // The next pair of this curve sharing the exit.
-            int next = -1;
-            for (unsigned int l = 0; l < pairs.size() && next < 0; ++l)
-              if (!done[l] && sides[pairs[l].first].curve == curve)
-                for (const Point<2> &e : sides[pairs[l].first].ends)
-                  if (same(e, exit))
-                    next = l;
-            if (next < 0)
-              break;
-            k     = next;
-            entry = exit;
-          }
+        laws[id] = std::make_unique<InterfaceLaw>(parameters);
+        ids.insert(id);
       }
+    if (!ids.empty())
+      for (const FacingSides &pair :
+           pair_facing_sides(dof_handler, ids, parameter_file))
+        {
+          check_stiffness(pair,
+                          curves.at(pair.curve),
+                          materials,
+                          parameter_file);
+          add_element(pair, curves.at(pair.curve), dof_handler, mapping);
+        }
 
     states.assign(points.size() * kinematics.n_stations(),
                   InterfacePointState());
@@ -265,6 +64,101 @@ namespace thinlayer
       for (unsigned int s = 0; s < kinematics.n_stations(); ++s)
         tangents[p * kinematics.n_stations() + s] =
           elements[points[p].element].law->elasticity();
+  }
+
+
+  void
+  ZeroThicknessElements::check_stiffness(
+    const FacingSides                                      &pair,
+    const InterfaceCurveParameters                         &curve,
+    const std::map<types::material_id, MaterialParameters> &materials,
+    const std::string                                      &parameter_file)
+  {
+    const double h = pair.entry.distance(pair.exit);
+    const double E =
+      std::min(materials.at(pair.plus_cell->material_id()).youngs_modulus,
+               materials.at(pair.minus_cell->material_id()).youngs_modulus);
+    const double limit = max_stiffness_ratio * E / h;
+    for (const auto &[entry, stiffness] :
+         {std::pair<const char *, double>{"Normal stiffness",
+                                          curve.normal_stiffness},
+          {"Shear stiffness", curve.shear_stiffness}})
+      if (stiffness > limit)
+        {
+          std::ostringstream message;
+          message << "expected at most " << max_stiffness_ratio
+                  << " E / h = " << limit << " for the element at ("
+                  << 0.5 * (pair.entry + pair.exit) << ") (E = " << E
+                  << " of the cells beside it, side h = " << h << "), got "
+                  << stiffness
+                  << ": a stiffer interface adds no accuracy, and round-off "
+                     "takes its tractions";
+          throw InputError(parameter_file,
+                           InterfaceCurveParameters::section(pair.curve) + "/" +
+                             entry,
+                           message.str());
+        }
+  }
+
+
+  void
+  ZeroThicknessElements::add_element(const FacingSides              &pair,
+                                     const InterfaceCurveParameters &curve,
+                                     const DoFHandler<2> &dof_handler,
+                                     const Mapping<2>    &mapping)
+  {
+    const FiniteElement<2>              &fe = dof_handler.get_fe();
+    std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
+    const Tensor<1, 2>                   chord   = pair.exit - pair.entry;
+    const double                         length  = chord.norm();
+    const Tensor<1, 2>                   tangent = chord / length;
+    const Tensor<1, 2>                   normal({-tangent[1], tangent[0]});
+    const Quadrature<1>                  rule =
+      curve.integration == InterfaceCurveParameters::Integration::lobatto
+                         ? Quadrature<1>(QGaussLobatto<1>(3))
+                         : Quadrature<1>(QGauss<1>(curve.points));
+
+    Element element{laws.at(pair.curve).get(), {}};
+    std::map<types::global_dof_index, unsigned int> local;
+    for (unsigned int q = 0; q < rule.size(); ++q)
+      {
+        IntegrationPoint point;
+        point.element    = elements.size();
+        point.curve      = pair.curve;
+        point.run        = pair.run;
+        point.position   = pair.entry + rule.point(q)[0] * chord;
+        point.arc_length = pair.arc_length + rule.point(q)[0] * length;
+        point.tangent    = tangent;
+        point.normal     = normal;
+        point.weight =
+          rule.weight(q) * length * kinematics->area_factor(point.position);
+        // The jump: shape values on the plus side less those on the minus
+        // side, at the point's place in each cell.
+        for (const auto &[cell, sign] :
+             {std::pair<DoFHandler<2>::active_cell_iterator, double>{
+                pair.plus_cell, 1.},
+              {pair.minus_cell, -1.}})
+          {
+            const dealii::Point<2> unit =
+              mapping.transform_real_to_unit_cell(cell, point.position);
+            cell->get_dof_indices(cell_dofs);
+            for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+              {
+                const double value = fe.shape_value(i, unit);
+                if (std::abs(value) < 1e-12)
+                  continue;
+                const auto [it, inserted] =
+                  local.emplace(cell_dofs[i], element.dofs.size());
+                if (inserted)
+                  element.dofs.push_back(cell_dofs[i]);
+                point.entries.push_back({it->second,
+                                         fe.system_to_component_index(i).first,
+                                         sign * value});
+              }
+          }
+        points.push_back(point);
+      }
+    elements.push_back(element);
   }
 
 

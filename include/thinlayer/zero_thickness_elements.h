@@ -10,6 +10,7 @@
 #include <deal.II/lac/sparse_matrix.h>
 
 #include <thinlayer/interface_law.h>
+#include <thinlayer/interface_pairing.h>
 #include <thinlayer/interface_values.h>
 #include <thinlayer/kinematics.h>
 #include <thinlayer/mode_state.h>
@@ -17,6 +18,7 @@
 
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -210,6 +212,23 @@ namespace thinlayer
                const unsigned int             s,
                const Tensor<1, 3>            &traction,
                std::vector<Vector<double> *> &targets) const;
+
+    /// An InputError unless the stiffnesses of @p curve are at most
+    /// max_stiffness_ratio E / h for the cells of @p pair.
+    static void
+    check_stiffness(
+      const FacingSides                                      &pair,
+      const InterfaceCurveParameters                         &curve,
+      const std::map<types::material_id, MaterialParameters> &materials,
+      const std::string                                      &parameter_file);
+
+    /// The element of @p pair: its integration points along the side,
+    /// each with the jump operator over the two cells' DoFs.
+    void
+    add_element(const FacingSides              &pair,
+                const InterfaceCurveParameters &curve,
+                const DoFHandler<2>            &dof_handler,
+                const Mapping<2>               &mapping);
 
     /**
      * Run @p rule(point, station, law, state, jump, point_station) at every
