@@ -11,20 +11,6 @@
 
 namespace thinlayer
 {
-  namespace
-  {
-    /// One vector of every mode (ModeState::*@p member), for the point
-    /// rules.
-    std::vector<Vector<double> *>
-    mode_vectors(const std::vector<std::unique_ptr<ModeState>> &modes,
-                 Vector<double> ModeState::*member)
-    {
-      std::vector<Vector<double> *> vectors;
-      for (const auto &mode : modes)
-        vectors.push_back(&((*mode).*member));
-      return vectors;
-    }
-  } // namespace
 
 
   void
@@ -171,18 +157,21 @@ namespace thinlayer
 
   Tensor<1, 3>
   ZeroThicknessElements::local_jump(
-    const IntegrationPoint                    &point,
-    const unsigned int                         s,
-    const std::vector<const Vector<double> *> &vectors) const
+    const IntegrationPoint                        &point,
+    const unsigned int                             s,
+    const std::vector<std::unique_ptr<ModeState>> &modes,
+    Vector<double> ModeState::*const vector) const
   {
     const Element &element = elements[point.element];
     Tensor<1, 3>   jump; // (x, y, theta) summed over the modes
-    for (unsigned int m = 0; m < vectors.size(); ++m)
+    for (unsigned int m = 0; m < modes.size(); ++m)
       {
-        const double t1 = kinematics->T1(m, s), t2 = kinematics->T2(m, s);
+        const Vector<double> &v  = (*modes[m]).*vector;
+        const double          t1 = kinematics->T1(m, s);
+        const double          t2 = kinematics->T2(m, s);
         for (const Entry &e : point.entries)
           jump[e.component] += (e.component < 2 ? t1 : t2) * e.value *
-                               (*vectors[m])[element.dofs[e.local_dof]];
+                               v[element.dofs[e.local_dof]];
       }
     return Tensor<1, 3>(
       {jump[0] * point.tangent[0] + jump[1] * point.tangent[1],
@@ -193,10 +182,11 @@ namespace thinlayer
 
   void
   ZeroThicknessElements::add_forces(
-    const IntegrationPoint        &point,
-    const unsigned int             s,
-    const Tensor<1, 3>            &traction,
-    std::vector<Vector<double> *> &targets) const
+    const IntegrationPoint                        &point,
+    const unsigned int                             s,
+    const Tensor<1, 3>                            &traction,
+    const std::vector<std::unique_ptr<ModeState>> &modes,
+    Vector<double> ModeState::*const target) const
   {
     const Element &element = elements[point.element];
     const double   weight  = kinematics->station_weight(s) * point.weight;
@@ -206,13 +196,14 @@ namespace thinlayer
                               traction[0] * point.tangent[1] +
                                 traction[1] * point.normal[1],
                               traction[2]};
-    for (unsigned int m = 0; m < targets.size(); ++m)
+    for (unsigned int m = 0; m < modes.size(); ++m)
       {
-        const double t1 = kinematics->T1(m, s), t2 = kinematics->T2(m, s);
+        Vector<double> &v  = (*modes[m]).*target;
+        const double    t1 = kinematics->T1(m, s);
+        const double    t2 = kinematics->T2(m, s);
         for (const Entry &e : point.entries)
-          (*targets[m])[element.dofs[e.local_dof]] +=
-            weight * (e.component < 2 ? t1 : t2) * e.value *
-            global[e.component];
+          v[element.dofs[e.local_dof]] += weight * (e.component < 2 ? t1 : t2) *
+                                          e.value * global[e.component];
       }
   }
 
@@ -307,20 +298,17 @@ namespace thinlayer
     std::vector<std::unique_ptr<ModeState>> &modes,
     const Rule                              &rule)
   {
-    const auto increments_of_modes =
-      mode_vectors(modes, &ModeState::step_increment);
-    const std::vector<const Vector<double> *> increments(
-      increments_of_modes.begin(), increments_of_modes.end());
     const unsigned int n_stations = kinematics->n_stations();
     unsigned int       n_yielding = 0;
     for (unsigned int p = 0; p < points.size(); ++p)
       for (unsigned int s = 0; s < n_stations; ++s)
-        n_yielding += rule(points[p],
-                           s,
-                           *elements[points[p].element].law,
-                           states[p * n_stations + s],
-                           local_jump(points[p], s, increments),
-                           p * n_stations + s);
+        n_yielding +=
+          rule(points[p],
+               s,
+               *elements[points[p].element].law,
+               states[p * n_stations + s],
+               local_jump(points[p], s, modes, &ModeState::step_increment),
+               p * n_stations + s);
     return n_yielding;
   }
 
@@ -329,36 +317,39 @@ namespace thinlayer
   ZeroThicknessElements::viscoplastic_update(
     std::vector<std::unique_ptr<ModeState>> &modes)
   {
-    std::vector<Vector<double> *> targets =
-      mode_vectors(modes, &ModeState::body_load_change);
     // The paper's rule: the traction of the step's jump less its
     // viscoplastic jump; where F > 0, a viscoplastic jump increment
     // dt F dQ/dt whose K-projection is a body load.
-    return for_each_point(
-      modes,
-      [&](const IntegrationPoint &point,
-          const unsigned int      s,
-          const InterfaceLaw     &law,
-          InterfacePointState    &state,
-          const Tensor<1, 3>     &jump,
-          const unsigned int /*point_station*/) {
-        state.traction = state.converged_traction +
-                         law.elastic_traction(jump - state.step_plastic_jump);
-        state.pending_plastic_jump = 0;
-        state.yielding             = false;
-        if (!law.can_yield())
-          return 0u;
-        const double F = law.yield_function(state.traction);
-        if (F <= 0)
-          return 0u;
-        state.yielding             = true;
-        const Tensor<1, 3> plastic = (law.viscoplastic_time_step() * F) *
-                                     law.flow_direction(state.traction);
-        state.step_plastic_jump += plastic;
-        state.pending_plastic_jump = plastic;
-        add_forces(point, s, law.elastic_traction(plastic), targets);
-        return 1u;
-      });
+    return for_each_point(modes,
+                          [&](const IntegrationPoint &point,
+                              const unsigned int      s,
+                              const InterfaceLaw     &law,
+                              InterfacePointState    &state,
+                              const Tensor<1, 3>     &jump,
+                              const unsigned int /*point_station*/) {
+                            state.traction = state.converged_traction +
+                                             law.elastic_traction(
+                                               jump - state.step_plastic_jump);
+                            state.pending_plastic_jump = 0;
+                            state.yielding             = false;
+                            if (!law.can_yield())
+                              return 0u;
+                            const double F = law.yield_function(state.traction);
+                            if (F <= 0)
+                              return 0u;
+                            state.yielding = true;
+                            const Tensor<1, 3> plastic =
+                              (law.viscoplastic_time_step() * F) *
+                              law.flow_direction(state.traction);
+                            state.step_plastic_jump += plastic;
+                            state.pending_plastic_jump = plastic;
+                            add_forces(point,
+                                       s,
+                                       law.elastic_traction(plastic),
+                                       modes,
+                                       &ModeState::body_load_change);
+                            return 1u;
+                          });
   }
 
 
@@ -367,36 +358,32 @@ namespace thinlayer
     std::vector<std::unique_ptr<ModeState>> &modes,
     const bool                               with_tangents)
   {
-    std::vector<Vector<double> *> forces =
-      mode_vectors(modes, &ModeState::internal_forces);
-    std::vector<Vector<double> *> excess =
-      mode_vectors(modes, &ModeState::body_loads);
     // The trial traction returned to the admissible set: the traction
     // gives the internal forces, the excess a body load.
-    return for_each_point(modes,
-                          [&](const IntegrationPoint &point,
-                              const unsigned int      s,
-                              const InterfaceLaw     &law,
-                              InterfacePointState    &state,
-                              const Tensor<1, 3>     &jump,
-                              const unsigned int      point_station) {
-                            const Tensor<1, 3> trial =
-                              state.converged_traction +
-                              law.elastic_traction(jump);
-                            const InterfaceReturnMapping r =
-                              law.return_mapping(trial, with_tangents);
-                            state.traction = r.traction;
-                            state.yielding =
-                              (r.region != InterfaceReturn::elastic);
-                            if (with_tangents)
-                              tangents[point_station] = r.tangent;
-                            state.step_plastic_jump =
-                              law.compliance() * (trial - r.traction);
-                            if (state.yielding)
-                              add_forces(point, s, trial - r.traction, excess);
-                            add_forces(point, s, state.traction, forces);
-                            return state.yielding ? 1u : 0u;
-                          });
+    return for_each_point(
+      modes,
+      [&](const IntegrationPoint &point,
+          const unsigned int      s,
+          const InterfaceLaw     &law,
+          InterfacePointState    &state,
+          const Tensor<1, 3>     &jump,
+          const unsigned int      point_station) {
+        const Tensor<1, 3> trial =
+          state.converged_traction + law.elastic_traction(jump);
+        const InterfaceReturnMapping r =
+          law.return_mapping(trial, with_tangents);
+        state.traction = r.traction;
+        state.yielding = (r.region != InterfaceReturn::elastic);
+        if (with_tangents)
+          tangents[point_station] = r.tangent;
+        state.step_plastic_jump = law.compliance() * (trial - r.traction);
+        if (state.yielding)
+          add_forces(
+            point, s, trial - r.traction, modes, &ModeState::body_loads);
+        add_forces(
+          point, s, state.traction, modes, &ModeState::internal_forces);
+        return state.yielding ? 1u : 0u;
+      });
   }
 
 
@@ -404,12 +391,14 @@ namespace thinlayer
   ZeroThicknessElements::add_internal_forces(
     std::vector<std::unique_ptr<ModeState>> &modes) const
   {
-    std::vector<Vector<double> *> forces =
-      mode_vectors(modes, &ModeState::internal_forces);
     const unsigned int n_stations = kinematics->n_stations();
     for (unsigned int p = 0; p < points.size(); ++p)
       for (unsigned int s = 0; s < n_stations; ++s)
-        add_forces(points[p], s, states[p * n_stations + s].traction, forces);
+        add_forces(points[p],
+                   s,
+                   states[p * n_stations + s].traction,
+                   modes,
+                   &ModeState::internal_forces);
   }
 
 
@@ -546,19 +535,7 @@ namespace thinlayer
     const std::vector<std::unique_ptr<ModeState>> &modes,
     const bool                                     pending) const
   {
-    const unsigned int                  n_stations = kinematics->n_stations();
-    std::vector<Vector<double>>         totals;
-    std::vector<const Vector<double> *> total, increment;
-    for (const auto &mode : modes)
-      {
-        totals.push_back(mode->solution);
-        if (pending)
-          totals.back() += mode->step_increment;
-        increment.push_back(&mode->step_increment);
-      }
-    for (const auto &t : totals)
-      total.push_back(&t);
-
+    const unsigned int        n_stations = kinematics->n_stations();
     Profile                   result;
     std::vector<unsigned int> indices;
     for (unsigned int p = 0; p < points.size(); ++p)
@@ -575,9 +552,13 @@ namespace thinlayer
           {
             const InterfaceLaw        &law   = *elements[points[p].element].law;
             const InterfacePointState &state = states[p * n_stations + s];
-            const Tensor<1, 3>         jump  = local_jump(points[p], s, total);
-            const Tensor<1, 3> djump = local_jump(points[p], s, increment);
-            InterfaceValues    v;
+            const Tensor<1, 3>         djump =
+              local_jump(points[p], s, modes, &ModeState::step_increment);
+            // The state: the accepted solution, plus the pending step.
+            const Tensor<1, 3> jump =
+              local_jump(points[p], s, modes, &ModeState::solution) +
+              (pending ? djump : Tensor<1, 3>());
+            InterfaceValues v;
             v.slip                        = jump[0];
             v.opening                     = jump[1];
             v.slip_out_of_plane           = jump[2];

@@ -197,21 +197,24 @@ namespace thinlayer
       std::vector<types::global_dof_index> dofs;
     };
 
-    /// The jump at station @p s in the local frame, of the mode vectors
-    /// @p vectors (one per mode) taken at the element's DoFs.
+    /// The jump at station @p s in the local frame, of every mode's
+    /// vector ModeState::*@p vector at the element's DoFs. Allocates
+    /// nothing: it runs in every iteration.
     Tensor<1, 3>
-    local_jump(const IntegrationPoint                    &point,
-               const unsigned int                         s,
-               const std::vector<const Vector<double> *> &vectors) const;
+    local_jump(const IntegrationPoint                        &point,
+               const unsigned int                             s,
+               const std::vector<std::unique_ptr<ModeState>> &modes,
+               Vector<double> ModeState::*const vector) const;
 
     /// Add the nodal forces of local traction @p traction at point
     /// @p point and station @p s, times the station and point weights, to
-    /// @p targets (one per mode).
+    /// every mode's vector ModeState::*@p target.
     void
-    add_forces(const IntegrationPoint        &point,
-               const unsigned int             s,
-               const Tensor<1, 3>            &traction,
-               std::vector<Vector<double> *> &targets) const;
+    add_forces(const IntegrationPoint                        &point,
+               const unsigned int                             s,
+               const Tensor<1, 3>                            &traction,
+               const std::vector<std::unique_ptr<ModeState>> &modes,
+               Vector<double> ModeState::*const target) const;
 
     /// An InputError unless the stiffnesses of @p curve are at most
     /// max_stiffness_ratio E / h for the cells of @p pair.
