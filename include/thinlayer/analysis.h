@@ -338,6 +338,205 @@ namespace thinlayer
     bool   pending;
     double substitution_time;
   };
+
+
+  // The accessors, inline: each returns a member or looks one up.
+
+  template <int dim>
+  inline double
+  Analysis<dim>::load_factor() const
+  {
+    return current_lambda;
+  }
+
+
+  template <int dim>
+  inline double
+  Analysis<dim>::accepted_load_factor() const
+  {
+    return accepted_lambda;
+  }
+
+
+  template <int dim>
+  inline unsigned int
+  Analysis<dim>::n_modes() const
+  {
+    return modes.size();
+  }
+
+
+  template <int dim>
+  inline ModeState &
+  Analysis<dim>::mode(const unsigned int m)
+  {
+    return *modes[m];
+  }
+
+
+  template <int dim>
+  inline const ModeState &
+  Analysis<dim>::mode(const unsigned int m) const
+  {
+    return *modes[m];
+  }
+
+
+  template <int dim>
+  inline std::vector<std::unique_ptr<ModeState>> &
+  Analysis<dim>::get_modes()
+  {
+    return modes;
+  }
+
+
+  template <int dim>
+  inline const std::vector<std::unique_ptr<ModeState>> &
+  Analysis<dim>::get_modes() const
+  {
+    return modes;
+  }
+
+
+  template <int dim>
+  inline double
+  Analysis<dim>::viscoplastic_time_step() const
+  {
+    return time_step;
+  }
+
+
+  template <int dim>
+  inline const StrainOperator &
+  Analysis<dim>::get_strain_operator() const
+  {
+    return strain_operator;
+  }
+
+
+  template <int dim>
+  inline PointLoop &
+  Analysis<dim>::get_point_loop()
+  {
+    return point_loop;
+  }
+
+
+  template <int dim>
+  inline const Kinematics &
+  Analysis<dim>::get_kinematics() const
+  {
+    return kinematics;
+  }
+
+
+  template <int dim>
+  inline const DoFHandler<dim> &
+  Analysis<dim>::get_dof_handler() const
+  {
+    return dof_handler;
+  }
+
+
+  template <int dim>
+  inline const Mapping<dim> &
+  Analysis<dim>::get_mapping() const
+  {
+    return mapping;
+  }
+
+
+  template <int dim>
+  inline const AffineConstraints<double> &
+  Analysis<dim>::get_element_constraints() const
+  {
+    return element_constraints;
+  }
+
+
+  template <int dim>
+  inline const Vector<double> &
+  Analysis<dim>::get_solution(const unsigned int mode) const
+  {
+    return modes[mode]->solution;
+  }
+
+
+  template <int dim>
+  inline const PointState &
+  Analysis<dim>::point_state(const unsigned int cell,
+                             const unsigned int q,
+                             const unsigned int station) const
+  {
+    return history[cell * quadrature.size() + q]->stations[station];
+  }
+
+
+  template <int dim>
+  inline const SymmetricTensor<2, 3> &
+  Analysis<dim>::stress(const unsigned int cell, const unsigned int q) const
+  {
+    return point_state(cell, q).stress;
+  }
+
+
+  template <int dim>
+  inline const MaterialLaw &
+  Analysis<dim>::material_law(const unsigned int cell) const
+  {
+    return *cell_law[cell];
+  }
+
+
+  template <int dim>
+  inline unsigned int
+  Analysis<dim>::n_quadrature_points() const
+  {
+    return quadrature.size();
+  }
+
+
+  template <int dim>
+  inline types::global_dof_index
+  Analysis<dim>::n_dofs() const
+  {
+    return dof_handler.n_dofs() - element_constraints.n_constraints();
+  }
+
+
+  template <int dim>
+  inline types::global_dof_index
+  Analysis<dim>::n_equations() const
+  {
+    types::global_dof_index n = 0;
+    for (const auto &mode : modes)
+      n += dof_handler.n_dofs() - mode->constraints.n_constraints();
+    return n;
+  }
+
+
+  template <int dim>
+  inline double
+  Analysis<dim>::substitution_seconds() const
+  {
+    return substitution_time;
+  }
+
+
+  template <int dim>
+  inline const ZeroThicknessElements &
+  Analysis<dim>::get_interface_elements() const
+  {
+    return interface_elements;
+  }
+
+
+  template <int dim>
+  inline bool
+  Analysis<dim>::is_pending() const
+  {
+    return pending;
+  }
 } // namespace thinlayer
 
 #endif
