@@ -43,6 +43,17 @@ namespace thinlayer
           add_element(pair, curves.at(pair.curve), dof_handler, mapping);
         }
 
+    coupled_matrices.clear();
+    for (Element &element : elements)
+      {
+        element.coupled_dofs.clear();
+        for (unsigned int m = 0; m < kinematics.n_modes(); ++m)
+          for (const auto dof : element.dofs)
+            element.coupled_dofs.push_back(m * dof_handler.n_dofs() + dof);
+        coupled_matrices.emplace_back(element.coupled_dofs.size(),
+                                      element.coupled_dofs.size());
+      }
+
     states.assign(points.size() * kinematics.n_stations(),
                   InterfacePointState());
     tangents.assign(states.size(), Tensor<2, 3>());
@@ -215,7 +226,10 @@ namespace thinlayer
   {
     const Element     &element = elements[point.element];
     const unsigned int n       = element.dofs.size();
-    G.reinit(3, kinematics->n_modes() * n);
+    if (G.m() != 3 || G.n() != kinematics->n_modes() * n)
+      G.reinit(3, kinematics->n_modes() * n);
+    else
+      G = 0;
     for (unsigned int m = 0; m < kinematics->n_modes(); ++m)
       {
         const double t1 = kinematics->T1(m, s), t2 = kinematics->T2(m, s);
@@ -461,34 +475,24 @@ namespace thinlayer
   void
   ZeroThicknessElements::add_coupled_sparsity(
     DynamicSparsityPattern          &dsp,
-    const AffineConstraints<double> &coupled_constraints,
-    const types::global_dof_index    n_dofs) const
+    const AffineConstraints<double> &coupled_constraints) const
   {
-    std::vector<types::global_dof_index> dofs;
     for (const Element &element : elements)
-      {
-        dofs.clear();
-        for (unsigned int m = 0; m < kinematics->n_modes(); ++m)
-          for (const auto dof : element.dofs)
-            dofs.push_back(m * n_dofs + dof);
-        coupled_constraints.add_entries_local_to_global(dofs, dsp, true);
-      }
+      coupled_constraints.add_entries_local_to_global(element.coupled_dofs,
+                                                      dsp,
+                                                      true);
   }
 
 
   void
   ZeroThicknessElements::add_coupled_tangent(
     SparseMatrix<double>            &tangent,
-    const AffineConstraints<double> &coupled_constraints,
-    const types::global_dof_index    n_dofs) const
+    const AffineConstraints<double> &coupled_constraints) const
   {
-    const unsigned int              n_stations = kinematics->n_stations();
-    const unsigned int              n_modes    = kinematics->n_modes();
-    std::vector<FullMatrix<double>> matrices(elements.size());
-    for (unsigned int k = 0; k < elements.size(); ++k)
-      matrices[k].reinit(n_modes * elements[k].dofs.size(),
-                         n_modes * elements[k].dofs.size());
-    FullMatrix<double> G;
+    const unsigned int n_stations = kinematics->n_stations();
+    for (auto &matrix : coupled_matrices)
+      matrix = 0;
+    FullMatrix<double> &G = jump_scratch;
     for (unsigned int p = 0; p < points.size(); ++p)
       for (unsigned int s = 0; s < n_stations; ++s)
         {
@@ -496,7 +500,7 @@ namespace thinlayer
           const Tensor<2, 3> &C = tangents[p * n_stations + s];
           const double        weight =
             kinematics->station_weight(s) * points[p].weight;
-          FullMatrix<double> &A = matrices[points[p].element];
+          FullMatrix<double> &A = coupled_matrices[points[p].element];
           for (unsigned int i = 0; i < G.n(); ++i)
             for (unsigned int a = 0; a < 3; ++a)
               if (G(a, i) != 0)
@@ -505,17 +509,10 @@ namespace thinlayer
                     for (unsigned int j = 0; j < G.n(); ++j)
                       A(i, j) += weight * G(a, i) * C[a][b] * G(b, j);
         }
-    std::vector<types::global_dof_index> dofs;
     for (unsigned int k = 0; k < elements.size(); ++k)
-      {
-        dofs.clear();
-        for (unsigned int m = 0; m < n_modes; ++m)
-          for (const auto dof : elements[k].dofs)
-            dofs.push_back(m * n_dofs + dof);
-        coupled_constraints.distribute_local_to_global(matrices[k],
-                                                       dofs,
-                                                       tangent);
-      }
+      coupled_constraints.distribute_local_to_global(coupled_matrices[k],
+                                                     elements[k].coupled_dofs,
+                                                     tangent);
   }
 
 

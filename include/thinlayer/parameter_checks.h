@@ -4,6 +4,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <limits>
 #include <map>
 #include <string>
 
@@ -39,12 +40,20 @@ namespace thinlayer
                     const std::string                   &entry);
 
   /// The entry @p name of the current subsection @p section, which must be
-  /// > 0.
+  /// > 0, and at most @p maximum.
   double
   positive(const ParameterHandler &prm,
            const std::string      &name,
            const std::string      &file,
-           const std::string      &section);
+           const std::string      &section,
+           const double maximum = std::numeric_limits<double>::infinity());
+
+  /// An InputError unless the current subsection @p section's "Dilation
+  /// angle" is at most its "Friction angle" (psi <= phi).
+  void
+  check_dilation_angle(const ParameterHandler &prm,
+                       const std::string      &file,
+                       const std::string      &section);
 } // namespace thinlayer
 
 #endif

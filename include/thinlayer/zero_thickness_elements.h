@@ -140,15 +140,16 @@ namespace thinlayer
     /// @name Newton's coupled tangent (DoF m * n_dofs + i for mode m)
     /// @{
     void
-    add_coupled_sparsity(DynamicSparsityPattern          &dsp,
-                         const AffineConstraints<double> &coupled_constraints,
-                         const types::global_dof_index    n_dofs) const;
+    add_coupled_sparsity(
+      DynamicSparsityPattern          &dsp,
+      const AffineConstraints<double> &coupled_constraints) const;
 
-    /// With the tangents of the last return_mapping_update(true).
+    /// With the tangents of the last return_mapping_update(true). Uses
+    /// work space sized in reinit(): it runs at every factorisation.
     void
-    add_coupled_tangent(SparseMatrix<double>            &tangent,
-                        const AffineConstraints<double> &coupled_constraints,
-                        const types::global_dof_index    n_dofs) const;
+    add_coupled_tangent(
+      SparseMatrix<double>            &tangent,
+      const AffineConstraints<double> &coupled_constraints) const;
     /// @}
 
     /// @name Output
@@ -195,6 +196,8 @@ namespace thinlayer
     {
       const InterfaceLaw                  *law;
       std::vector<types::global_dof_index> dofs;
+      /// The same DoFs of every mode in Newton's coupled numbering.
+      std::vector<types::global_dof_index> coupled_dofs;
     };
 
     /// The jump at station @p s in the local frame, of every mode's
@@ -257,6 +260,10 @@ namespace thinlayer
     /// Point-major: points[p] at station s is states[p * n_stations + s].
     std::vector<InterfacePointState> states;
     std::vector<Tensor<2, 3>>        tangents;
+    /// Work space of add_coupled_tangent(): a matrix per element, and the
+    /// jump operator of one point.
+    mutable std::vector<FullMatrix<double>> coupled_matrices;
+    mutable FullMatrix<double>              jump_scratch;
   };
 } // namespace thinlayer
 

@@ -141,16 +141,8 @@ namespace thinlayer
     const std::string section = InterfaceCurveParameters::section(id);
     prm.enter_subsection(section);
     name             = prm.get("Name");
-    normal_stiffness = positive(prm, "Normal stiffness", file, section);
-    shear_stiffness  = positive(prm, "Shear stiffness", file, section);
-    for (const auto &[entry, value] :
-         {std::pair<std::string, double>{"Normal stiffness", normal_stiffness},
-          {"Shear stiffness", shear_stiffness}})
-      if (!(value <= 1e30))
-        throw InputError(file,
-                         section + "/" + entry,
-                         "expected a value in (0, 1e30], got " +
-                           prm.get(entry));
+    normal_stiffness = positive(prm, "Normal stiffness", file, section, 1e30);
+    shear_stiffness  = positive(prm, "Shear stiffness", file, section, 1e30);
     const std::string criterion_text = prm.get("Slip criterion");
     criterion                        = criterion_names.value(criterion_text);
     adhesion                         = prm.get_double("Adhesion");
@@ -174,12 +166,7 @@ namespace thinlayer
                        section + "/Adhesion",
                        "expected an adhesion or a friction angle above 0 "
                        "for the mohr-coulomb criterion");
-    if (dilation_angle > friction_angle)
-      throw InputError(file,
-                       section + "/Dilation angle",
-                       "expected at most the friction angle (" +
-                         prm.get("Friction angle") + "), got " +
-                         prm.get("Dilation angle"));
+    check_dilation_angle(prm, file, section);
     const std::string tension = prm.get("Tensile strength");
     if (tension.empty())
       tensile_strength =

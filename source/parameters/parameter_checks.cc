@@ -96,13 +96,34 @@ namespace thinlayer
   positive(const ParameterHandler &prm,
            const std::string      &name,
            const std::string      &file,
-           const std::string      &section)
+           const std::string      &section,
+           const double            maximum)
   {
     const double value = prm.get_double(name);
     if (!(value > 0))
       throw InputError(file,
                        section + "/" + name,
                        "expected a value > 0, got " + prm.get(name));
+    if (!(value <= maximum))
+      throw InputError(file,
+                       section + "/" + name,
+                       "expected a value in (0, " +
+                         Utilities::to_string(maximum) + "], got " +
+                         prm.get(name));
     return value;
+  }
+
+
+  void
+  check_dilation_angle(const ParameterHandler &prm,
+                       const std::string      &file,
+                       const std::string      &section)
+  {
+    if (prm.get_double("Dilation angle") > prm.get_double("Friction angle"))
+      throw InputError(file,
+                       section + "/Dilation angle",
+                       "expected at most the friction angle (" +
+                         prm.get("Friction angle") + "), got " +
+                         prm.get("Dilation angle"));
   }
 } // namespace thinlayer

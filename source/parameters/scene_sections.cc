@@ -375,14 +375,9 @@ namespace thinlayer
   {
     const std::string section = MaterialParameters::section(id);
     prm.enter_subsection(section);
-    name           = prm.get("Name");
-    youngs_modulus = positive(prm, "Young's modulus", file, section);
-    // Above this, products in the stiffness and the stresses overflow.
-    if (!(youngs_modulus <= 1e30))
-      throw InputError(file,
-                       section + "/Young's modulus",
-                       "expected a value in (0, 1e30], got " +
-                         prm.get("Young's modulus"));
+    name = prm.get("Name");
+    // Above 1e30, products in the stiffness and the stresses overflow.
+    youngs_modulus = positive(prm, "Young's modulus", file, section, 1e30);
     poissons_ratio = prm.get_double("Poisson's ratio");
     if (!(poissons_ratio > -1 && poissons_ratio < 0.5))
       throw InputError(file,
@@ -421,12 +416,7 @@ namespace thinlayer
                        section + "/Cohesion",
                        "an elastic material has no cohesion; expected 0, or "
                        "a yield criterion");
-    if (dilation_angle > friction_angle)
-      throw InputError(file,
-                       section + "/Dilation angle",
-                       "expected at most the friction angle (" +
-                         prm.get("Friction angle") + "), got " +
-                         prm.get("Dilation angle"));
+    check_dilation_angle(prm, file, section);
     prm.leave_subsection();
   }
 

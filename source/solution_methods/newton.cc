@@ -33,7 +33,7 @@ namespace thinlayer
         cell_dofs(c, dofs);
         constraints.add_entries_local_to_global(dofs, dsp, /*keep=*/true);
       }
-    analysis.get_interface_elements().add_coupled_sparsity(dsp, constraints, n);
+    analysis.get_interface_elements().add_coupled_sparsity(dsp, constraints);
     sparsity.copy_from(dsp);
     tangent.reinit(sparsity);
     cell_matrices.assign(n_cells,
@@ -325,8 +325,8 @@ namespace thinlayer
                                                dofs,
                                                tangent);
       }
-    this->analysis.get_interface_elements().add_coupled_tangent(
-      tangent, constraints, this->analysis.get_dof_handler().n_dofs());
+    this->analysis.get_interface_elements().add_coupled_tangent(tangent,
+                                                                constraints);
     try
       {
         factorisation->factorize(tangent);
