@@ -1,0 +1,171 @@
+#!/usr/bin/python3
+"""Reproduce Griffiths' paper into one report: run every scene the paper's
+tables and figures need, by the paper's method and by the default one,
+the validations against closed forms, the stability maps and the
+speed-against-accuracy benchmark, then write OUTPUT/report.html.
+
+    /usr/bin/python3 scripts/reproduce.py [--quick] [--output DIR] [--report-only]
+
+Call it through scripts/reproduce.sh, which builds thinlayer first. The runs
+go into DIR/runs/NAME (each a thinlayer results directory), the benchmark
+into DIR/benchmarks; DIR (default output/reproduce) is emptied first, so it
+always holds one reproduction. --quick runs smaller sweeps and a one-pass
+benchmark (for CI); --report-only rewrites the page from the runs already
+in DIR.
+"""
+import argparse
+import os
+import shutil
+import subprocess
+import sys
+import time
+
+TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(TOP, "scripts"))
+THINLAYER = os.environ.get("THINLAYER", os.path.join(TOP, "build", "thinlayer"))
+
+from report import case1, case4, footings, methods, page  # noqa: E402
+from report.runs import DEFAULT, PAPER, Runs  # noqa: E402
+
+ALL_ALPHAS = "alpha = 10, 20, 30, 40, 45, 50, 60, 70, 80"
+QUICK_ALPHAS = "alpha = 20, 45, 70"
+METHOD_NAMES = {"viscoplastic": PAPER, "default": DEFAULT,
+                "newton": ("Solver/Method=newton", "Solver/Convergence criterion=residual")}
+
+
+def run_list(quick):
+    """Every run of the report: (name, parameter file, overrides). The
+    sections name these runs; their parameter files are the scenes of
+    prm/, changed only by the overrides listed here."""
+    alphas = QUICK_ALPHAS if quick else ALL_ALPHAS
+    runs = [
+        ("table1-paper", "case1-table1", ("Sweep/Values=%s; aspect_ratio = 10, 100, 1000; "
+                                          "Solver/Tolerance = 1e-2, 1e-5" % alphas,)),
+        ("table1-default", "case1-table1", DEFAULT + (
+            "Solver/Tolerance=1e-5", "Sweep/Values=%s; aspect_ratio = 10, 100, 1000" % alphas)),
+        ("figure3-paper", "case1-figure3", ()),
+        ("figure3-paper-loose", "case1-figure3", ("Solver/Tolerance=1e-2",)),
+        ("figure3-default", "case1-figure3", DEFAULT),
+        ("figure4-paper", "case1-figure4", ()),
+        ("figure4-default", "case1-figure4", DEFAULT + (
+            "Sweep/Values=alpha = 10, 15, 20, 22, 24, 25, 26, 27, 28, 30, 32",)),
+        ("figure5-paper", "case1-figure5", ()),
+        ("case1-zero-adhesive", "case1-inclined-adhesive-zero-thickness", ()),
+        ("case1-zero-frictional", "case1-inclined-frictional-zero-thickness", ()),
+        ("prandtl-paper", "prandtl-strip-footing", ()),
+        ("prandtl-default", "prandtl-strip-footing", DEFAULT),
+    ]
+    for case, scene in (("case2", "case2-strip-footing"), ("case3", "case3-circular-footing")):
+        runs += [
+            (case + "-paper", scene, ("Output/Write VTU=false",)),
+            (case + "-default", scene, DEFAULT + ("Output/Write VTU=false",)),
+            (case + "-better-paper", scene + "-better-mesh", ("Output/Write VTU=false",)),
+            (case + "-better-default", scene + "-better-mesh", DEFAULT + ("Output/Write VTU=false",)),
+            (case + "-zero", scene + "-zero-thickness", ("Output/Write VTU=false",)),
+        ]
+    runs += [
+        ("case3-displacement", "case3-circular-footing-displacement", ("Output/Write VTU=false",)),
+        ("case4-smooth-paper", "case4-smooth-wall", ("Output/Write VTU=false",)),
+        ("case4-figure12-paper", "case4-figure12", ()),
+        ("case4-rough-default", "case4-rough-wall", DEFAULT + ("Output/Write VTU=false",)),
+        ("case4-rough-accelerated", "case4-rough-wall-accelerated", ("Output/Write VTU=false",)),
+        ("case4-zero", "case4-rough-wall-zero-thickness", ("Output/Write VTU=false",)),
+    ]
+    runs.append(("circular-footing-rigid", "circular-footing-rigid", ("Output/Write VTU=false",)))
+    for material, scene in (("adhesive", "case1-stability-map"),
+                            ("frictional", "case1-frictional-stability-map")):
+        for method in (("viscoplastic", "default") if quick else METHOD_NAMES):
+            runs.append(("map-%s-%s" % (material, method), scene, METHOD_NAMES[method]))
+    return runs
+
+
+def run_all(runs, directory):
+    """Each run with a progress line; a run that ends in an error stops the
+    reproduction (non-convergence is a result, not an error)."""
+    start = time.time()
+    for k, (name, scene, overrides) in enumerate(runs, 1):
+        print("[%2d/%d] %-28s %s" % (k, len(runs), name, "prm/%s.prm" % scene), end="", flush=True)
+        command = [THINLAYER, os.path.join(TOP, "prm", scene + ".prm"),
+                   "-s", "Output/Directory=" + os.path.join(directory, "runs", name),
+                   "-s", "Output/Print timing=false"]
+        for entry in overrides:
+            command += ["-s", entry]
+        begun = time.time()
+        done = subprocess.run(command, capture_output=True, text=True)
+        log = os.path.join(directory, "logs", name + ".log")
+        with open(log, "w") as f:
+            f.write(done.stdout + done.stderr)
+        if done.returncode != 0:
+            print("\nreproduce: %s failed (exit %d); its output is in %s"
+                  % (name, done.returncode, log), file=sys.stderr)
+            sys.exit(1)
+        print("  %6.1f s  (%.0f s in all)" % (time.time() - begun, time.time() - start), flush=True)
+
+
+def run_benchmark(directory, quick):
+    """benchmarks/run.py's speed-against-accuracy matrix into DIR/benchmarks."""
+    command = ["/usr/bin/python3", os.path.join(TOP, "benchmarks", "run.py"),
+               "--output", os.path.join(directory, "benchmarks")]
+    command += ["--quick", "--repeat", "1"] if quick else ["--repeat", "3"]
+    print("benchmark: " + " ".join(command[1:]), flush=True)
+    if subprocess.run(command).returncode != 0:
+        sys.exit("reproduce: the benchmark failed")
+
+
+def sections(runs, quick):
+    return (case1.sections(runs, quick) + footings.sections(runs, quick)
+            + case4.sections(runs, quick) + methods.sections(runs, quick))
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--quick", action="store_true", help="smaller sweeps, one-pass benchmark")
+    parser.add_argument("--output", default=os.path.join(TOP, "output", "reproduce"),
+                        help="the report's directory (emptied first)")
+    parser.add_argument("--report-only", action="store_true",
+                        help="rewrite report.html from the runs in the directory")
+    arguments = parser.parse_args()
+    directory = os.path.abspath(arguments.output)
+    start = time.time()
+    if not arguments.report_only:
+        if not os.access(THINLAYER, os.X_OK):
+            sys.exit("reproduce: no thinlayer binary at %s: run scripts/reproduce.sh" % THINLAYER)
+        if os.path.isdir(directory):
+            shutil.rmtree(directory)
+        os.makedirs(os.path.join(directory, "logs"))
+        run_all(run_list(arguments.quick), directory)
+        run_benchmark(directory, arguments.quick)
+    runs = Runs(directory)
+    print("report: drawing the figures", flush=True)
+    items = sections(runs, arguments.quick)
+    path = os.path.join(directory, "report.html")
+    page.write(path, "thinlayer reproduces Griffiths' thin-layer interfaces",
+               introduction(arguments.quick), items, footer(runs, time.time() - start))
+    print("report: %s (%d items, %.0f s)" % (path, len(items), time.time() - start))
+
+
+def introduction(quick):
+    return [
+        "D.V. Griffiths, Numerical modelling of interfaces using conventional finite "
+        "elements: each table and figure of the paper beside what thinlayer computes, by "
+        "the paper's method (viscoplastic constant-stiffness iterations with its body-load "
+        "criterion) and by thinlayer's default method (accelerated initial stress with a "
+        "Newton fallback), each on the scene file's load programme, a failed step cut back "
+        "until the collapse is bracketed to 0.5% of the load; then the validations against closed forms, the "
+        "stability maps and the speed against accuracy of every method.",
+        "The paper's values are read from its text and tables; its figures' curves are "
+        "not in the text we have, so a figure's verdict compares what the text says of it. "
+        "Curves join converged states only; an x marks the attempt that ended a run.",
+    ] + (["This is the --quick report: smaller sweeps and a benchmark run once, for CI."]
+         if quick else [])
+
+
+def footer(runs, seconds):
+    return ("Written by scripts/reproduce.py from the runs in %s (every run's history.csv, "
+            "summary.json, mesh.msh and parameters.prm are there) in %.0f s on %s; "
+            "thinlayer %s." % (runs.directory, seconds, runs.machine(), runs.version()))
+
+
+if __name__ == "__main__":
+    main()
