@@ -23,6 +23,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 import closed_form  # noqa: E402
 import results  # noqa: E402
+from report.case1 import slip_panel  # noqa: E402
 
 
 def read_csv(path):
@@ -151,30 +152,20 @@ def figure3(directory):
 
 
 def frictional(directory):
-    """Slip of the top against inclination, one series per other swept entry."""
+    """Per value of the other swept entry (TOL or the layer's modulus), a
+    panel: the top's displacement at full load where the layer held, 'x'
+    where it slid (a failed step: no state to plot)."""
     rows = read_csv(os.path.join(directory, "sweep.csv"))
     swept = results.swept_names(rows)
     series_key = next(k for k in swept if k != "alpha")
-    fig, ax = plt.subplots(figsize=(6.5, 4.5))
-    for value in sorted({r[series_key] for r in rows}, key=float, reverse=True):
-        pts = sorted((r for r in rows if r[series_key] == value), key=lambda r: float(r["alpha"]))
-        alpha = [float(r["alpha"]) for r in pts]
-        slip = [abs(number(history(directory, r["run"])[-1]["displacement"])) for r in pts]
-        slid = [results.collapse_detected(r) for r in pts]
-        line, = ax.plot(alpha, slip, "-", label="%s = %s" % (series_key.split("/")[-1], value))
-        ax.plot([a for a, s in zip(alpha, slid) if s], [u for u, s in zip(slip, slid) if s],
-                "o", mfc="none", color=line.get_color())
-        ax.plot([a for a, s in zip(alpha, slid) if not s], [u for u, s in zip(slip, slid) if not s],
-                "o", color=line.get_color())
-    ax.axvline(30, color="k", ls="--", label="alpha = phi = 30")
-    ax.axvline(math.degrees(math.atan(0.5)), color="grey", ls=":",
-               label="phi* = 26.6 (Davis, psi = 0)")
-    ax.set_yscale("log")
-    ax.set_xlabel("interface inclination alpha (degrees)")
-    ax.set_ylabel("|horizontal displacement of the top| x E / P")
-    ax.set_title("open: a load step failed (slip)")
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=8)
+    values = sorted({r[series_key] for r in rows}, key=float, reverse=True)
+    fig, axes = plt.subplots(1, len(values), figsize=(3.4 * len(values), 3.6), sharey=True,
+                             squeeze=False)
+    for ax, value in zip(axes[0], values):
+        slip_panel(ax, [r for r in rows if r[series_key] == value],
+                   "%s = %s" % (series_key.split("/")[-1], value))
+    axes[0][0].set_ylabel("|u_x of the top| E / P")
+    axes[0][0].legend(fontsize=7, loc="lower right")
     fig.tight_layout()
     name = os.path.basename(os.path.normpath(directory)) + ".png"
     fig.savefig(os.path.join(directory, name), dpi=120)

@@ -29,13 +29,16 @@ if [ "$which" = case1 ] || [ "$which" = all ]; then
   done
   $plot scripts/plot_interface.py output/case1-inclined-adhesive-zero-thickness
   "$thinlayer" prm/prandtl-strip-footing.prm
-  $plot scripts/plot_scene.py output/prandtl-strip-footing "(2 + pi) c"
+  $plot scripts/plot_scene.py output/prandtl-strip-footing "(2 + pi) c" \
+    --load-label "footing pressure / c" --displacement-label "settlement under the centre, w / b (b: half-width)" \
+    --length-unit b
 fi
 
 if [ "$which" = case2 ] || [ "$which" = all ]; then
   for scene in case2-strip-footing case2-strip-footing-better-mesh case2-strip-footing-zero-thickness; do
     "$thinlayer" prm/$scene.prm
-    $plot scripts/plot_scene.py output/$scene "L C_w"
+    $plot scripts/plot_scene.py output/$scene "L C_w" --load-label "horizontal load / (L C_w)" \
+      --displacement-label "footing displacement, E u / (C_w L)"
     $plot scripts/plot_interface.py output/$scene
   done
   "$thinlayer" prm/case2-study.prm
@@ -45,7 +48,9 @@ fi
 if [ "$which" = case3 ] || [ "$which" = all ]; then
   for scene in case3-circular-footing case3-circular-footing-better-mesh case3-circular-footing-zero-thickness; do
     "$thinlayer" prm/$scene.prm
-    $plot scripts/plot_scene.py output/$scene "pi R^2 C_w"
+    $plot scripts/plot_scene.py output/$scene "pi R^2 C_w" \
+      --load-label "horizontal load / (pi R^2 C_w)" \
+      --displacement-label "footing displacement, E u / (C_w R)" --length-unit R
     $plot scripts/plot_interface.py output/$scene
   done
   "$thinlayer" prm/case3-study.prm
@@ -65,3 +70,4 @@ if [ "$which" = case4 ] || [ "$which" = all ]; then
   $plot scripts/plot_study.py output/case4-study aspect_ratio
 fi
 echo "studies done: tables (*.md) and figures (*.png) are in output/*/"
+echo "(scripts/reproduce.sh puts the paper's items beside these in one report)"

@@ -3,11 +3,14 @@
 #
 #   scripts/setup.sh run    install what is missing, build (Release), run the
 #                           default scene and say where its results are
+#   scripts/setup.sh build  install what is missing and build (Release) only
+#                           (scripts/reproduce.sh starts with it)
 #   scripts/setup.sh test   install what is missing, build (Release), run ctest;
 #                           then build in Debug against deal.II's debug
 #                           library and run ctest there (its assertions on),
-#                           and run one plane-strain and one Fourier scene
-#                           under valgrind (memory errors fail the test)
+#                           run three scenes under valgrind (memory errors
+#                           fail the test), and reproduce the paper into its
+#                           report (--quick) and open it in headless Chromium
 #
 # Re-running when nothing changed takes seconds: packages are installed only
 # when missing, and the build is incremental. Needs root or sudo for apt.
@@ -15,8 +18,8 @@ set -euo pipefail
 
 mode="${1:-run}"
 case "$mode" in
-  run|test) ;;
-  *) echo "usage: $0 run|test" >&2; exit 2 ;;
+  run|test|build) ;;
+  *) echo "usage: $0 run|test|build" >&2; exit 2 ;;
 esac
 
 top="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -30,6 +33,8 @@ build="$top/build"
 # it: a failed (non-converged) step's state depends on rounding.
 packages=(g++ make cmake perl libdeal.ii-dev gmsh numdiff python3 python3-matplotlib ccache libopenblas0-serial
           nlohmann-json3-dev valgrind procps)
+# The tests also open the reproduction report in a real browser.
+if [ "$mode" = test ]; then packages+=(chromium); fi
 
 missing=()
 for p in "${packages[@]}"; do
@@ -62,7 +67,9 @@ build_in() {
 }
 build_in "$build" Release
 
-if [ "$mode" = run ]; then
+if [ "$mode" = build ]; then
+  echo "thinlayer setup: built $build/thinlayer"
+elif [ "$mode" = run ]; then
   cd "$top"
   "$build/thinlayer" prm/case1-elastic.prm
   echo "thinlayer setup: open $top/output/case1-elastic/fields.pvd in ParaView;"
@@ -91,5 +98,13 @@ else
       exit 1
     fi
   done
-  echo "thinlayer setup: all tests passed (Release, Debug, valgrind)"
+  # The paper reproduced into its report (--quick: smaller sweeps, the
+  # benchmark run once), and the page checked in headless Chromium.
+  echo "thinlayer setup: scripts/reproduce.sh --quick"
+  report="$build/reproduce-quick"
+  "$top/scripts/reproduce.sh" --quick --output "$report" > "$build/reproduce-quick.log" 2>&1 ||
+    { tail -30 "$build/reproduce-quick.log"; echo "thinlayer setup: the reproduction failed;" \
+      "the log is $build/reproduce-quick.log" >&2; exit 1; }
+  /usr/bin/python3 "$top/scripts/check_report.py" "$report/report.html"
+  echo "thinlayer setup: all tests passed (Release, Debug, valgrind, the report in Chromium)"
 fi

@@ -146,7 +146,7 @@ def slid(row):
     return row["outcome"] != "completed"
 
 
-def slip_panel(ax, runs, name, rows, label):
+def slip_panel(ax, rows, label):
     """Top displacement at full load of the runs that held, 'x' at the top
     of the panel for those that slid (their displacement is no state)."""
     held = sorted((r for r in rows if not slid(r)), key=lambda r: float(r["alpha"]))
@@ -172,11 +172,10 @@ def figure4(runs, quick):
     fig, axes = plt.subplots(1, len(tols) + 1, figsize=(14, 3.6), sharey=True)
     onset = {}
     for ax, tol in zip(axes, tols):
-        onset[tol] = slip_panel(ax, runs, "figure4-paper",
-                                [r for r in rows if r["Solver/Tolerance"] == tol],
+        onset[tol] = slip_panel(ax, [r for r in rows if r["Solver/Tolerance"] == tol],
                                 "viscoplastic, TOL %s" % tol)
-    onset["default"] = slip_panel(axes[-1], runs, "figure4-default",
-                                  runs.sweep("figure4-default"), "default method, TOL 1e-5")
+    onset["default"] = slip_panel(axes[-1], runs.sweep("figure4-default"),
+                                  "default method, TOL 1e-5")
     axes[0].set_ylabel("|u_x of the top| E / P (column width b = 1)", fontsize=8)
     axes[0].legend(fontsize=7, loc="lower right")
     fig.tight_layout()

@@ -183,7 +183,7 @@ def validations(runs, quick):
     for name, label in (("prandtl-paper", "paper's method"), ("prandtl-default", "default method")):
         figures.curve(ax, runs.path(name), label, marker=".", ms=3)
     ax.axhline(2 + math.pi, color="k", ls="--", lw=1, label="(2 + pi) c")
-    ax.set_xlabel("settlement under the centre, E w / (c B)")
+    ax.set_xlabel("settlement under the centre, w / b (b: half-width; E = 1e5 c)")
     ax.set_ylabel("footing pressure / c")
     ax.grid(alpha=0.3)
     figures.failure_legend(ax, fontsize=7, loc="lower right")
