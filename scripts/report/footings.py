@@ -31,11 +31,7 @@ def curves(ax, runs, case, names, labels):
     ax.axhline(1.0, color="k", ls="--", lw=1, label="pure sliding, %s" % REFERENCE[case])
     ax.axhline(PAPER_RATIO[case], color="grey", ls=":", lw=1.5,
                label="the paper's failure load (text)")
-    # Linear up to the elastic range, logarithmic beyond: the creep past the
-    # knee runs to hundreds of elastic displacements.
-    ax.set_xscale("symlog", linthresh=10)
-    ax.set_xlabel("horizontal displacement of the footing, E u / (C_w %s) "
-                  "(linear to 10, logarithmic beyond)" % LENGTH[case])
+    ax.set_xlabel("horizontal displacement of the footing, E u / (C_w %s)" % LENGTH[case])
     ax.set_ylabel("horizontal load / (%s)" % REFERENCE[case])
     ax.grid(alpha=0.3)
     figures.failure_legend(ax, fontsize=7, loc="lower right")
