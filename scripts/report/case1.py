@@ -60,6 +60,9 @@ def table1(runs, quick):
         rows.append(row)
     default = [runs.find("table1-default", alpha=a, aspect_ratio=r) for a in alphas for r in RATIOS]
     collapsed = [r for r in default if results.collapse_detected(r)]
+    # Within the layer's bound, up to the 0.5% the collapse is bracketed to.
+    bounded = [r for r in collapsed if results.collapse_load(r) <= 1.005 * closed_form.
+               inclined_layer_upper_bound(float(r["alpha"]), float(r["aspect_ratio"]))]
     verdict = "reproduced" if worst < 0.005 + 1e-12 else "differs"
     return Section(
         "table1", "Table 1: axial force to slide an adhesive interface",
@@ -68,13 +71,17 @@ def table1(runs, quick):
         verdict,
         "The closed form matches every printed value to its two decimals (largest "
         "difference after rounding %.3f). Beyond the paper, the thin layer computed: the "
-        "default method collapsed in %d of %d runs, each at or below the layer's own upper "
-        "bound (scripts/closed_form.py): a layer of finite thickness can slide on a plane "
+        "default method collapsed in %d of %d runs, %d of them at or below the layer's own "
+        "upper bound (scripts/closed_form.py) within the 0.5%% the collapse is bracketed "
+        "to. A layer of finite thickness can slide on a plane "
         "inside it, so at small and large alpha a thick layer (aspect ratio 10) is weaker "
-        "than the interface Table 1 describes. The paper's method at TOL 1e-5 stalls at the "
+        "than the interface Table 1 describes; the runs above that bound are the "
+        "discretisation's: displacement finite elements over-estimate the collapse load of "
+        "the body they model, and one row of cells cannot form a slip plane across the "
+        "layer. The paper's method at TOL 1e-5 stalls at the "
         "knee ('not converged'): its iterations cannot follow the slip, so it gives a last "
         "converged load, never a collapse, except at 45 degrees." % (
-            worst, len(collapsed), len(default)),
+            worst, len(collapsed), len(default), len(bounded)),
         rows=rows, cost="%.0f s for %d runs" % (runs.seconds("table1-paper", "table1-default"),
                                              len(runs.sweep("table1-paper")) + len(default)),
         paper_value="5.85 / 3.11 / 2.31 / 2.03 / 2.00",
@@ -115,6 +122,8 @@ def figure3(runs, quick):
     shortfall = [results.number(r["last_converged_load"]) / results.number(r["reference_load"]) - 1
                  for r in thick]
     increasing = all(a <= b for a, b in zip(shortfall, shortfall[1:]))
+    default = runs.sweep("figure3-default")
+    knees = [r for r in default if results.collapse_detected(r)]
     verdict = ("reproduced" if len(over) == len(thin) and not above and increasing
                else "differs")
     return Section(
@@ -129,9 +138,9 @@ def figure3(runs, quick):
         "the %d runs exceeded it: every aspect ratio stops at the knee, the thinner layers "
         "nearer the analytic value, aspect ratio 10 lowest: %s at alpha = %s degrees, "
         "increasingly conservative as alpha decreases, as the paper found (its layer is "
-        "weaker, Table 1). The default method stops at the knee of every curve." % (
+        "weaker, Table 1). The default method ends in a collapse on %d of its %d curves." % (
             len(over), len(thin), len(tight), ", ".join("%+.1f%%" % (100 * v) for v in shortfall),
-            ", ".join(alphas)),
+            ", ".join(alphas), len(knees), len(default)),
         figures=[(figures.data_uri(fig), "Case 1, adhesive: converged states joined; x the "
                   "attempt that ended the run. Rows: the paper's method at TOL 1e-5 and "
                   "1e-2, thinlayer's default method.")],
