@@ -6,7 +6,7 @@ import matplotlib.pyplot as plt
 
 import closed_form
 import results
-from report import figures
+from report import figures, page
 from report.page import Section
 
 # Table 1 as printed: P_ult / C_w to two decimals.
@@ -28,17 +28,14 @@ def figure2(runs, quick):
     cells = figures.draw_mesh(ax, runs.path("figure3-paper", 4), "x / b", "y / b")
     ax.set_title("alpha = 30 degrees, aspect ratio 10", fontsize=9)
     fig.tight_layout()
-    return Section(
+    return page.mesh_section(
         "figure2", "Figure 2: mesh for inclined interfaces",
         "a column of 8-node elements crossed by one inclined row of thin elements (the "
         "interface), similar to Pande and Sharma's but with no line of symmetry.",
-        "reproduced",
-        "The paper's drawing is not in our copy of the text; this mesh follows its "
-        "description: blocks of %d Q8 cells in all, one row of thin cells along the "
-        "interface (red), the column of width b fixed at its base, no symmetry line "
-        "(meshes/inclined-column.geo; the angle and aspect ratio are parameters)." % cells,
-        figures=[(figures.data_uri(fig), "thinlayer's Case 1 mesh (the runs' mesh.msh)")],
-        paper_value="mesh drawn", our_value="same layout, %d cells" % cells)
+        "%d Q8 cells in all, one row of thin cells along the interface (red), the column of "
+        "width b fixed at its base, no symmetry line (meshes/inclined-column.geo; the angle "
+        "and aspect ratio are parameters)." % cells,
+        (figures.data_uri(fig), "thinlayer's Case 1 mesh (the runs' mesh.msh)"), cells)
 
 
 def table1(runs, quick):

@@ -5,7 +5,7 @@ import matplotlib.pyplot as plt
 
 import closed_form
 import results
-from report import figures
+from report import figures, page
 from report.page import Section
 
 # Table 2 (CP2): K_pc by C_w / c_u.
@@ -39,17 +39,13 @@ def figure11(runs, quick):
     axes[1].set_title("with a stiff wall and zero-thickness elements (beyond the paper)",
                       fontsize=9)
     fig.tight_layout()
-    return Section(
+    return page.mesh_section(
         "figure11", "Figure 11: mesh for the earth-pressure analysis",
         "a thin column of elements adjacent to the wall; no wall in the analysis, the wall's "
         "movement prescribed on the soil.",
-        "reproduced",
-        "The paper's drawing is not in our copy; this mesh (%d cells, meshes/earth-pressure.geo) "
-        "has the thin column beside a wall of height H = 1 whose movement is prescribed, "
-        "vertically restrained for a rough wall and free for a smooth one, as the paper "
-        "describes." % cells,
-        figures=[(figures.data_uri(fig), "The meshes as meshed.")],
-        paper_value="mesh drawn", our_value="same layout, %d cells" % cells)
+        "%d cells (meshes/earth-pressure.geo), the thin column beside a wall of height H = 1 "
+        "whose movement is prescribed, vertically restrained for a rough wall and free for a "
+        "smooth one." % cells, (figures.data_uri(fig), "The meshes as meshed."), cells)
 
 
 def figure12(runs, quick):

@@ -48,6 +48,16 @@ class Section:
         self.paper_value, self.our_value = paper_value, our_value
 
 
+def mesh_section(key, title, paper, description, figure, cells):
+    """A section for one of the paper's mesh drawings, which our copy of the
+    paper does not hold: the mesh as meshed, checked against the paper's
+    description of it."""
+    return Section(key, title, paper, "reproduced",
+                   "The paper's drawing is not in our copy of its text; this mesh follows its "
+                   "description: " + description, figures=[figure],
+                   paper_value="mesh drawn", our_value="same layout, %d cells" % cells)
+
+
 def badge(verdict):
     text, colour = VERDICTS[verdict]
     return '<span class="verdict" style="background:%s">%s</span>' % (colour, html.escape(text))
