@@ -50,6 +50,7 @@ def run_list(quick):
         ("figure4-default", "case1-figure4", DEFAULT + (
             "Sweep/Values=alpha = 10, 15, 20, 22, 24, 25, 26, 27, 28, 30, 32",)),
         ("figure5-paper", "case1-figure5", ()),
+        ("figure5-default", "case1-figure5", DEFAULT),
         ("case1-zero-adhesive", "case1-inclined-adhesive-zero-thickness", ()),
         ("case1-zero-frictional", "case1-inclined-frictional-zero-thickness", ()),
         ("prandtl-paper", "prandtl-strip-footing", ()),
@@ -67,7 +68,8 @@ def run_list(quick):
         ("case3-displacement", "case3-circular-footing-displacement", ("Output/Write VTU=false",)),
         ("case4-smooth-paper", "case4-smooth-wall", ("Output/Write VTU=false",)),
         ("case4-figure12-paper", "case4-figure12", ()),
-        ("case4-rough-default", "case4-rough-wall", DEFAULT + ("Output/Write VTU=false",)),
+        ("case4-smooth-default", "case4-smooth-wall", DEFAULT + ("Output/Write VTU=false",)),
+        ("case4-figure12-default", "case4-figure12", DEFAULT),
         ("case4-rough-accelerated", "case4-rough-wall-accelerated", ("Output/Write VTU=false",)),
         ("case4-zero", "case4-rough-wall-zero-thickness", ("Output/Write VTU=false",)),
     ]

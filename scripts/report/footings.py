@@ -76,7 +76,7 @@ def lateral_footing(runs, case, key, title, mesh_title):
 
 
 def figure7(runs, quick):
-    fig, axes = plt.subplots(2, 1, figsize=(10, 7))
+    fig, axes = plt.subplots(1, 2, figsize=(13, 4.6), gridspec_kw={"width_ratios": [1, 1.3]})
     largest = figures.vectors(axes[0], runs.path("case2-paper"), increment=True)
     axes[0].set_title("increment of the step that ended the paper's-method run (the mechanism), "
                       "largest %.3g L" % largest, fontsize=9)
