@@ -250,7 +250,7 @@ def figure5(runs, quick):
         "improve the definition of failure; the curve is merely shifted by a constant amount.",
         verdict,
         "Slip starts at alpha = %s for E_i / E = %s: softening the layer a hundredfold moves "
-        "the onset by %g degrees, and scales the displacements before it by a nearly constant "
+        "the onset of slip by %g (degrees), and scales the displacements before it by a nearly constant "
         "factor (a constant shift on the log axis). By the default method slip starts at "
         "alpha = %s." % (
             ", ".join("%g" % o for o in onsets), ", ".join("%g" % (float(m) / 1e5) for m in moduli),

@@ -3,6 +3,7 @@ TOL, every method) and the speed-against-accuracy benchmark."""
 import csv
 import math
 import os
+import statistics
 
 import matplotlib.pyplot as plt
 from matplotlib.colors import ListedColormap
@@ -115,12 +116,21 @@ def speed_accuracy(runs, quick):
     directory = os.path.join(runs.directory, "benchmarks")
     with open(os.path.join(directory, "benchmarks.csv"), newline="") as f:
         rows = list(csv.DictReader(f))
-    table = [["case", "level", "method", "TOL", "outcome", "error (analytic)",
-              "error (discrete limit)", "iterations", "wall s"]]
-    for r in rows:
-        table.append([r["case"], r["mesh_level"], r["method"], r["tolerance"], r["outcome"],
-                      percent(r["relative_error"]), percent(r["discrete_error"]),
-                      r["total_iterations"], "%.2f" % float(r["wall_median_s"])])
+    table = [["method", "runs with a collapse (or plateau)",
+              "within 0.5% of the discrete limit", "median |error| against the limit",
+              "median wall time (s)", "total iterations (median)"]]
+    best = None
+    for method in dict.fromkeys(r["method"] for r in rows):
+        own = [r for r in rows if r["method"] == method]
+        errors = [abs(results.number(r["discrete_error"])) for r in own
+                  if math.isfinite(results.number(r["discrete_error"]))]
+        close = [e for e in errors if e <= 0.005 + 1e-12]
+        table.append([method, "%d of %d" % (len(errors), len(own)), "%d" % len(close),
+                      "%.2f%%" % (100 * statistics.median(errors)) if errors else "-",
+                      "%.2f" % statistics.median(float(r["wall_median_s"]) for r in own),
+                      "%d" % statistics.median(int(r["total_iterations"]) for r in own)])
+        if best is None or len(close) > best[1]:
+            best = (method, len(close), len(own))
     images = [(figures.embed(os.path.join(directory, name)), caption) for name, caption in (
         ("benchmarks.png", "Error of the collapse load against the median wall time: top, "
          "against the analytic value; bottom, against the same mesh's discrete limit "
@@ -135,10 +145,14 @@ def speed_accuracy(runs, quick):
         "step's displacement increment against its size, TOL 1e-3 and 1e-5), so a tolerance "
         "means the same for all; each case's load programme and automatic stepping as in its "
         "scene file. The error against the discrete limit shows what the solver adds to the "
-        "mesh's own error.%s" % (" Times of one run each (--quick)." if quick else
-                                 " Times are medians of three runs."),
+        "mesh's own error (in Cases 2 and 3 the analytic sliding load is not the mesh's "
+        "limit: the layer tears). Most often within 0.5%% of the limit: %s (%d of %d runs). "
+        "Every run is in benchmarks/benchmarks.md beside the report.%s" % (
+            best[0], best[1], best[2], " Times of one run each (--quick)." if quick else
+            " Times are medians of three runs."),
         rows=table, figures=images,
-        paper_value="(not in the paper)", our_value="table and charts")
+        paper_value="(not in the paper)",
+        our_value="%s most often within 0.5%% of the limit (%d of %d)" % best)
 
 
 def percent(text):
