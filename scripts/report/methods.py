@@ -102,7 +102,7 @@ def stability(runs, quick):
         "differs" if same else "reproduced", why,
         figures=[(figures.data_uri(fig), "Each cell one run: the error of the collapse load, "
                   "or of the last converged load where there is no collapse (not an error "
-                  "of a collapse load). Adhesive: alpha 30; frictional: phi 20, alpha 30. At "
+                  "of a collapse load). Adhesive: alpha 30; frictional: alpha 45, phi = psi = 20. At "
                   "aspect ratio 10 the adhesive layer's own collapse load lies 8% below the "
                   "analytic one (Table 1), so no method can come within 2% there.")],
         cost="%.0f s for %d runs" % (
