@@ -102,9 +102,9 @@ else
   # benchmark run once), and the page checked in headless Chromium.
   echo "thinlayer setup: scripts/reproduce.sh --quick"
   report="$build/reproduce-quick"
-  "$top/scripts/reproduce.sh" --quick --output "$report" > "$build/reproduce-quick.log" 2>&1 ||
-    { tail -30 "$build/reproduce-quick.log"; echo "thinlayer setup: the reproduction failed;" \
-      "the log is $build/reproduce-quick.log" >&2; exit 1; }
+  "$top/scripts/reproduce.sh" --quick --output "$report" 2>&1 | tee "$build/reproduce-quick.log" ||
+    { echo "thinlayer setup: the reproduction failed; the log is $build/reproduce-quick.log" >&2
+      exit 1; }
   /usr/bin/python3 "$top/scripts/check_report.py" "$report/report.html"
   echo "thinlayer setup: all tests passed (Release, Debug, valgrind, the report in Chromium)"
 fi
