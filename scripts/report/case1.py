@@ -35,7 +35,8 @@ def figure2(runs, quick):
         "%d Q8 cells in all, one row of thin cells along the interface (red), the column of "
         "width b fixed at its base, no symmetry line (meshes/inclined-column.geo; the angle "
         "and aspect ratio are parameters)." % cells,
-        (figures.data_uri(fig), "thinlayer's Case 1 mesh (the runs' mesh.msh)"), cells)
+        (figures.data_uri(fig), "thinlayer's Case 1 mesh (the runs' mesh.msh)"), cells,
+        figures.layer_cells(runs.path("figure3-paper", 4), "interface"))
 
 
 def table1(runs, quick):

@@ -47,7 +47,8 @@ def figure11(runs, quick):
         "movement prescribed on the soil.",
         "%d cells (meshes/earth-pressure.geo), the thin column beside a wall of height H = 1 "
         "whose movement is prescribed, vertically restrained for a rough wall and free for a "
-        "smooth one." % cells, (figures.data_uri(fig), "The meshes as meshed."), cells)
+        "smooth one." % cells, (figures.data_uri(fig), "The meshes as meshed."), cells,
+        figures.layer_cells(runs.path("case4-figure12-paper", 1), "wall column"))
 
 
 def figure12(runs, quick):

@@ -140,6 +140,23 @@ def failure_legend(ax, figure=None, **kwargs):
         figure.legend(handles, labels, loc="lower center", ncol=3, **kwargs)
 
 
+def layer_cells(directory, name):
+    """The number of cells in the run's physical surface called @p name."""
+    _, quads, names = read_msh(os.path.join(directory, "mesh.msh"))
+    ids = {tag for (dim, tag), text in names.items() if dim == 2 and text == name}
+    return sum(1 for material, _ in quads if material in ids)
+
+
+def increment_below(directory, depth):
+    """The largest displacement increment of the last step at vertices below
+    y = @p depth, over the largest anywhere: how deep a mechanism reaches."""
+    with open(os.path.join(directory, "displacements.csv"), newline="") as f:
+        rows = [(float(r["y"]), math.hypot(float(r["du_x"]), float(r["du_y"])))
+                for r in csv.DictReader(f)]
+    largest = max(size for _, size in rows) or 1.0
+    return max((size for y, size in rows if y < depth), default=0.0) / largest
+
+
 def vectors(ax, directory, increment=True, length_unit="L"):
     """Arrows at the vertices: the last step's increment (at a failed step,
     the mechanism) or the total displacement, with the body's outline and

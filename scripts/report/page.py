@@ -48,14 +48,16 @@ class Section:
         self.paper_value, self.our_value = paper_value, our_value
 
 
-def mesh_section(key, title, paper, description, figure, cells):
+def mesh_section(key, title, paper, description, figure, cells, layer):
     """A section for one of the paper's mesh drawings, which our copy of the
     paper does not hold: the mesh as meshed, checked against the paper's
-    description of it."""
-    return Section(key, title, paper, "reproduced",
+    description of it (@p layer: the cells of the thin layer it describes,
+    counted in the mesh; none means it differs)."""
+    return Section(key, title, paper, "reproduced" if layer > 0 else "differs",
                    "The paper's drawing is not in our copy of its text; this mesh follows its "
-                   "description: " + description, figures=[figure],
-                   paper_value="mesh drawn", our_value="same layout, %d cells" % cells)
+                   "description: " + description + " The thin layer has %d cells." % layer,
+                   figures=[figure], paper_value="mesh drawn",
+                   our_value="same layout, %d cells, %d in the layer" % (cells, layer))
 
 
 def badge(verdict):
