@@ -8,8 +8,9 @@ speed-against-accuracy benchmark, then write OUTPUT/report.html.
 
 Call it through scripts/reproduce.sh, which builds thinlayer first. The runs
 go into DIR/runs/NAME (each a thinlayer results directory), the benchmark
-into DIR/benchmarks; DIR (default output/reproduce) is emptied first, so it
-always holds one reproduction. --quick runs smaller sweeps and a one-pass
+into DIR/benchmarks; everything is written into DIR.partial and replaces
+DIR (default output/reproduce) only when the page is written, so DIR
+always holds one whole reproduction. --quick runs smaller sweeps and a one-pass
 benchmark (for CI); --report-only rewrites the page from the runs already
 in DIR.
 """
@@ -124,27 +125,36 @@ def main():
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--quick", action="store_true", help="smaller sweeps, one-pass benchmark")
     parser.add_argument("--output", default=os.path.join(TOP, "output", "reproduce"),
-                        help="the report's directory (emptied first)")
+                        help="the report's directory (replaced when the new report is written)")
     parser.add_argument("--report-only", action="store_true",
                         help="rewrite report.html from the runs in the directory")
     arguments = parser.parse_args()
     directory = os.path.abspath(arguments.output)
     start = time.time()
+    # A reproduction is written beside DIR and put in its place when the
+    # page is written: an error or an interruption leaves the previous one.
+    work = directory if arguments.report_only else directory + ".partial"
     if not arguments.report_only:
         if not os.access(THINLAYER, os.X_OK):
             sys.exit("reproduce: no thinlayer binary at %s: run scripts/reproduce.sh" % THINLAYER)
-        if os.path.isdir(directory):
-            shutil.rmtree(directory)
-        os.makedirs(os.path.join(directory, "logs"))
-        run_all(run_list(arguments.quick), directory)
-        run_benchmark(directory, arguments.quick)
-    runs = Runs(directory)
+        if os.path.isdir(work):
+            shutil.rmtree(work)
+        os.makedirs(os.path.join(work, "logs"))
+        run_all(run_list(arguments.quick), work)
+        run_benchmark(work, arguments.quick)
+    runs = Runs(work)
     print("report: drawing the figures", flush=True)
     items = sections(runs, arguments.quick)
-    path = os.path.join(directory, "report.html")
-    page.write(path, "thinlayer reproduces Griffiths' thin-layer interfaces",
-               introduction(arguments.quick), items, footer(runs, time.time() - start))
-    print("report: %s (%d items, %.0f s)" % (path, len(items), time.time() - start))
+    page.write(os.path.join(work, "report.html"),
+               "thinlayer reproduces Griffiths' thin-layer interfaces",
+               introduction(arguments.quick), items,
+               footer(directory, runs, time.time() - start))
+    if work != directory:
+        if os.path.isdir(directory):
+            shutil.rmtree(directory)
+        os.rename(work, directory)
+    print("report: %s (%d items, %.0f s)" % (os.path.join(directory, "report.html"), len(items),
+                                             time.time() - start))
 
 
 def introduction(quick):
@@ -163,10 +173,10 @@ def introduction(quick):
          if quick else [])
 
 
-def footer(runs, seconds):
-    return ("Written by scripts/reproduce.py from the runs in %s (every run's history.csv, "
-            "summary.json, mesh.msh and parameters.prm are there) in %.0f s on %s; "
-            "thinlayer %s." % (runs.directory, seconds, runs.machine(), runs.version()))
+def footer(directory, runs, seconds):
+    return ("Written by scripts/reproduce.py from the runs in %s/runs (every run's "
+            "history.csv, summary.json, mesh.msh and parameters.prm are there) in %.0f s on %s; "
+            "thinlayer %s." % (directory, seconds, runs.machine(), runs.version()))
 
 
 if __name__ == "__main__":

@@ -7,7 +7,8 @@
 # then runs every scene of the paper's tables and figures, by the paper's
 # method and by the default one, the validations, the stability maps and
 # the speed-against-accuracy benchmark, and writes DIR/report.html (default
-# output/reproduce/report.html; DIR is emptied first). Progress is printed
+# output/reproduce/report.html; DIR is replaced when the page is written,
+# so an error leaves the previous reproduction). Progress is printed
 # run by run. --quick: smaller sweeps and a benchmark run once (for CI).
 set -euo pipefail
 top="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
