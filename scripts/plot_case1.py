@@ -23,16 +23,13 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 import closed_form  # noqa: E402
 import results  # noqa: E402
+from report import figures  # noqa: E402
 from report.case1 import slip_panel  # noqa: E402
 
 
 def read_csv(path):
     with open(path, newline="") as f:
         return list(csv.DictReader(f))
-
-
-def history(directory, run):
-    return read_csv(os.path.join(directory, "run-%03d" % int(run), "history.csv"))
 
 
 def number(text):
@@ -124,28 +121,22 @@ def figure3(directory):
     for column, alpha in enumerate(alphas):
         ax, ax_it = axes[0][column], axes[1][column]
         for r in (r for r in rows if r["alpha"] == alpha):
-            rows_of_run = history(directory, r["run"])
+            rows_of_run = figures.curve(ax, os.path.join(directory, "run-%03d" % int(r["run"])),
+                                        "aspect ratio %s" % r["aspect_ratio"])
             h = results.states(rows_of_run)
-            failed = results.failures(rows_of_run)
-            u = [number(s["displacement"]) for s in h]
-            p = [number(s["load"]) for s in h]
-            line, = ax.plot(u, p, "-", label="aspect ratio %s" % r["aspect_ratio"])
-            ax.plot([number(s["displacement"]) for s in failed],
-                    [number(s["load"]) for s in failed],
-                    "o", mfc="none", color=line.get_color())
             ax_it.plot([number(s["load"]) / number(r["reference_load"]) for s in h],
-                       [int(s["iterations"]) for s in h], ".-", color=line.get_color())
+                       [int(s["iterations"]) for s in h], ".-", color=ax.lines[-3].get_color())
         ax.axhline(closed_form.inclined_interface_load(float(alpha)), color="k", ls="--",
                    label="analytic")
-        ax.set_title("alpha = %s degrees (open: step failed or on the mechanism)" % alpha)
-        ax.set_xlabel("E u / C_w (axial, top)")
+        ax.set_title("alpha = %s degrees" % alpha)
+        ax.set_xlabel("axial displacement of the top, E u / (C_w b)")
         ax.grid(alpha=0.3)
         ax_it.set_xlabel("P / P_ult")
         ax_it.set_yscale("log")
         ax_it.grid(alpha=0.3)
-    axes[0][0].set_ylabel("P / C_w")
+    axes[0][0].set_ylabel("axial stress P / C_w")
     axes[1][0].set_ylabel("iterations per step")
-    axes[0][0].legend()
+    figures.failure_legend(axes[0][0], fontsize=7)
     fig.tight_layout()
     fig.savefig(os.path.join(directory, "figure3.png"), dpi=120)
     print("wrote", os.path.join(directory, "figure3.png"))
