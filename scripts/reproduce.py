@@ -2,7 +2,7 @@
 """Reproduce Griffiths' paper into one report: run every scene the paper's
 tables and figures need, by the paper's method and by the default one,
 the validations against closed forms, the stability maps and the
-speed-against-accuracy benchmark, then write OUTPUT/report.html.
+speed-against-accuracy benchmark, then write DIR/report.html.
 
     /usr/bin/python3 scripts/reproduce.py [--quick] [--output DIR] [--report-only]
 
