@@ -54,7 +54,7 @@ def figure11(runs, quick):
 def figure12(runs, quick):
     fig, ax = plt.subplots(figsize=(8, 5))
     rows = [["C_w / c_u", "CP2 K_pc (Table 2)", "slip-line K_pc", "the paper's method",
-             "against CP2", "default method", "against CP2"]]
+             "against CP2", "default method (or the row's)", "against CP2"]]
     computed = {}
     default = dict(walls(runs, "default"))
     for (ratio, directory), colour in zip(walls(runs, "paper"), ("C0", "C1", "C2")):
