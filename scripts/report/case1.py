@@ -77,10 +77,13 @@ def table1(runs, quick):
         "than the interface Table 1 describes; the runs above that bound are the "
         "discretisation's: displacement finite elements over-estimate the collapse load of "
         "the body they model, and one row of cells cannot form a slip plane across the "
-        "layer. The paper's method at TOL 1e-5 stalls at the "
-        "knee ('not converged'): its iterations cannot follow the slip, so it gives a last "
-        "converged load, never a collapse, except at 45 degrees." % (
-            worst, len(collapsed), len(default), len(bounded)),
+        "layer. The paper's method at TOL 1e-5 ends in a collapse only at alpha = %s; "
+        "elsewhere it stalls at the knee ('not converged'): its iterations cannot follow the "
+        "slip, so it gives a last converged load." % (
+            worst, len(collapsed), len(default), len(bounded),
+            ", ".join(sorted({r["alpha"] for r in runs.sweep("table1-paper")
+                              if r["Solver/Tolerance"] == "1e-5" and results.collapse_detected(r)},
+                             key=float)) or "none"),
         rows=rows, cost="%.0f s for %d runs" % (runs.seconds("table1-paper", "table1-default"),
                                              len(runs.sweep("table1-paper")) + len(default)),
         paper_value="5.85 / 3.11 / 2.31 / 2.03 / 2.00",
@@ -195,13 +198,13 @@ def figure4(runs, quick):
         "small tolerance was needed for a convincing sliding model, and the higher the aspect "
         "ratio, the tighter.",
         verdict,
-        "At TOL %s the layer never slides, even at alpha = 32 > phi: its stresses drift outside "
+        "At TOL %s the layer never slides, even at alpha = %g > phi: its stresses drift outside "
         "the yield surface (the 1/TOL trap). At TOL %s it slides from alpha = %g on, below phi "
         "as the paper found ('yielding commenced before alpha reached phi'): with dilation 0 "
         "the layer's slip angle is Davis's phi* = 26.6 degrees (dotted), not phi (dashed). The "
         "default method slides from alpha = %g. Whether thinner layers need tighter "
         "tolerances is the stability map's question (below): here they do not." % (
-            tols[0], tols[-1], tight, onset["default"]),
+            tols[0], max(float(r["alpha"]) for r in rows), tols[-1], tight, onset["default"]),
         figures=[(figures.data_uri(fig), "Runs that held: the top's horizontal displacement "
                   "at full load; runs that slid: x at the top of each panel. Dashed: alpha = "
                   "phi = 30 degrees; dotted: Davis's phi* = 26.6 degrees. One panel per "
