@@ -132,7 +132,7 @@ def failure_legend(ax, figure=None, **kwargs):
     cross, = ax.plot([], [], "x", color="k", ms=8, mew=1.5)
     beyond, = ax.plot([], [], ">", color="k", ms=8)
     handles += [cross, beyond]
-    labels += ["x: attempt that ended the run (no equilibrium; not on the curve)",
+    labels += ["x: attempt that ended the run (failed or on the mechanism; not on the curve)",
                "> : such an attempt far beyond the axis"]
     if figure is None:
         ax.legend(handles, labels, **kwargs)
