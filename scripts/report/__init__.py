@@ -5,6 +5,7 @@ page.
 figures   matplotlib helpers every section shares (meshes from mesh.msh,
           load-displacement curves with only converged states, vector plots)
 page      the HTML page: sections, tables, embedded images, verdicts
+runs      the runs of a reproduction (summaries, sweeps, paths) as sections read them
 case1, footings, case4, methods
           the sections: what the paper shows, what thinlayer computes, and
           the verdict, from the runs of scripts/reproduce.py
