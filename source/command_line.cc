@@ -3,12 +3,14 @@
 #include <thinlayer/command_line.h>
 #include <thinlayer/input_error.h>
 #include <thinlayer/interruption.h>
+#include <thinlayer/parameter_text.h>
 #include <thinlayer/parameters.h>
 #include <thinlayer/results_directory.h>
 #include <thinlayer/run.h>
 #include <thinlayer/sweep.h>
 
 #include <csignal>
+#include <sstream>
 
 namespace thinlayer
 {
@@ -133,32 +135,34 @@ namespace thinlayer
           }
         return 0;
       }
+    // Messages may quote the input, which may be binary: control bytes
+    // are written as \xNN.
     catch (const InputError &e)
       {
-        err << "thinlayer: " << e.what() << '\n';
+        err << "thinlayer: " << printable(e.what()) << '\n';
         return 1;
       }
     catch (const Interrupted &e)
       {
-        err << "thinlayer: " << e.what() << '\n';
+        err << "thinlayer: " << printable(e.what()) << '\n';
         return 128 + interruption_signal();
       }
     catch (const WriteError &e)
       {
-        err << "thinlayer: " << e.what()
+        err << "thinlayer: " << printable(e.what())
             << "; Output/Directory still holds the run it held before\n";
         return 1;
       }
     catch (const ExceptionBase &e)
       {
-        err << "thinlayer: internal error: ";
-        e.print_info(err);
-        err << '\n';
+        std::ostringstream info;
+        e.print_info(info);
+        err << "thinlayer: internal error: " << printable(info.str()) << '\n';
         return 3;
       }
     catch (const std::exception &e)
       {
-        err << "thinlayer: internal error: " << e.what() << '\n';
+        err << "thinlayer: internal error: " << printable(e.what()) << '\n';
         return 3;
       }
   }

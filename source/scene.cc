@@ -7,11 +7,11 @@
 #include <thinlayer/scene.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <limits>
-#include <regex>
 #include <set>
 #include <sstream>
 
@@ -19,25 +19,55 @@ namespace thinlayer
 {
   namespace
   {
+    bool
+    is_identifier_char(const char c)
+    {
+      return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+    }
+
     /**
      * The text of a .geo with the files it includes, to check that the
-     * geometry parameters set from the parameter file exist.
+     * geometry parameters set from the parameter file exist. Scanned by
+     * hand: a regular expression recurses over long lines.
      */
     std::string
     geometry_text(const std::string &file, const unsigned int depth = 0)
     {
       std::string       text = read_file(file);
-      const std::regex  include("Include\\s*\"([^\"]+)\"");
       const std::string directory =
         std::filesystem::path(file).parent_path().string();
       std::string included;
-      for (std::sregex_iterator i(text.begin(), text.end(), include), end;
-           i != end && depth < 8;
-           ++i)
-        included += geometry_text((directory.empty() ? "" : directory + "/") +
-                                    (*i)[1].str(),
-                                  depth + 1);
+      for (std::size_t at = text.find("Include");
+           at != std::string::npos && depth < 8;
+           at = text.find("Include", at + 7))
+        {
+          std::size_t open = at + 7;
+          while (open < text.size() &&
+                 std::isspace(static_cast<unsigned char>(text[open])))
+            ++open;
+          if (open >= text.size() || text[open] != '"')
+            continue;
+          const std::size_t close = text.find('"', open + 1);
+          if (close == std::string::npos)
+            break;
+          included += geometry_text((directory.empty() ? "" : directory + "/") +
+                                      text.substr(open + 1, close - open - 1),
+                                    depth + 1);
+        }
       return text + included;
+    }
+
+    /// Whether @p name stands in @p text as a whole word.
+    bool
+    contains_word(const std::string &text, const std::string &name)
+    {
+      for (std::size_t at = text.find(name); at != std::string::npos;
+           at             = text.find(name, at + 1))
+        if ((at == 0 || !is_identifier_char(text[at - 1])) &&
+            (at + name.size() == text.size() ||
+             !is_identifier_char(text[at + name.size()])))
+          return true;
+      return false;
     }
 
     /**
@@ -49,7 +79,7 @@ namespace thinlayer
     {
       const std::string geo = geometry_text(p.mesh.file);
       for (const auto &[name, value] : p.mesh.geometry_parameters)
-        if (!std::regex_search(geo, std::regex("\\b" + name + "\\b")))
+        if (!contains_word(geo, name))
           throw InputError(p.parameter_file,
                            "Mesh/Geometry parameters",
                            "'" + name + "' is not a parameter of " +
@@ -157,34 +187,47 @@ namespace thinlayer
         {
           // deal.II numbers a quadrilateral's vertices lexicographically;
           // 0, 1, 3, 2 goes round it anticlockwise.
-          const Point<2> v[4]     = {cell->vertex(0),
-                                     cell->vertex(1),
-                                     cell->vertex(3),
-                                     cell->vertex(2)};
-          double         smallest = std::numeric_limits<double>::max();
+          const Point<2> v[4]       = {cell->vertex(0),
+                                       cell->vertex(1),
+                                       cell->vertex(3),
+                                       cell->vertex(2)};
+          double         smallest   = std::numeric_limits<double>::max();
+          int            coincident = -1;
+          double         area       = 0;
           for (unsigned int k = 0; k < 4; ++k)
             {
               const Tensor<1, 2> a = v[(k + 1) % 4] - v[k];
               const Tensor<1, 2> b = v[(k + 3) % 4] - v[k];
               smallest = std::min(smallest, a[0] * b[1] - a[1] * b[0]);
+              area +=
+                (v[k][0] * v[(k + 1) % 4][1] - v[(k + 1) % 4][0] * v[k][1]) / 2;
+              if (coincident < 0 && a.norm_square() <= 1e-24 * extent)
+                coincident = k;
             }
-          if (smallest > 1e-12 * extent)
+          if (smallest > 1e-12 * extent && coincident < 0)
             continue;
           std::ostringstream where;
           where << "cell " << cell->active_cell_index() << " of physical "
                 << "surface " << cell->material_id() << ", corners";
           for (const auto &corner : v)
             where << " (" << corner[0] << ", " << corner[1] << ')';
-          throw InputError(
-            file,
-            "",
-            where.str() +
-              (smallest > 0
-                 ? ": the cell is smaller than 1e-12 of the mesh's extent "
-                   "squared, too small for the stiffness to be computed"
-                 : ": expected a convex quadrilateral with four distinct "
-                   "corners, got one that is degenerate, folded (a bow-tie) "
-                   "or not convex"));
+          std::ostringstream what;
+          if (coincident >= 0)
+            what << ": two corners coincide at (" << v[coincident][0] << ", "
+                 << v[coincident][1]
+                 << ") (to 1e-12 of the mesh's size), a quadrilateral "
+                 << "collapsed to a triangle of area " << std::abs(area)
+                 << "; expected four distinct corners";
+          else if (smallest <= 0)
+            what << ": expected a convex quadrilateral, got one that is "
+                    "folded (a bow-tie), not convex, or flat at a corner "
+                    "(area "
+                 << area << ")";
+          else
+            what << ": the cell (area " << area
+                 << ") is smaller than 1e-12 of the mesh's extent squared, "
+                    "too small for the stiffness to be computed";
+          throw InputError(file, "", where.str() + what.str());
         }
     }
 

@@ -4,8 +4,10 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <iostream>
 #include <limits>
 #include <map>
+#include <sstream>
 #include <string>
 
 namespace thinlayer
@@ -17,6 +19,27 @@ namespace thinlayer
    * Checks that more than one parameter section makes of its entries, each
    * throwing InputError with the file, the entry and what was expected.
    */
+
+  /**
+   * Silences std::cerr while alive: muparser's diagnostics go there, and
+   * we report the error ourselves, once, naming the entry.
+   */
+  class SilencedErrorStream
+  {
+  public:
+    SilencedErrorStream()
+      : saved(std::cerr.rdbuf(sink.rdbuf()))
+    {}
+    ~SilencedErrorStream()
+    {
+      std::cerr.rdbuf(saved);
+    }
+
+  private:
+    std::ostringstream sink;
+    std::streambuf    *saved;
+  };
+
 
   /**
    * The message part of a deal.II exception on one line, without the
@@ -38,6 +61,12 @@ namespace thinlayer
                     const std::map<std::string, double> &constants,
                     const std::string                   &file,
                     const std::string                   &entry);
+
+  /// Whether @p name is a name of a geometry parameter (and of gmsh's
+  /// DefineConstant): a letter or '_', then letters, digits or '_'.
+  bool
+  is_identifier(const std::string &name);
+
 
   /// The entry @p name of the current subsection @p section, which must be
   /// > 0, and at most @p maximum.

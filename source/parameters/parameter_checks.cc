@@ -9,28 +9,6 @@
 
 namespace thinlayer
 {
-  namespace
-  {
-    /**
-     * Silences std::cerr while alive: muparser's diagnostics go there, and
-     * we report the error ourselves, once, naming the entry.
-     */
-    class SilencedErrorStream
-    {
-    public:
-      SilencedErrorStream()
-        : saved(std::cerr.rdbuf(sink.rdbuf()))
-      {}
-      ~SilencedErrorStream()
-      {
-        std::cerr.rdbuf(saved);
-      }
-
-    private:
-      std::ostringstream sink;
-      std::streambuf    *saved;
-    };
-  } // namespace
 
   std::string
   message_of(const ExceptionBase &exception)
@@ -89,6 +67,18 @@ namespace thinlayer
                            (fourier ? "r, z, theta" : "x, y") +
                            " and the geometry parameters: " + message_of(e));
       }
+  }
+
+
+  bool
+  is_identifier(const std::string &name)
+  {
+    if (name.empty() || std::isdigit(static_cast<unsigned char>(name[0])))
+      return false;
+    for (const char c : name)
+      if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_')
+        return false;
+    return true;
   }
 
 

@@ -2,12 +2,12 @@
 
 #include <thinlayer/input_error.h>
 #include <thinlayer/parameter_checks.h>
+#include <thinlayer/parameter_text.h>
 #include <thinlayer/parameters.h>
 
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <regex>
 #include <set>
 #include <sstream>
 
@@ -15,52 +15,57 @@ namespace thinlayer
 {
   namespace
   {
+    /// Where @p line is, for messages: "line 7", or "line 7 of FILE" for a
+    /// line of an included file.
+    std::string
+    position(const ParameterLine &line, const std::string &file)
+    {
+      return "line " + std::to_string(line.line) +
+             (line.file == file ? std::string() : " of '" + line.file + "'");
+    }
+
+
     /**
      * A section opened twice, or an entry set twice in one section:
-     * ParameterHandler lets the later win, silently. Line numbers are the
-     * file's.
+     * ParameterHandler lets the later win, silently.
      */
     void
-    check_nothing_given_twice(const std::string &text, const std::string &file)
+    check_nothing_given_twice(const std::vector<ParameterLine> &lines,
+                              const std::string                &file)
     {
-      const std::regex         opens("^\\s*subsection\\s+(.*?)\\s*(#.*)?$");
-      const std::regex         closes("^\\s*end\\s*(#.*)?$");
-      const std::regex         sets("^\\s*set\\s+([^=]*?)\\s*=.*$");
-      std::vector<std::string> path;
-      std::map<std::string, unsigned int> first_line;
-      std::istringstream                  lines(text);
-      std::string                         line;
-      std::smatch                         match;
-      for (unsigned int number = 1; std::getline(lines, line); ++number)
+      std::vector<std::string>             path;
+      std::map<std::string, ParameterLine> first;
+      for (const auto &line : lines)
         {
           std::string key;
-          if (std::regex_match(line, match, opens))
+          std::string name;
+          for (const auto &p : path)
+            name += p + "/";
+          if (line.kind == ParameterLine::Kind::subsection)
             {
-              path.push_back(match[1]);
+              path.push_back(line.name);
               key = "subsection ";
+              name += line.name;
             }
-          else if (std::regex_match(line, match, closes))
+          else if (line.kind == ParameterLine::Kind::end)
             {
               if (!path.empty())
                 path.pop_back();
               continue;
             }
-          else if (std::regex_match(line, match, sets))
-            key = "entry ";
+          else if (line.kind == ParameterLine::Kind::set)
+            {
+              key = "entry ";
+              name += line.name;
+            }
           else
             continue;
-          std::string name;
-          for (unsigned int i = 0; i + (key == "entry " ? 0 : 1) < path.size();
-               ++i)
-            name += path[i] + "/";
-          name += key == "entry " ? std::string(match[1]) : path.back();
-          const auto [it, inserted] = first_line.emplace(key + name, number);
+          const auto [it, inserted] = first.emplace(key + name, line);
           if (!inserted)
             throw InputError(file,
                              name,
-                             "given twice, at lines " +
-                               std::to_string(it->second) + " and " +
-                               std::to_string(number) +
+                             "given twice, at " + position(it->second, file) +
+                               " and " + position(line, file) +
                                " (the later would silently win); expected "
                                "each " +
                                (key == "entry " ? "entry" : "subsection") +
@@ -69,30 +74,127 @@ namespace thinlayer
     }
 
 
+    /// The largest id a per-id section may have: gmsh's physical tags are
+    /// ints.
+    constexpr unsigned long max_section_id = 2147483647ul;
+
     /**
-     * The names of per-id sections ("Material 3") that the parameter text
-     * opens, and that the overrides address ("Material 3/...").
+     * The id of the per-id section @p name ("Material 3") of @p kind, or
+     * -1 if @p name is no such section; an InputError naming @p where if
+     * it is one whose id is not a whole number in range ("Material -1").
+     */
+    long
+    section_id(const std::string &name,
+               const std::string &kind,
+               const std::string &where,
+               const std::string &entry)
+    {
+      if (name.compare(0, kind.size(), kind) != 0 ||
+          (name.size() > kind.size() && name[kind.size()] != ' '))
+        return -1;
+      const std::string id = Utilities::trim(name.substr(kind.size()));
+      if (!id.empty() && id.size() <= 10 &&
+          id.find_first_not_of("0123456789") == std::string::npos &&
+          std::stoul(id) <= max_section_id)
+        return static_cast<long>(std::stoul(id));
+      throw InputError(where,
+                       entry,
+                       "expected '" + kind +
+                         " <id>' with <id> a whole "
+                         "number from 0 to " +
+                         std::to_string(max_section_id) +
+                         " (a physical group of the mesh), got '" + name + "'");
+    }
+
+
+    /**
+     * The ids of the per-id sections ("Material 3") that the parameter
+     * lines open, and that the overrides address ("Material 3/...").
      */
     std::set<types::global_dof_index>
-    ids_of_sections(const std::string              &text,
-                    const std::vector<std::string> &overrides,
-                    const std::string              &kind)
+    ids_of_sections(const std::vector<ParameterLine> &lines,
+                    const std::string                &file,
+                    const std::vector<std::string>   &overrides,
+                    const std::string                &kind)
     {
       std::set<types::global_dof_index> ids;
-      const std::regex                  in_file("^\\s*subsection\\s+" + kind +
-                               "\\s+([0-9]+)\\s*(#.*)?$");
-      std::istringstream                lines(text);
-      std::string                       line;
-      std::smatch                       match;
-      while (std::getline(lines, line))
-        if (std::regex_match(line, match, in_file))
-          ids.insert(std::stoul(match[1]));
+      unsigned int                      depth = 0;
+      for (const auto &line : lines)
+        if (line.kind == ParameterLine::Kind::subsection)
+          {
+            if (depth++ == 0)
+              if (const long id =
+                    section_id(line.name,
+                               kind,
+                               file,
+                               "subsection, " + position(line, file));
+                  id >= 0)
+                ids.insert(id);
+          }
+        else if (line.kind == ParameterLine::Kind::end && depth > 0)
+          --depth;
 
-      const std::regex in_override("^\\s*" + kind + "\\s+([0-9]+)\\s*/.*");
       for (const auto &o : overrides)
-        if (std::regex_match(o, match, in_override))
-          ids.insert(std::stoul(match[1]));
+        {
+          const auto slash = o.find('/');
+          if (slash != std::string::npos && slash < o.find('='))
+            if (const long id = section_id(Utilities::trim(o.substr(0, slash)),
+                                           kind,
+                                           "command line",
+                                           o.substr(0, o.find('=')));
+                id >= 0)
+              ids.insert(id);
+        }
       return ids;
+    }
+
+
+    /**
+     * Entries the user gave that mean nothing in this scene: accepted
+     * silently, they would let a user believe they had an effect.
+     */
+    void
+    check_entries_mean_something(const Parameters            &p,
+                                 const std::set<std::string> &given)
+    {
+      const auto refuse_if_given = [&](const std::string &entry,
+                                       const std::string &why) {
+        if (given.count(entry) != 0)
+          throw InputError(p.parameter_file,
+                           entry,
+                           "means nothing " + why + "; expected it unset");
+      };
+      if (!p.kinematics.fourier)
+        for (const char *entry : {"Kinematics/Harmonics",
+                                  "Kinematics/Series",
+                                  "Kinematics/Stations",
+                                  "Kinematics/Axis boundary id",
+                                  "Monitors/Displacement angle"})
+          refuse_if_given(entry,
+                          "in plane strain (it is for Kinematics/Type = "
+                          "fourier)");
+      using Measure = MonitorParameters::DisplacementMeasure;
+      if (p.monitors.displacement_measure == Measure::boundary_average)
+        refuse_if_given("Monitors/Displacement point",
+                        "with Displacement measure = boundary average "
+                        "(it is for the point measure)");
+      else
+        refuse_if_given("Monitors/Displacement boundary id",
+                        "with Displacement measure = point (it is for the "
+                        "boundary average)");
+      using Load = MonitorParameters::LoadMeasure;
+      if (p.monitors.load_measure != Load::reaction)
+        for (const char *entry :
+             {"Monitors/Load boundary id", "Monitors/Load component"})
+          refuse_if_given(entry,
+                          "unless Load measure = reaction (it is for the "
+                          "reactions' resultant)");
+      if (p.monitors.load_measure != Load::stress_average)
+        for (const char *entry :
+             {"Monitors/Load material id", "Monitors/Load stress component"})
+          refuse_if_given(entry,
+                          "unless Load measure = stress average (it is for "
+                          "the averaged stress)");
     }
 
 
@@ -219,14 +321,7 @@ namespace thinlayer
   ParameterReader::read(const std::string              &file,
                         const std::vector<std::string> &overrides) const
   {
-    if (std::filesystem::is_directory(file))
-      throw InputError(file, "", "is a directory; expected a parameter file");
-    std::ifstream in(file);
-    if (!in)
-      throw InputError(file, "", "cannot open the parameter file");
-    std::stringstream text;
-    text << in.rdbuf();
-    return read_from_string(text.str(), file, overrides);
+    return read_from_string(read_parameter_file(file), file, overrides);
   }
 
 
@@ -236,16 +331,20 @@ namespace thinlayer
     const std::string              &file,
     const std::vector<std::string> &overrides) const
   {
-    check_nothing_given_twice(text, file);
-    const auto material_ids = ids_of_sections(text, overrides, "Material");
-    const auto boundary_ids = ids_of_sections(text, overrides, "Boundary");
-    const auto curve_ids = ids_of_sections(text, overrides, "Interface curve");
+    const std::vector<ParameterLine> lines = parameter_lines(text, file);
+    check_nothing_given_twice(lines, file);
+    const auto material_ids =
+      ids_of_sections(lines, file, overrides, "Material");
+    const auto boundary_ids =
+      ids_of_sections(lines, file, overrides, "Boundary");
+    const auto curve_ids =
+      ids_of_sections(lines, file, overrides, "Interface curve");
 
     ParameterHandler prm;
     declare_sections(prm, material_ids, boundary_ids, curve_ids);
     try
       {
-        std::istringstream in(text);
+        std::istringstream in(joined_text(lines));
         prm.parse_input(in, file);
       }
     catch (const ExceptionBase &e)
@@ -257,6 +356,7 @@ namespace thinlayer
 
     Parameters parameters =
       parse_sections(prm, file, material_ids, boundary_ids, curve_ids);
+    check_entries_mean_something(parameters, given_entries(lines, overrides));
     // The record names the mesh by its absolute path, so that it can be
     // run again from anywhere.
     prm.enter_subsection("Mesh");

@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <regex>
 
 // The sections that describe the model: mesh, kinematics, discretisation,
 // materials and boundaries.
@@ -29,7 +28,6 @@ namespace thinlayer
     {
       const std::string             entry = "Mesh/Geometry parameters";
       std::map<std::string, double> result;
-      const std::regex              identifier("[A-Za-z_][A-Za-z0-9_]*");
       for (const auto &pair : Utilities::split_string_list(text, ','))
         {
           const auto equal = pair.find('=');
@@ -39,7 +37,7 @@ namespace thinlayer
                              "expected 'name=value' pairs, got '" + pair + "'");
           const std::string name  = Utilities::trim(pair.substr(0, equal));
           const std::string value = Utilities::trim(pair.substr(equal + 1));
-          if (!std::regex_match(name, identifier))
+          if (!is_identifier(name))
             throw InputError(file,
                              entry,
                              "expected a parameter name (letters, digits, "
@@ -51,6 +49,12 @@ namespace thinlayer
                              "'" + name +
                                "' is reserved for expressions; choose "
                                "another parameter name");
+          if (result.count(name) != 0)
+            throw InputError(file,
+                             entry,
+                             "'" + name +
+                               "' is given twice; expected each parameter "
+                               "once");
           try
             {
               std::size_t used = 0;
@@ -89,6 +93,12 @@ namespace thinlayer
               entry,
               std::string("expected a comma-separated list of ") +
                 (fourier ? "r, z, theta" : "x, y") + ", got '" + c + "'");
+          if (result[k - names.begin()])
+            throw InputError(file,
+                             entry,
+                             "'" + c +
+                               "' is given twice; expected each "
+                               "component once");
           result[k - names.begin()] = true;
         }
       return result;
