@@ -7,6 +7,7 @@
 #include <thinlayer/analysis.h>
 #include <thinlayer/input_error.h>
 #include <thinlayer/mode_constraints.h>
+#include <thinlayer/rigid_body_modes.h>
 #include <thinlayer/serendipity_constraints.h>
 
 #include <algorithm>
@@ -272,8 +273,42 @@ namespace thinlayer
 
   template <int dim>
   void
+  Analysis<dim>::check_supports_and_load() const
+  {
+    bool loaded = false;
+    for (const auto &mode : modes)
+      loaded = loaded || mode->unit_load.linfty_norm() > 0 ||
+               mode->unit_prescribed_displacement.linfty_norm() > 0;
+    if (!loaded)
+      throw InputError(parameters.parameter_file,
+                       "Boundary <id>",
+                       "nothing loads the body: every traction, pressure and "
+                       "prescribed displacement is 0; expected at least one "
+                       "that is not");
+
+    if (kinematics.is_fourier())
+      return;
+    std::vector<Point<dim>> points(dof_handler.n_dofs());
+    DoFTools::map_dofs_to_support_points(mapping, dof_handler, points);
+    const std::string motion =
+      free_rigid_body_motion(points,
+                             dof_component,
+                             modes[0]->constraints,
+                             modes[0]->condensed_stiffness);
+    if (!motion.empty())
+      throw InputError(parameters.parameter_file,
+                       "Boundary <id>/Constrained components",
+                       "the supports leave the body free to move: " + motion +
+                         " meets no constrained component; constrain enough "
+                         "components to prevent every rigid-body motion");
+  }
+
+
+  template <int dim>
+  void
   Analysis<dim>::factorise_stiffness()
   {
+    check_supports_and_load();
     for (unsigned int m = 0; m < kinematics.n_modes(); ++m)
       {
         ModeState &mode = *modes[m];
@@ -291,6 +326,32 @@ namespace thinlayer
                  ? " of harmonic " + std::to_string(kinematics.harmonic(m))
                  : std::string()) +
               " is singular: ";
+            // With the supports holding every rigid motion (plane strain
+            // checks them), soft interface elements are what is left.
+            if (!kinematics.is_fourier() &&
+                !parameters.interface_curves.empty())
+              {
+                const auto softest = std::min_element(
+                  parameters.interface_curves.begin(),
+                  parameters.interface_curves.end(),
+                  [](const auto &a, const auto &b) {
+                    return std::min(a.second.shear_stiffness,
+                                    a.second.normal_stiffness) <
+                           std::min(b.second.shear_stiffness,
+                                    b.second.normal_stiffness);
+                  });
+                const auto &curve = softest->second;
+                throw InputError(
+                  parameters.parameter_file,
+                  InterfaceCurveParameters::section(softest->first) +
+                    (curve.shear_stiffness <= curve.normal_stiffness
+                       ? "/Shear stiffness"
+                       : "/Normal stiffness"),
+                  matrix + "the supports hold every rigid-body motion, but the "
+                           "interface elements are too soft against the cells "
+                           "beside them for round-off; expected a stiffness of "
+                           "at least about 1e-8 E/h (E and h of the cells)");
+              }
             // Q9 with 2x2 points has zero-energy modes of its own, which
             // few cells do not suppress: name the element, not the supports.
             if (!parameters.discretisation.serendipity &&
@@ -344,17 +405,30 @@ namespace thinlayer
           result.non_finite = true;
           result.converged  = false;
         }
+    // Overflow anywhere is no state: stresses whose invariants overflow
+    // make the yield tests meaningless (NaN compares false, and a point
+    // would count as elastic), so the step fails, never converges.
+    bool finite            = interface_elements.all_finite();
     result.max_yield_ratio = std::numeric_limits<double>::quiet_NaN();
     for (unsigned int p = 0; p < history.size(); ++p)
       {
         const MaterialLaw &law = *cell_law[p / quadrature.size()];
-        if (law.can_yield())
-          for (const PointState &state : history[p]->stations)
+        for (const PointState &state : history[p]->stations)
+          {
+            for (unsigned int k = 0;
+                 k < SymmetricTensor<2, 3>::n_independent_components;
+                 ++k)
+              finite =
+                finite && std::isfinite(state.stress.access_raw_entry(k));
+            if (!law.can_yield())
+              continue;
+            const double ratio = law.yield_ratio(state.stress);
+            finite             = finite && std::isfinite(ratio);
             result.max_yield_ratio =
               std::isnan(result.max_yield_ratio)
-                ? law.yield_ratio(state.stress)
-                : std::max(result.max_yield_ratio,
-                           law.yield_ratio(state.stress));
+                ? ratio
+                : std::max(result.max_yield_ratio, ratio);
+          }
       }
     const double interface_ratio = interface_elements.max_yield_ratio();
     if (!std::isnan(interface_ratio))
@@ -364,6 +438,13 @@ namespace thinlayer
           : std::max(result.max_yield_ratio, interface_ratio);
     point_loop.compute_internal_forces(modes);
     interface_elements.add_internal_forces(modes);
+    for (const auto &mode : modes)
+      finite = finite && std::isfinite(mode->internal_forces.linfty_norm());
+    if (!finite)
+      {
+        result.non_finite = true;
+        result.converged  = false;
+      }
     return result;
   }
 

@@ -1,3 +1,5 @@
+#include <deal.II/base/timer.h>
+
 #include <thinlayer/input_error.h>
 #include <thinlayer/interruption.h>
 #include <thinlayer/results_directory.h>
@@ -157,9 +159,15 @@ namespace thinlayer
           print_run(s, out);
           return true;
         }
-      catch (const Interrupted &)
+      catch (const Interrupted &e)
         {
-          throw; // while meshing: the sweep stops, nothing of it is kept
+          // While meshing: this run has nothing, the runs before it stay.
+          std::error_code error;
+          std::filesystem::remove_all(directory, error);
+          csv << ',' << RunSummary::csv_error_row() << ','
+              << text_format::csv_field(e.what()) << '\n';
+          out << e.what() << std::endl;
+          return true;
         }
       catch (const WriteError &e)
         {
@@ -193,11 +201,23 @@ namespace thinlayer
       return base.output.directory + name;
     };
 
-    // Check every run's parameters before anything is written.
+    // Check every run's parameters before anything is written (a few
+    // milliseconds each): with progress, and stopped by a signal.
     std::vector<std::vector<std::string>> run_overrides;
+    Timer                                 since_progress;
     for (unsigned int r = 0; r < combinations.size(); ++r)
-      run_overrides.push_back(checked_overrides(
-        file, overrides, base, combinations[r], directory_of(r)));
+      {
+        if (interrupted())
+          throw Interrupted("while checking the sweep's runs");
+        if (since_progress.wall_time() > 2)
+          {
+            out << "  checking the sweep's runs: " << r << '/'
+                << combinations.size() << std::endl;
+            since_progress.restart();
+          }
+        run_overrides.push_back(checked_overrides(
+          file, overrides, base, combinations[r], directory_of(r)));
+      }
 
     // The whole sweep is one run of its directory: written aside, put in
     // place at the end.

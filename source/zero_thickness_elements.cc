@@ -463,6 +463,26 @@ namespace thinlayer
 
 
   bool
+  ZeroThicknessElements::all_finite() const
+  {
+    const unsigned int n_stations = kinematics ? kinematics->n_stations() : 1;
+    for (unsigned int p = 0; p < points.size(); ++p)
+      {
+        const InterfaceLaw &law = *elements[points[p].element].law;
+        for (unsigned int s = 0; s < n_stations; ++s)
+          {
+            const Tensor<1, 3> &t = states[p * n_stations + s].traction;
+            if (!std::isfinite(t[0]) || !std::isfinite(t[1]) ||
+                !std::isfinite(t[2]) ||
+                (law.can_yield() && !std::isfinite(law.yield_ratio(t))))
+              return false;
+          }
+      }
+    return true;
+  }
+
+
+  bool
   ZeroThicknessElements::all_associated() const
   {
     for (const auto &[id, law] : laws)

@@ -296,6 +296,14 @@ namespace thinlayer
     void
     assemble_stiffness();
 
+    /**
+     * An InputError if nothing loads the body, or if (in plane strain) its
+     * supports leave a rigid-body motion free: a free rotation does not
+     * make the factorisation fail, only its solutions meaningless.
+     */
+    void
+    check_supports_and_load() const;
+
     /// Right-hand sides at unit load factor, factorisations, and the time
     /// one substitution takes.
     void

@@ -407,6 +407,10 @@ namespace thinlayer
    */
   struct SweepParameters
   {
+    /// The most runs a sweep may have: checking each takes milliseconds
+    /// and running each seconds, so more is a mistyped list.
+    static constexpr std::size_t max_runs = 10000;
+
     std::vector<std::pair<std::string, std::vector<std::string>>> values;
 
     static void

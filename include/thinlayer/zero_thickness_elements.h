@@ -134,6 +134,11 @@ namespace thinlayer
     double
     max_yield_ratio() const;
 
+    /// Whether every traction, and every yield ratio of a law that can
+    /// yield, is a finite number.
+    bool
+    all_finite() const;
+
     bool
     all_associated() const;
 

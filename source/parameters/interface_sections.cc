@@ -20,7 +20,7 @@ namespace thinlayer
     prm.declare_entry(
       "Material ids",
       "",
-      Patterns::List(Patterns::Integer(0, 255)),
+      Patterns::List(Patterns::Integer(0, 2147483647)),
       "Thin layers (material ids of layers one cell thick) whose profile "
       "is written at every step: slip, opening, shear and normal traction "
       "and plasticity against arc length, as interface-<id>-NNNN.csv and as "
@@ -160,6 +160,14 @@ namespace thinlayer
                        "friction and dilation angles only with the "
                        "mohr-coulomb criterion; expected 0 for " +
                          criterion_text);
+    if (criterion == Criterion::elastic &&
+        (adhesion != 0 || !prm.get("Tensile strength").empty()))
+      throw InputError(file,
+                       section +
+                         (adhesion != 0 ? "/Adhesion" : "/Tensile strength"),
+                       "an elastic interface curve never slips or opens "
+                       "plastically and has no strength; expected it "
+                       "unset, or Slip criterion = tresca or mohr-coulomb");
     if (criterion == Criterion::mohr_coulomb &&
         !(adhesion > 0 || friction_angle > 0))
       throw InputError(file,

@@ -6,9 +6,9 @@
 #include <thinlayer/parameters.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
-#include <regex>
 
 // The sections that describe a run of the model: loading, solver,
 // monitors, reference, sweep and output.
@@ -20,55 +20,69 @@ namespace thinlayer
     /// More load steps than anyone means (and than memory holds at 1e9).
     constexpr unsigned long max_load_steps = 100000;
 
+    /// @p text as a number, all of it; false if it is not one.
+    bool
+    to_number(const std::string &text, double &value)
+    {
+      try
+        {
+          std::size_t used = 0;
+          value            = std::stod(text, &used);
+          return used == text.size() && !text.empty();
+        }
+      catch (const std::exception &)
+        {
+          return false;
+        }
+    }
+
+
     std::vector<double>
     parse_increments(const std::string &text, const std::string &file)
     {
       const std::string   entry = "Loading/Load increments";
       std::vector<double> result;
-      const std::regex    repeated(
-        "\\s*([0-9.eE+]+)\\s*\\*\\s*([-+0-9.eE]+)\\s*|\\s*([-+0-9.eE]+)\\s*");
       for (const auto &item : Utilities::split_string_list(text, ','))
         {
-          std::smatch match;
-          if (!std::regex_match(item, match, repeated))
+          const auto        star      = item.find('*');
+          const std::string count     = star == std::string::npos
+                                          ? "1"
+                                          : Utilities::trim(item.substr(0, star));
+          double            increment = 0;
+          if (!to_number(Utilities::trim(item.substr(
+                           star == std::string::npos ? 0 : star + 1)),
+                         increment) ||
+              count.empty() ||
+              count.find_first_not_of("0123456789") != std::string::npos ||
+              count.size() > 9 || std::stoul(count) > max_load_steps)
             throw InputError(file,
                              entry,
-                             "expected a number or 'n*number', got '" + item +
-                               "'");
-          try
-            {
-              if (match[1].matched)
-                {
-                  if (match[1].str().find_first_not_of("0123456789") !=
-                      std::string::npos)
-                    throw std::invalid_argument("repeat count");
-                  const unsigned long n = std::stoul(match[1]);
-                  if (n > max_load_steps)
-                    throw std::out_of_range("repeat count");
-                  result.insert(result.end(), n, std::stod(match[2]));
-                }
-              else
-                result.push_back(std::stod(match[3]));
-            }
-          catch (const std::exception &)
-            {
-              throw InputError(file,
-                               entry,
-                               "expected a number or 'n*number' (n a whole "
-                               "number of steps, at most " +
-                                 std::to_string(max_load_steps) + "), got '" +
-                                 item + "'");
-            }
-          if (result.size() > max_load_steps)
+                             "expected a number or 'n*number' (n a whole "
+                             "number of steps, at most " +
+                               std::to_string(max_load_steps) + "), got '" +
+                               item + "'");
+          const unsigned long n = std::stoul(count);
+          if (n == 0)
+            throw InputError(file,
+                             entry,
+                             "expected a repeat count of at least 1, got '" +
+                               item + "' (no steps)");
+          if (!std::isfinite(increment))
+            throw InputError(file,
+                             entry,
+                             "expected finite numbers, got '" + item + "'");
+          if (increment == 0)
+            throw InputError(file,
+                             entry,
+                             "expected non-zero increments, got '" + item +
+                               "': a step of 0 applies nothing");
+          if (result.size() + n > max_load_steps)
             throw InputError(file,
                              entry,
                              "expected at most " +
                                std::to_string(max_load_steps) +
                                " load steps, got more");
-          if (!std::isfinite(result.back()))
-            throw InputError(file,
-                             entry,
-                             "expected finite numbers, got '" + item + "'");
+          result.insert(result.end(), n, increment);
         }
       if (result.empty())
         throw InputError(file, entry, "expected at least one increment");
@@ -76,22 +90,59 @@ namespace thinlayer
     }
 
 
+    /// "Section/Entry" with each part trimmed, or "" if @p key is not one.
+    std::string
+    entry_path(const std::string &key)
+    {
+      std::string path;
+      const auto  parts = Utilities::split_string_list(key, '/');
+      if (parts.size() < 2)
+        return "";
+      for (const auto &part : parts)
+        {
+          if (part.empty() || part.find('=') != std::string::npos)
+            return "";
+          path += (path.empty() ? "" : "/") + part;
+        }
+      return path;
+    }
+
+
     std::vector<std::pair<std::string, std::vector<std::string>>>
     parse_sweep(const std::string &text, const std::string &file)
     {
       std::vector<std::pair<std::string, std::vector<std::string>>> sweep;
-      const std::regex name("[A-Za-z_][A-Za-z0-9_]*|[^/=]+(/[^/=]+)+");
       for (const auto &item : Utilities::split_string_list(text, ';'))
         {
-          const auto        equal = item.find('=');
-          const std::string key =
+          const auto  equal = item.find('=');
+          std::string key =
             Utilities::trim(item.substr(0, std::min(equal, item.size())));
-          if (equal == std::string::npos || !std::regex_match(key, name))
+          if (key.find('/') != std::string::npos)
+            key = entry_path(key);
+          if (equal == std::string::npos || key.empty() ||
+              (key.find('/') == std::string::npos && !is_identifier(key)))
             throw InputError(file,
                              "Sweep/Values",
                              "expected 'name = v1, v2, ...' (a geometry "
                              "parameter or Section/Entry), got '" +
                                item + "'");
+          if (key == "Output/Directory" || key == "Sweep/Values")
+            throw InputError(file,
+                             "Sweep/Values",
+                             "'" + key + "' cannot be swept: " +
+                               (key == "Sweep/Values"
+                                  ? std::string("a sweep does not sweep "
+                                                "itself")
+                                  : std::string("every run of a sweep "
+                                                "writes into run-NNN of the "
+                                                "sweep's directory")));
+          for (const auto &[earlier, v] : sweep)
+            if (earlier == key)
+              throw InputError(file,
+                               "Sweep/Values",
+                               "'" + key +
+                                 "' is named twice; expected each name "
+                                 "once, with all its values");
           // Values are comma-separated; braces group a value that is a
           // list itself ("Kinematics/Harmonics = {1}, {1, 3}").
           std::vector<std::string> values;
@@ -123,14 +174,8 @@ namespace thinlayer
           if (key.find('/') == std::string::npos)
             for (const auto &v : values)
               {
-                std::size_t used = 0;
-                try
-                  {
-                    std::stod(v, &used);
-                  }
-                catch (const std::exception &)
-                  {}
-                if (used == 0 || used != v.size())
+                double number = 0;
+                if (!to_number(v, number) || !std::isfinite(number))
                   throw InputError(file,
                                    "Sweep/Values",
                                    "expected numbers for the geometry "
@@ -139,6 +184,15 @@ namespace thinlayer
               }
           sweep.emplace_back(key, values);
         }
+      std::size_t runs = 1;
+      for (const auto &[name, values] : sweep)
+        if ((runs *= values.size()) > SweepParameters::max_runs)
+          throw InputError(file,
+                           "Sweep/Values",
+                           "the combinations make more than " +
+                             std::to_string(SweepParameters::max_runs) +
+                             " runs; expected at most that many (split "
+                             "the sweep)");
       return sweep;
     }
   } // namespace
@@ -490,11 +544,19 @@ namespace thinlayer
     for (const auto &x :
          Utilities::split_string_list(prm.get("Displacement point")))
       displacement_point.push_back(std::stod(x));
-    load_scale               = prm.get_double("Load scale");
+    load_scale         = prm.get_double("Load scale");
+    displacement_scale = prm.get_double("Displacement scale");
+    for (const auto &[name, value] :
+         {std::pair<const char *, double>{"Load scale", load_scale},
+          {"Displacement scale", displacement_scale}})
+      if (value == 0)
+        throw InputError(file,
+                         std::string("Monitors/") + name,
+                         "expected a non-zero factor: 0 reports every "
+                         "state as 0");
     load_boundary_id         = prm.get_integer("Load boundary id");
     displacement_boundary_id = prm.get_integer("Displacement boundary id");
     displacement_component = (prm.get("Displacement component") == "x") ? 0 : 1;
-    displacement_scale     = prm.get_double("Displacement scale");
     prm.leave_subsection();
   }
 
@@ -530,11 +592,27 @@ namespace thinlayer
                           mesh.geometry_parameters,
                           file,
                           "Reference/Analytic load");
+        // A closed form of the geometry only: x and y are no variables of
+        // it (they would silently be 0).
         FunctionParser<2> f(1);
         auto              constants = mesh.geometry_parameters;
         constants["pi"]             = numbers::PI;
-        f.initialize("x,y", reference, constants);
-        analytic_load = f.value(Point<2>());
+        const SilencedErrorStream silence;
+        try
+          {
+            f.initialize("unused_reference_x,unused_reference_y",
+                         reference,
+                         constants);
+            analytic_load = f.value(Point<2>());
+          }
+        catch (const ExceptionBase &e)
+          {
+            throw InputError(file,
+                             "Reference/Analytic load",
+                             "expected an expression of the geometry "
+                             "parameters and pi only (no x or y): " +
+                               message_of(e));
+          }
         if (!std::isfinite(analytic_load) || analytic_load == 0)
           throw InputError(file,
                            "Reference/Analytic load",
@@ -559,8 +637,8 @@ namespace thinlayer
       "('alpha = 10, 20, 30'). Braces group a value that is a list "
       "('Kinematics/Harmonics = {1}, {1, 3}'). Each run writes into run-NNN "
       "of the output "
-      "directory, and sweep.csv there gets one row per run. Empty: one "
-      "run.");
+      "directory, and sweep.csv there gets one row per run; at most " +
+        std::to_string(max_runs) + " runs. Empty: one run.");
     prm.leave_subsection();
   }
 
