@@ -38,7 +38,8 @@ def main(directory):
         with open(os.path.join(directory, "run-%03d" % int(r["run"]), "history.csv"),
                   newline="") as f:
             steps = results.states(list(csv.DictReader(f)))
-        ratios_of_steps = [float(s["max_yield_ratio"]) for s in steps if s["max_yield_ratio"]]
+        ratios_of_steps = [results.number(s["max_yield_ratio"]) for s in steps
+                           if math.isfinite(results.number(s["max_yield_ratio"]))]
         detected[i][j] = results.collapse_detected(r)
         # An error only where there is a collapse load.
         error[i][j] = (100 * results.collapse_error(r)
@@ -73,8 +74,10 @@ def main(directory):
         ax.set_title(title + ("\n(x: collapse not detected)" if not log else ""), fontsize=9)
     fig.tight_layout()
     fig.savefig(os.path.join(directory, "stability.png"), dpi=120)
+    results.record(os.path.join(directory, "stability.png"))
     with open(os.path.join(directory, "stability.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
+    results.record(os.path.join(directory, "stability.md"))
     print("\n".join(lines))
 
 

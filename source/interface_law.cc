@@ -12,7 +12,8 @@ namespace thinlayer
     double
     shear_magnitude(const Tensor<1, 3> &t)
     {
-      return std::sqrt(t[0] * t[0] + t[2] * t[2]);
+      // hypot: the squares of a traction of 1e155 overflow.
+      return std::hypot(t[0], t[2]);
     }
   } // namespace
 
@@ -124,7 +125,11 @@ namespace thinlayer
     const double tau_trial = shear_magnitude(trial);
     const double f_slip    = tau_trial + trial[1] * tan_phi - adhesion;
     const double f_tension = trial[1] - tensile_strength;
-    if (f_slip <= 0 && f_tension <= 0)
+    // A trial that is not a finite number stays as it is: its yield ratio
+    // is not finite either, and the analysis fails the step on it.
+    if (!std::isfinite(trial[0]) || !std::isfinite(trial[1]) ||
+        !std::isfinite(trial[2]) || !std::isfinite(f_slip) ||
+        (f_slip <= 0 && f_tension <= 0))
       return r;
 
     // The unit shear direction of the trial (none at tau = 0).
@@ -140,8 +145,12 @@ namespace thinlayer
       {
         const double H       = k_s + k_n * tan_phi * tan_psi;
         const double dlambda = f_slip / H;
-        const double tau     = tau_trial - k_s * dlambda;
-        const double sigma   = trial[1] - k_n * tan_psi * dlambda;
+        // tau_trial - k_s dlambda, rearranged: the difference of two
+        // large numbers loses c at a trial of 1e16 c (and gives 0).
+        const double tau = (tau_trial * k_n * tan_phi * tan_psi +
+                            k_s * (adhesion - trial[1] * tan_phi)) /
+                           H;
+        const double sigma = trial[1] - k_n * tan_psi * dlambda;
         if (tau >= 0 && sigma <= tensile_strength)
           {
             r.region      = InterfaceReturn::slip;

@@ -174,10 +174,15 @@ namespace thinlayer
       return_mapping(const SymmetricTensor<2, 3> &trial,
                      const bool                   with_tangent) const override
       {
-        if (yield_function(trial) <= 0)
-          return {trial, stiffness, ReturnRegion::elastic};
+        // A trial that is not a finite number, or whose deviator's norm
+        // overflows (which would return it to s = 0, a state on no
+        // surface), stays as it is: its yield ratio is not finite, and the
+        // analysis fails the step on it.
+        const double                f    = yield_function(trial);
         const SymmetricTensor<2, 3> s    = deviator(trial);
         const double                norm = s.norm();
+        if (!std::isfinite(f) || !std::isfinite(norm) || f <= 0)
+          return {trial, stiffness, ReturnRegion::elastic};
         const SymmetricTensor<2, 3> n    = s / norm;
         const double                beta = std::sqrt(2.) * cohesion / norm;
         const double K = youngs_modulus / (3 * (1 - 2 * poissons_ratio));
@@ -433,13 +438,25 @@ namespace thinlayer
       return_mapping(const SymmetricTensor<2, 3> &trial,
                      const bool                   with_tangent) const override
       {
-        if (yield_function(trial) <= 0)
+        // A trial that is not a finite number (or whose invariants
+        // overflow) stays as it is: its yield ratio is not finite, and the
+        // analysis fails the step on it rather than the eigensolver here.
+        const double f = yield_function(trial);
+        if (!std::isfinite(f) || f <= 0)
           return {trial, stiffness, ReturnRegion::elastic};
 
-        const auto            eig = eigenvectors(trial);
+        // The eigenproblem scaled to order one where its iterations would
+        // overflow (stresses near the largest double); elsewhere as it is.
+        double magnitude = 0;
+        for (unsigned int k = 0;
+             k < SymmetricTensor<2, 3>::n_independent_components;
+             ++k)
+          magnitude = std::max(magnitude, std::abs(trial.access_raw_entry(k)));
+        magnitude                 = magnitude > 1e100 ? magnitude : 1.;
+        auto                  eig = eigenvectors(trial / magnitude);
         std::array<double, 3> st;
         for (unsigned int i = 0; i < 3; ++i)
-          st[i] = eig[i].first;
+          st[i] = eig[i].first * magnitude;
         const double K = youngs_modulus / (3 * (1 - 2 * poissons_ratio));
         const double G = youngs_modulus / (2 * (1 + poissons_ratio));
         // Principal elasticity.

@@ -230,8 +230,14 @@ namespace thinlayer
           result.against_load         = a.against_load;
           result.non_finite           = a.result.non_finite;
           result.failed_load_factor   = a.load_factor;
-          result.stiffness_ratio      = a.stiffness_ratio;
-          result.growth_ratio         = a.result.growth_ratio;
+          result.bracket_resolved =
+            stepping.automatic() &&
+            std::abs(a.load_factor - result.last_converged_load_factor) <=
+              (1 + 1e-9) * p.loading.collapse_resolution *
+                std::max(std::abs(a.load_factor),
+                         std::abs(p.loading.load_increments.front()));
+          result.stiffness_ratio = a.stiffness_ratio;
+          result.growth_ratio    = a.result.growth_ratio;
           if (stepping.automatic() && !a.result.non_finite && !a.against_load &&
               analysis.has_external_load() &&
               !shows_mechanism(a.stiffness_ratio, a.result.growth_ratio))
@@ -387,11 +393,18 @@ namespace thinlayer
             << ", min " << printf("%.5e", u.min) << ", max "
             << printf("%.5e", u.max) << ", spread (max-min)/|mean| "
             << printf("%.3e", (u.max - u.min) / std::abs(u.mean)) << '\n';
-      out << "  last converged load "
-          << printf("%.5g", run.last_converged_load);
+      if (run.any_step_converged)
+        out << "  last converged load "
+            << printf("%.5g", run.last_converged_load);
+      else
+        out << "  no load step converged";
       if (std::isfinite(p.reference.analytic_load))
-        out << ", analytic " << printf("%.5g", p.reference.analytic_load)
-            << ", relative error " << printf("%+.3e", summary.relative_error);
+        {
+          out << ", analytic " << printf("%.5g", p.reference.analytic_load);
+          if (std::isfinite(summary.relative_error))
+            out << ", relative error "
+                << printf("%+.3e", summary.relative_error);
+        }
       out << "\n  outcome: " << summary.outcome << " (" << summary.reason
           << ")\n";
       if (summary.steps_with_drift > 0)
@@ -478,9 +491,17 @@ namespace thinlayer
       summary.last_converged_load = run.last_converged_load;
       summary.first_failed_load   = run.first_failed_load;
       summary.reference_load      = p.reference.analytic_load;
+      // A collapse load (or a plateau) is compared with the closed form,
+      // and so is the final state of a run whose every step converged
+      // (an elastic reference); the last converged load of a run that
+      // failed or was stopped is no estimate of either.
+      const double compared = std::isfinite(summary.collapse_load)
+                                ? summary.collapse_load
+                              : summary.outcome == "completed"
+                                ? run.last_converged_load
+                                : std::numeric_limits<double>::quiet_NaN();
       summary.relative_error =
-        (run.last_converged_load - summary.reference_load) /
-        summary.reference_load;
+        (compared - summary.reference_load) / summary.reference_load;
       summary.final_displacement     = run.displacement.mean;
       summary.final_displacement_min = run.displacement.min;
       summary.final_displacement_max = run.displacement.max;

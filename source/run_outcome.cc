@@ -86,8 +86,10 @@ namespace thinlayer
       }
     s.outcome = "not converged";
     if (run.non_finite)
-      s.reason =
-        "values that are not finite numbers" + at(run.failed_load_factor);
+      s.reason = "values that are not finite numbers" +
+                 at(run.failed_load_factor) +
+                 " (an overflow: displacements, stresses, tractions or "
+                 "their invariants beyond the range of double precision)";
     else if (run.against_load)
       s.reason = "the step" + at(run.failed_load_factor) +
                  " converged to a state moving against its load (secant "
@@ -99,6 +101,11 @@ namespace thinlayer
       s.reason = "the step failed" + at(run.failed_load_factor) +
                  " under prescribed displacement, where a failed step is "
                  "no collapse";
+    else if (!run.any_step_converged && !run.bracket_resolved)
+      s.reason = "the first step failed" + at(run.failed_load_factor) +
+                 " and no state converged: a collapse load, if this is "
+                 "one, lies somewhere below it; expected smaller first "
+                 "steps (Loading/Load increments) or automatic stepping";
     else if (shows_mechanism(run.stiffness_ratio, run.growth_ratio))
       {
         s.outcome         = "collapse";

@@ -64,14 +64,18 @@ namespace thinlayer
       };
       Content     content;
       std::string text;
+      /// Whether a field has been written: the separator goes before
+      /// every field but the first, empty ones included.
+      bool any = false;
 
       void
       field(const std::string &name, const std::string &value)
       {
-        text += (text.empty() ? "" : ",") +
+        text += (any ? "," : "") +
                 (content == Content::names    ? text_format::csv_field(name)
                  : content == Content::values ? value
                                               : std::string());
+        any = true;
       }
 
       void
@@ -90,7 +94,10 @@ namespace thinlayer
       operator()(const std::string &name, const bool value)
       {
         if (content == Content::error)
-          text += (text.empty() ? "0" : ",0");
+          {
+            text += any ? ",0" : "0";
+            any = true;
+          }
         else
           field(name, value ? "1" : "0");
       }

@@ -19,7 +19,13 @@ namespace thinlayer
     std::string
     csv_number(const double value)
     {
-      return std::isfinite(value) ? printf("%.10g", value) : "";
+      // Never an empty field: a reader must tell "not a number" from a
+      // value left out.
+      if (std::isnan(value))
+        return "nan";
+      if (std::isinf(value))
+        return value > 0 ? "inf" : "-inf";
+      return printf("%.10g", value);
     }
 
 

@@ -71,6 +71,9 @@ namespace thinlayer
 
     /// How a run that a failed step ended, ended.
     bool stopped = false;
+    /// Automatic stepping narrowed the failed step to its resolution: the
+    /// bracket of a collapse load (also of one at 0).
+    bool bracket_resolved = false;
     /// The step that ended it converged, on the mechanism.
     bool stopped_on_mechanism = false;
     /// The step that ended it converged to a state moving against its load

@@ -16,8 +16,8 @@ namespace thinlayer
     std::string
     printf(const char *pattern, const double value);
 
-    /// Ten significant digits (%.10g); empty where not finite, so that
-    /// scripts read a missing value rather than a number.
+    /// Ten significant digits (%.10g); nan, inf or -inf where not finite
+    /// (also for a figure a run does not have), never an empty field.
     std::string
     csv_number(const double value);
 
