@@ -79,8 +79,10 @@ def table1(directory):
         lines.append("")
     with open(os.path.join(directory, "table1.md"), "w") as f:
         f.write("\n".join(lines))
+    results.record(os.path.join(directory, "table1.md"))
     with open(os.path.join(directory, "table1.csv"), "w", newline="") as f:
         csv.writer(f).writerows(flat)
+    results.record(os.path.join(directory, "table1.csv"))
     print("\n".join(lines))
 
     fig, axes = plt.subplots(1, len(tolerances), figsize=(5 * len(tolerances), 4), sharey=True)
@@ -110,6 +112,7 @@ def table1(directory):
     axes[0].legend()
     fig.tight_layout()
     fig.savefig(os.path.join(directory, "table1.png"), dpi=120)
+    results.record(os.path.join(directory, "table1.png"))
 
 
 def figure3(directory):
@@ -139,6 +142,7 @@ def figure3(directory):
     figures.failure_legend(axes[0][0], fontsize=7)
     fig.tight_layout()
     fig.savefig(os.path.join(directory, "figure3.png"), dpi=120)
+    results.record(os.path.join(directory, "figure3.png"))
     print("wrote", os.path.join(directory, "figure3.png"))
 
 
@@ -160,6 +164,7 @@ def frictional(directory):
     fig.tight_layout()
     name = os.path.basename(os.path.normpath(directory)) + ".png"
     fig.savefig(os.path.join(directory, name), dpi=120)
+    results.record(os.path.join(directory, name))
     print("wrote", os.path.join(directory, name))
 
 

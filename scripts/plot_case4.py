@@ -58,8 +58,10 @@ def main(smooth, rough):
     ax.legend()
     fig.tight_layout()
     fig.savefig(os.path.join(rough, "figure12.png"), dpi=120)
+    results.record(os.path.join(rough, "figure12.png"))
     with open(os.path.join(rough, "table2.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
+    results.record(os.path.join(rough, "table2.md"))
     print("\n".join(lines))
 
 

@@ -147,6 +147,7 @@ def plot(directory, series, steps, angle, count):
     figure.tight_layout()
     output = os.path.join(directory, series + ".png")
     figure.savefig(output, dpi=110)
+    results.record(output)
     plt.close(figure)
     print("wrote", output)
 

@@ -53,6 +53,7 @@ def main(directory, reference_label="analytic", load_label="load (the scene's Lo
     ax_it.grid(alpha=0.3)
     fig.tight_layout()
     fig.savefig(os.path.join(directory, "load_displacement.png"), dpi=120)
+    results.record(os.path.join(directory, "load_displacement.png"))
     plt.close(fig)
 
     fig, axes = plt.subplots(2, 1, figsize=(8, 9))
@@ -63,6 +64,7 @@ def main(directory, reference_label="analytic", load_label="load (the scene's Lo
         ax.set_title("%s, largest %.3g %s" % (what, largest, length_unit), fontsize=9)
     fig.tight_layout()
     fig.savefig(os.path.join(directory, "displacement_vectors.png"), dpi=120)
+    results.record(os.path.join(directory, "displacement_vectors.png"))
     print("wrote load_displacement.png and displacement_vectors.png in", directory)
 
 

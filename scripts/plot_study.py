@@ -85,8 +85,10 @@ def main(directory, x_name):
         ax_err.legend(fontsize=7)
     fig.tight_layout()
     fig.savefig(os.path.join(directory, "study.png"), dpi=120)
+    results.record(os.path.join(directory, "study.png"))
     with open(os.path.join(directory, "study.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
+    results.record(os.path.join(directory, "study.md"))
     print("\n".join(lines))
 
 

@@ -13,6 +13,33 @@ import math
 import os
 
 
+MANIFEST = "manifest.txt"
+
+
+def record(path):
+    """Enter PATH, a file a thinlayer script wrote into a run's or sweep's
+    directory (a chart, a table), in that directory's manifest.txt, as
+    thinlayer does its own files: a later run replaces a directory only
+    while everything in it is listed there, unchanged, and refuses one
+    with anything else. Where the directory has no manifest (it is no run
+    of thinlayer's), nothing is recorded."""
+    directory = os.path.dirname(os.path.abspath(path))
+    manifest = os.path.join(directory, MANIFEST)
+    if not os.path.isfile(manifest):
+        return
+    digest = 14695981039346656037
+    with open(path, "rb") as f:
+        for byte in f.read():
+            digest = ((digest ^ byte) * 1099511628211) & 0xFFFFFFFFFFFFFFFF
+    name = os.path.basename(path)
+    with open(manifest) as f:
+        lines = [line for line in f
+                 if line.startswith("#") or line.rstrip("\n").split(" ", 2)[2:] != [name]]
+    lines.append("%016x %d %s\n" % (digest, os.path.getsize(path), name))
+    with open(manifest, "w") as f:
+        f.writelines(lines)
+
+
 def read_csv(path):
     with open(path, newline="") as f:
         return list(csv.DictReader(f))

@@ -15,6 +15,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <sstream>
@@ -51,6 +52,20 @@ namespace
         files[entry.path().lexically_relative(directory).string()] =
           entry.is_regular_file() ? read(entry.path()) : "";
     return files;
+  }
+
+  /// @p message with this directory's absolute path and this process's id
+  /// in it made the same on every machine and run.
+  std::string
+  portable(std::string message)
+  {
+    for (const auto &[from, to] :
+         {std::pair<std::string, std::string>{fs::current_path().string(), "."},
+          {"new-" + std::to_string(getpid()), "new-PID"}})
+      for (auto at = message.find(from); at != std::string::npos;
+           at      = message.find(from, at + to.size()))
+        message.replace(at, from.size(), to);
+    return message;
   }
 
   /// The valid run's results, which the checks start from.
@@ -135,8 +150,8 @@ Physical Curve("bottom", 1) = {1}; Physical Curve("top", 2) = {3};
               << r.error << '\n';
   }
 
-  /// Send @p signal to this process once the run has written @p rows rows
-  /// of history.csv into its staging directory.
+  /// Send @p signal to this process (none if 0: only wait) once the run
+  /// has written @p rows rows of history.csv into its staging directory.
   void
   signal_after_rows(const int signal, const unsigned int rows)
   {
@@ -151,7 +166,8 @@ Physical Curve("bottom", 1) = {1}; Physical Curve("top", 2) = {3};
                 ++n;
               if (n > rows)
                 {
-                  kill(getpid(), signal);
+                  if (signal != 0)
+                    kill(getpid(), signal);
                   return;
                 }
             }
@@ -224,6 +240,73 @@ namespace
     report("Output/Directory lies under a file",
            run({"good.prm", "-s", "Output/Directory=a-file/results"}),
            read("a-file") == "not a directory\n");
+  }
+
+
+  /// Directories that hold an earlier run and something else: refused
+  /// with the names of what is foreign, nothing of either lost.
+  void
+  check_foreign_files()
+  {
+    const auto try_with = [](const std::string           &what,
+                             const std::function<void()> &change) {
+      restore("results");
+      change();
+      const auto   before = contents("results");
+      const Result r      = run({"good.prm"});
+      report(what, r, contents("results") == before);
+    };
+    try_with("a run's directory with a thesis added to it",
+             []() { write("results/thesis.tex", "\\chapter{}\n"); });
+    try_with("a run's directory with a folder of raw data added", []() {
+      fs::create_directories("results/raw");
+      write("results/raw/data.csv", "1,2\n");
+    });
+    try_with("a run's directory with an empty folder added",
+             []() { fs::create_directories("results/figures"); });
+    try_with("a run's directory whose history.csv has notes appended", []() {
+      std::ofstream("results/history.csv", std::ios::app) << "# checked\n";
+    });
+    try_with("a run's directory without its manifest (an older version's)",
+             []() { fs::remove("results/manifest.txt"); });
+    try_with("a directory with a file named manifest.txt that lists nothing",
+             []() {
+               fs::remove_all("results");
+               fs::create_directories("results");
+               write("results/manifest.txt", "my shopping list\n");
+             });
+  }
+
+
+  /// A file put into the results directory while a run goes on: the run
+  /// is left beside it, the directory as the user left it.
+  void
+  check_file_added_during_run()
+  {
+    restore("results");
+    std::thread  writer([]() {
+      signal_after_rows(0, 2);
+      write("results/notes.txt", "added during the run\n");
+    });
+    const Result r = run({"good.prm",
+                          "-s",
+                          "Loading/Load increments=3000*0.0001",
+                          "-s",
+                          "Output/Write VTU=false"});
+    writer.join();
+    const std::string aside = "results.new-" + std::to_string(getpid());
+    auto              kept  = contents("results");
+    kept.erase("notes.txt");
+    std::cout << "* a file put into Output/Directory during the run\n"
+              << "  exit status " << r.status << ", previous run kept: "
+              << (kept == previous_run ? "yes" : "NO")
+              << ", the user's file kept: "
+              << (read("results/notes.txt") == "added during the run\n" ? "yes"
+                                                                        : "NO")
+              << ", this run beside it: "
+              << (fs::exists(aside + "/summary.json") ? "yes" : "NO") << "\n  "
+              << portable(r.error) << '\n';
+    fs::remove_all(aside);
   }
 
 
@@ -393,6 +476,77 @@ namespace
   }
 
 
+  /// Signals during a sweep: while its runs are checked (10,000 of them,
+  /// a minute's work) the sweep stops at once and writes nothing; while
+  /// gmsh meshes its second run, the first run and its row are kept and
+  /// the second's row says it was interrupted.
+  void
+  check_sweep_interrupted()
+  {
+    {
+      std::string values = "Sweep/Values=height = ";
+      for (unsigned int k = 1; k <= 10000; ++k)
+        values += std::to_string(k) + (k < 10000 ? ", " : "");
+      const auto   before = contents("sweep-results");
+      std::thread  sender([]() {
+        std::this_thread::sleep_for(std::chrono::milliseconds(1000));
+        kill(getpid(), SIGINT);
+      });
+      const Result r = run({"sweep.prm", "-s", values});
+      sender.join();
+      report("SIGINT while a sweep of 10,000 runs is checked",
+             r,
+             contents("sweep-results") == before);
+    }
+    {
+      fs::remove_all("sweep-results");
+      std::string huge = read("sweep.prm");
+      huge.replace(huge.find("block.geo"), 9, "huge.geo");
+      write("huge-sweep.prm", huge);
+      std::thread  sender([]() {
+        for (unsigned int wait = 0; wait < 600000; ++wait)
+          {
+            for (const auto &entry : fs::directory_iterator("."))
+              if (entry.path().filename().string().find(
+                    ".sweep-results.partial-") == 0 &&
+                  fs::exists(entry.path() / "run-001/summary.json"))
+                {
+                  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+                  kill(getpid(), SIGINT);
+                  return;
+                }
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+          }
+      });
+      const Result r = run({"huge-sweep.prm",
+                            "-s",
+                            "Sweep/Values=n = 2, 1e8",
+                            "-s",
+                            "Mesh/Maximum cells=1000000000"});
+      sender.join();
+      std::istringstream csv(read("sweep-results/sweep.csv"));
+      std::string        line, rows;
+      for (unsigned int k = 0; std::getline(csv, line); ++k)
+        if (k > 0)
+          rows += "\n    row " + line.substr(0, line.find(',')) + ": " +
+                  (line.find(",interrupted while gmsh was meshing") !=
+                       std::string::npos
+                     ? "interrupted while gmsh was meshing (its error)"
+                   : line.find(",completed,") != std::string::npos
+                     ? "completed"
+                     : "OTHER: " + line);
+      std::cout << "* SIGINT while gmsh meshes the second run of a sweep\n"
+                << "  exit status " << r.status << ", run-001 kept: "
+                << (fs::exists("sweep-results/run-001/summary.json") ? "yes"
+                                                                     : "NO")
+                << ", run-002 written: "
+                << (fs::exists("sweep-results/run-002") ? "YES" : "no")
+                << ", sweep.csv rows:" << rows
+                << "\n  afterwards: " << gmsh_left() << "\n\n";
+    }
+  }
+
+
   /// Standard output that cannot be written.
   void
   check_standard_output()
@@ -414,11 +568,14 @@ main()
 {
   run_valid_scene();
   check_directories();
+  check_foreign_files();
+  check_file_added_during_run();
   check_failed_write();
   check_signals();
   check_rerun();
   check_stale_staging();
   check_sweep_with_error();
   check_gmsh();
+  check_sweep_interrupted();
   check_standard_output();
 }

@@ -34,13 +34,21 @@ namespace thinlayer
    * Two runs into one directory each write their own staging directory, and
    * the directory holds whichever finished last, whole.
    *
-   * Because commit() replaces the whole directory, a directory that holds
-   * anything but an earlier thinlayer run (or nothing) is refused, and so is
-   * one that contains the parameter file.
+   * Because commit() replaces the whole directory, it writes a manifest
+   * (manifest.txt: every file with its size and a hash of its bytes), and
+   * a directory is replaced only while it holds what its manifest lists,
+   * unchanged, and nothing else (or nothing at all). A directory with any
+   * other entry (a thesis, raw data, notes added to a run, a directory an
+   * older version wrote without a manifest) is refused with their names,
+   * and so is one that contains the parameter file. Files that appear
+   * during the run leave the directory as it is and the run beside it.
    */
   class ResultsDirectory
   {
   public:
+    /// The manifest's name, in every directory a run or sweep writes.
+    static constexpr const char *manifest_name = "manifest.txt";
+
     /**
      * Check @p directory (Output/Directory of @p parameter_file) and create
      * the staging directory: an InputError naming the entry if it cannot be
