@@ -33,6 +33,18 @@ namespace bad_input
     return text.str();
   }
 
+  /// The value of "key" in DIRECTORY/summary.json, as written.
+  inline std::string
+  summary_entry(const std::string &directory, const std::string &key)
+  {
+    const std::string text = read_text(directory + "/summary.json");
+    const auto        at   = text.find("\"" + key + "\": ");
+    if (at == std::string::npos)
+      return "(none)";
+    const auto begin = at + key.size() + 4;
+    return text.substr(begin, text.find_first_of(",\n", begin) - begin);
+  }
+
   inline const std::string good_geo = R"(
 DefineConstant[ height = {1, Name "Parameters/height"} ];
 Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0}; Point(3) = {1, height, 0};

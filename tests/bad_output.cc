@@ -21,10 +21,12 @@
 #include <sstream>
 #include <thread>
 
+#include "bad_input_utilities.h"
 #include <sys/resource.h>
 #include <unistd.h>
 
 namespace fs = std::filesystem;
+using bad_input::summary_entry;
 
 namespace
 {
@@ -81,18 +83,6 @@ namespace
           std::string::npos)
         ++n;
     return n;
-  }
-
-  /// The value of "key" in results/summary.json, as written.
-  std::string
-  summary_entry(const std::string &directory, const std::string &key)
-  {
-    const std::string text = read(directory + "/summary.json");
-    const auto        at   = text.find("\"" + key + "\": ");
-    if (at == std::string::npos)
-      return "(none)";
-    const auto begin = at + key.size() + 4;
-    return text.substr(begin, text.find_first_of(",\n", begin) - begin);
   }
 
   const std::string geo = R"(

@@ -58,18 +58,6 @@ namespace
     return rows;
   }
 
-  /// The value of "key" in summary.json, as written.
-  std::string
-  summary_entry(const std::string &directory, const std::string &key)
-  {
-    const std::string text = read_text(directory + "/summary.json");
-    const auto        at   = text.find("\"" + key + "\": ");
-    if (at == std::string::npos)
-      return "(none)";
-    const auto begin = at + key.size() + 4;
-    return text.substr(begin, text.find_first_of(",\n", begin) - begin);
-  }
-
   /// Run @p arguments and print how the run ended and what its files say.
   void
   overflow(const std::string &what, std::vector<std::string> arguments)
