@@ -7,7 +7,9 @@
 // a relative error against the analytic load exists only where the run
 // has a collapse load or completed every step; and the row of a sweep's
 // run that ended in an error has as many fields as the header, its message
-// under `error`.
+// under `error`. Release only (bad_output_numbers.release.output): deal.II's
+// debug library stops at the first non-finite vector norm, before the
+// program can report it, as in outcome_non_finite.
 #include "bad_input_utilities.h"
 
 using namespace bad_input;
