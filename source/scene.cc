@@ -246,11 +246,18 @@ namespace thinlayer
 
   Scene::Scene(const Parameters &p, std::ostream &progress)
   {
-    if (!std::filesystem::is_regular_file(p.mesh.file) ||
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(p.mesh.file, error) ||
         !std::ifstream(p.mesh.file))
       throw InputError(p.parameter_file,
                        "Mesh/File",
-                       "cannot read the mesh file '" + p.mesh.file + "'");
+                       "cannot read the mesh file '" + p.mesh.file + "'" +
+                         (error ? ": " + error.message()
+                          : std::filesystem::exists(p.mesh.file, error) &&
+                              !std::filesystem::is_regular_file(p.mesh.file,
+                                                                error)
+                            ? std::string(": not a regular file")
+                            : std::string()));
 
     const std::string extension =
       std::filesystem::path(p.mesh.file).extension().string();

@@ -94,6 +94,13 @@ namespace
     std::filesystem::create_symlink("loop.prm", "loop.prm");
     check("a parameter file that is a symbolic link to itself", {"loop.prm"});
 
+    std::filesystem::remove("loop.geo");
+    std::filesystem::create_symlink("loop.geo", "loop.geo");
+    write("mesh-loop.prm", scene("loop.geo"));
+    check("a mesh file that is a symbolic link to itself", {"mesh-loop.prm"});
+    check("/dev/zero as the mesh file",
+          {"good.prm", "-s", "Mesh/File=/dev/zero"});
+
     write("huge.prm", std::string(17u << 20, '#'));
     check("a parameter file of 17 MiB", {"huge.prm"});
     std::filesystem::remove("huge.prm");
