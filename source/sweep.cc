@@ -202,14 +202,16 @@ namespace thinlayer
     };
 
     // Check every run's parameters before anything is written (a few
-    // milliseconds each): with progress, and stopped by a signal.
+    // milliseconds each): stopped by a signal, and with progress every two
+    // seconds where there are many (a small sweep's screen output stays
+    // the same however busy the machine).
     std::vector<std::vector<std::string>> run_overrides;
     Timer                                 since_progress;
     for (unsigned int r = 0; r < combinations.size(); ++r)
       {
         if (interrupted())
           throw Interrupted("while checking the sweep's runs");
-        if (since_progress.wall_time() > 2)
+        if (combinations.size() >= 100 && since_progress.wall_time() > 2)
           {
             out << "  checking the sweep's runs: " << r << '/'
                 << combinations.size() << std::endl;
