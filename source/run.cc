@@ -254,7 +254,10 @@ namespace thinlayer
       Attempt a{step, load_factor, {}, 0, 0, false, false};
       {
         TimerOutput::Scope scope(timer, "load steps");
-        const StepProgress progress(out, step, load_factor);
+        const StepProgress progress(out,
+                                    step,
+                                    load_factor,
+                                    p.output.progress_interval);
         a.result            = analysis.solve(load_factor);
         a.load              = monitors.load();
         result.displacement = monitors.displacement();

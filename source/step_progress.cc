@@ -7,21 +7,23 @@ namespace thinlayer
   {
     /// The open reporter, if any (load steps run on the main thread).
     StepProgress *current = nullptr;
-
-    constexpr std::chrono::seconds interval(5);
   } // namespace
 
 
   StepProgress::StepProgress(std::ostream      &out,
                              const unsigned int step,
-                             const double       load_factor)
+                             const double       load_factor,
+                             const double       interval)
     : out(out)
     , step(step)
     , load_factor(load_factor)
+    , interval(interval)
     , start(std::chrono::steady_clock::now())
-    , next_line(start + interval)
+    , next_line(start +
+                std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                  this->interval))
   {
-    current = this;
+    current = interval > 0 ? this : nullptr;
   }
 
 
@@ -41,7 +43,9 @@ namespace thinlayer
     const auto now = std::chrono::steady_clock::now();
     if (now < current->next_line)
       return;
-    current->next_line = now + interval;
+    current->next_line =
+      now + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+              current->interval);
     current->out << "  step " << text_format::printf("%4.0f", current->step)
                  << "  load factor "
                  << text_format::printf("%10.6g", current->load_factor)

@@ -429,6 +429,8 @@ namespace thinlayer
     /// Fourier: slices of the revolved 3D view over the circle; 0 for none.
     unsigned int view_slices;
     bool         print_timing;
+    /// Seconds between a long step's progress lines; 0 for none.
+    double progress_interval;
 
     static void
     declare(ParameterHandler &prm);

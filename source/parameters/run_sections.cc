@@ -678,6 +678,13 @@ namespace thinlayer
                       "equal angles over the circle, as revolved-NNNN.vtu "
                       "(revolved.pvd) for ParaView: the summed displacement "
                       "and the stations' stresses. 0 for none.");
+    prm.declare_entry("Progress interval",
+                      "5",
+                      Patterns::Double(0),
+                      "Seconds between the lines a long load step prints "
+                      "while it iterates (its iteration and convergence "
+                      "measure); 0 for none, which makes the screen output "
+                      "independent of the machine's speed (the tests).");
     prm.declare_entry("Print timing",
                       "true",
                       Patterns::Bool(),
@@ -694,10 +701,11 @@ namespace thinlayer
     directory = prm.get("Directory");
     if (directory.empty())
       throw InputError(file, "Output/Directory", "expected a directory");
-    write_vtu        = prm.get_bool("Write VTU");
-    vtu_subdivisions = prm.get_integer("VTU subdivisions");
-    view_slices      = prm.get_integer("3D view slices");
-    print_timing     = prm.get_bool("Print timing");
+    write_vtu         = prm.get_bool("Write VTU");
+    vtu_subdivisions  = prm.get_integer("VTU subdivisions");
+    view_slices       = prm.get_integer("3D view slices");
+    print_timing      = prm.get_bool("Print timing");
+    progress_interval = prm.get_double("Progress interval");
     prm.leave_subsection();
   }
 } // namespace thinlayer
