@@ -178,10 +178,14 @@ namespace thinlayer
         // overflows (which would return it to s = 0, a state on no
         // surface), stays as it is: its yield ratio is not finite, and the
         // analysis fails the step on it.
-        const double                f    = yield_function(trial);
+        // An elastic point, the most common, returns before the deviator
+        // is formed.
+        const double f = yield_function(trial);
+        if (f <= 0 || !std::isfinite(f))
+          return {trial, stiffness, ReturnRegion::elastic};
         const SymmetricTensor<2, 3> s    = deviator(trial);
         const double                norm = s.norm();
-        if (!std::isfinite(f) || !std::isfinite(norm) || f <= 0)
+        if (!std::isfinite(norm))
           return {trial, stiffness, ReturnRegion::elastic};
         const SymmetricTensor<2, 3> n    = s / norm;
         const double                beta = std::sqrt(2.) * cohesion / norm;
