@@ -62,6 +62,12 @@ namespace thinlayer
                     const std::string                   &file,
                     const std::string                   &entry);
 
+  /// @p text as a number, all of it, into @p value; false if it is not
+  /// one (empty, trailing characters, out of range).
+  bool
+  to_number(const std::string &text, double &value);
+
+
   /// Whether @p name is a name of a geometry parameter (and of gmsh's
   /// DefineConstant): a letter or '_', then letters, digits or '_'.
   bool

@@ -99,6 +99,14 @@ namespace thinlayer
   std::set<std::string>
   given_entries(const std::vector<ParameterLine> &lines,
                 const std::vector<std::string>   &overrides);
+
+  /**
+   * "Section/Entry" of @p key with each part trimmed ("Solver / Tolerance"
+   * gives "Solver/Tolerance"), or an empty string if @p key is no such
+   * path: the form in which entries are compared.
+   */
+  std::string
+  entry_path(const std::string &key);
 } // namespace thinlayer
 
 #endif

@@ -183,20 +183,12 @@ namespace thinlayer
           : std::numeric_limits<double>::infinity();
     else
       {
-        try
-          {
-            std::size_t end  = 0;
-            tensile_strength = std::stod(tension, &end);
-            if (end != tension.size() || !std::isfinite(tensile_strength))
-              throw std::invalid_argument(tension);
-          }
-        catch (const std::exception &)
-          {
-            throw InputError(file,
-                             section + "/Tensile strength",
-                             "expected a number or nothing, got '" + tension +
-                               "'");
-          }
+        if (!to_number(tension, tensile_strength) ||
+            !std::isfinite(tensile_strength))
+          throw InputError(file,
+                           section + "/Tensile strength",
+                           "expected a number or nothing, got '" + tension +
+                             "'");
         if (!(tensile_strength >= 0))
           throw InputError(file,
                            section + "/Tensile strength",

@@ -71,6 +71,22 @@ namespace thinlayer
 
 
   bool
+  to_number(const std::string &text, double &value)
+  {
+    try
+      {
+        std::size_t used = 0;
+        value            = std::stod(text, &used);
+        return used == text.size() && !text.empty();
+      }
+    catch (const std::exception &)
+      {
+        return false;
+      }
+  }
+
+
+  bool
   is_identifier(const std::string &name)
   {
     if (name.empty() || std::isdigit(static_cast<unsigned char>(name[0])))

@@ -4,6 +4,7 @@
 #include <thinlayer/parameter_text.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -15,22 +16,7 @@ namespace thinlayer
 
   namespace
   {
-    bool
-    is_space(const char c)
-    {
-      return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
-    }
-
-    std::string
-    trim(const std::string &text)
-    {
-      std::size_t begin = 0, end = text.size();
-      while (begin < end && is_space(text[begin]))
-        ++begin;
-      while (end > begin && is_space(text[end - 1]))
-        --end;
-      return text.substr(begin, end - begin);
-    }
+    using dealii::Utilities::trim;
 
     /// Whether @p text starts with the word @p word (followed by a space
     /// or its end).
@@ -38,7 +24,8 @@ namespace thinlayer
     starts_with_word(const std::string &text, const std::string &word)
     {
       return text.compare(0, word.size(), word) == 0 &&
-             (text.size() == word.size() || is_space(text[word.size()]));
+             (text.size() == word.size() ||
+              std::isspace(static_cast<unsigned char>(text[word.size()])));
     }
 
 
@@ -265,14 +252,24 @@ namespace thinlayer
           given.insert(name + line.name);
         }
     for (const auto &o : overrides)
-      {
-        std::string name;
-        for (const auto &part :
-             dealii::Utilities::split_string_list(o.substr(0, o.find('=')),
-                                                  '/'))
-          name += (name.empty() ? "" : "/") + part;
-        given.insert(name);
-      }
+      given.insert(entry_path(o.substr(0, o.find('='))));
     return given;
+  }
+
+
+  std::string
+  entry_path(const std::string &key)
+  {
+    const auto parts = dealii::Utilities::split_string_list(key, '/');
+    if (parts.size() < 2)
+      return "";
+    std::string path;
+    for (const auto &part : parts)
+      {
+        if (part.empty() || part.find('=') != std::string::npos)
+          return "";
+        path += (path.empty() ? "" : "/") + part;
+      }
+    return path;
   }
 } // namespace thinlayer

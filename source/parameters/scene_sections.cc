@@ -55,20 +55,11 @@ namespace thinlayer
                              "'" + name +
                                "' is given twice; expected each parameter "
                                "once");
-          try
-            {
-              std::size_t used = 0;
-              result[name]     = std::stod(value, &used);
-              if (used != value.size())
-                throw std::invalid_argument(value);
-            }
-          catch (const std::exception &)
-            {
-              throw InputError(file,
-                               entry,
-                               "expected a number for '" + name + "', got '" +
-                                 value + "'");
-            }
+          if (!to_number(value, result[name]))
+            throw InputError(file,
+                             entry,
+                             "expected a number for '" + name + "', got '" +
+                               value + "'");
         }
       return result;
     }
