@@ -1,5 +1,5 @@
 // The thinlayer program; all of its work is in the core library.
-#include <thinlayer/command_line.h>
+#include <thinlayer/app/command_line.h>
 
 #include <iostream>
 

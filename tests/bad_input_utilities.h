@@ -6,7 +6,7 @@
 #ifndef thinlayer_tests_bad_input_utilities_h
 #define thinlayer_tests_bad_input_utilities_h
 
-#include <thinlayer/command_line.h>
+#include <thinlayer/app/command_line.h>
 
 #include <filesystem>
 #include <fstream>

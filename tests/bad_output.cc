@@ -8,7 +8,7 @@
 // cleared; a sweep with a run that ended in an error exits 1; a standard
 // output that cannot be written exits 1. The program runs in-process
 // through run_command_line().
-#include <thinlayer/command_line.h>
+#include <thinlayer/app/command_line.h>
 
 #include <chrono>
 #include <csignal>

@@ -29,9 +29,9 @@
 #include <deal.II/grid/tria.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include <thinlayer/analysis.h>
-#include <thinlayer/parameters.h>
-#include <thinlayer/scene.h>
+#include <thinlayer/analysis/analysis.h>
+#include <thinlayer/parameters/parameters.h>
+#include <thinlayer/mesh/scene.h>
 
 #include <cstdio>
 #include <functional>

@@ -12,10 +12,10 @@
 //   0): the bottom's torque is -pi R^4 / 2.
 // Equilibrium of the discrete body makes the last two exact on any mesh;
 // each is printed as the ratio to its closed form.
-#include <thinlayer/analysis.h>
-#include <thinlayer/monitors.h>
-#include <thinlayer/parameters.h>
-#include <thinlayer/scene.h>
+#include <thinlayer/analysis/analysis.h>
+#include <thinlayer/postprocess/monitors.h>
+#include <thinlayer/parameters/parameters.h>
+#include <thinlayer/mesh/scene.h>
 
 #include <cstdio>
 

@@ -15,8 +15,8 @@
 //    factor, lambda = c / (tau - p tan(phi)) = 0.23660. The bracket of
 //    each run (last converged, first failed load factor) must contain the
 //    value and be at most 1% wide.
-#include <thinlayer/command_line.h>
-#include <thinlayer/interface_values.h>
+#include <thinlayer/app/command_line.h>
+#include <thinlayer/elements/interface_values.h>
 
 #include <cmath>
 #include <cstdio>

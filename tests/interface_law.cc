@@ -11,7 +11,7 @@
 // - slip keeps the shear direction of the trial, and the plastic jump is
 //   along the plastic potential's gradient: its normal part over its shear
 //   part is tan(psi).
-#include <thinlayer/interface_law.h>
+#include <thinlayer/materials/interface_law.h>
 
 #include <cmath>
 #include <cstdio>

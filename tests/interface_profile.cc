@@ -16,7 +16,7 @@
 // enters, d being vertical.
 // Also: one run along the band, from the left, its arc length increasing
 // through the band's length.
-#include <thinlayer/interface_profile.h>
+#include <thinlayer/postprocess/interface_profile.h>
 
 #include <algorithm>
 #include <cmath>

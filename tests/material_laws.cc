@@ -16,7 +16,7 @@
 //   the strain.
 #include <deal.II/base/symmetric_tensor.h>
 
-#include <thinlayer/material_law.h>
+#include <thinlayer/materials/material_law.h>
 
 #include <cmath>
 #include <cstdio>

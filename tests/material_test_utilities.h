@@ -7,7 +7,7 @@
 
 #include <deal.II/base/symmetric_tensor.h>
 
-#include <thinlayer/parameters.h>
+#include <thinlayer/parameters/parameters.h>
 
 namespace thinlayer_tests
 {

@@ -7,10 +7,10 @@
 // which must vanish (the patch is self-equilibrated).
 #include <deal.II/base/symmetric_tensor.h>
 
-#include <thinlayer/analysis.h>
-#include <thinlayer/monitors.h>
-#include <thinlayer/parameters.h>
-#include <thinlayer/scene.h>
+#include <thinlayer/analysis/analysis.h>
+#include <thinlayer/postprocess/monitors.h>
+#include <thinlayer/parameters/parameters.h>
+#include <thinlayer/mesh/scene.h>
 
 #include <cstdio>
 

@@ -6,16 +6,16 @@
 // operator). The scene is Prandtl's strip footing (prm/, coarse mesh)
 // loaded to 0.95 of its collapse, well into plastic flow. Checked for the
 // paper's viscoplastic method, whose last increment of a step has no
-// stress of its own (it used to be written into the plastic strain
-// anyway), at a loose TOL of 1e-3 where that increment is large, and for
+// stress of its own (so it must not enter the plastic strain), at a loose
+// TOL of 1e-3 where that increment is large, and for
 // the default method (return mapping).
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/fe/fe_values.h>
 
-#include <thinlayer/analysis.h>
-#include <thinlayer/parameters.h>
-#include <thinlayer/scene.h>
+#include <thinlayer/analysis/analysis.h>
+#include <thinlayer/parameters/parameters.h>
+#include <thinlayer/mesh/scene.h>
 
 #include <cstdio>
 

@@ -16,7 +16,7 @@
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include <thinlayer/serendipity_constraints.h>
+#include <thinlayer/discretisation/serendipity_constraints.h>
 
 #include <cstdio>
 #include <functional>

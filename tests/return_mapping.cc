@@ -15,7 +15,7 @@
 // - admissible trial stresses come back unchanged with the elastic tangent.
 #include <deal.II/base/symmetric_tensor.h>
 
-#include <thinlayer/material_law.h>
+#include <thinlayer/materials/material_law.h>
 
 #include <algorithm>
 #include <array>

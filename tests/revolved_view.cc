@@ -12,10 +12,10 @@
 //   stresses that are even in theta (rr, zz, tt, rz) or odd (rt, zt): the
 //   slice mirrored about the plane theta = 0 must carry the same even
 //   components and the opposite odd ones.
-#include <thinlayer/analysis.h>
-#include <thinlayer/parameters.h>
-#include <thinlayer/revolved_view.h>
-#include <thinlayer/scene.h>
+#include <thinlayer/analysis/analysis.h>
+#include <thinlayer/parameters/parameters.h>
+#include <thinlayer/output/revolved_view.h>
+#include <thinlayer/mesh/scene.h>
 
 #include <algorithm>
 #include <cmath>

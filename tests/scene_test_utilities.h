@@ -5,9 +5,9 @@
 // text of a parameter file, set up and solved in one step to load factor 1;
 // and the elastic cylinder the Fourier tests use.
 
-#include <thinlayer/analysis.h>
-#include <thinlayer/parameters.h>
-#include <thinlayer/scene.h>
+#include <thinlayer/analysis/analysis.h>
+#include <thinlayer/parameters/parameters.h>
+#include <thinlayer/mesh/scene.h>
 
 #include <iostream>
 #include <string>

@@ -1,7 +1,7 @@
 #include <deal.II/base/function_parser.h>
 
-#include <thinlayer/input_error.h>
-#include <thinlayer/parameter_checks.h>
+#include <thinlayer/base/input_error.h>
+#include <thinlayer/parameters/parameter_checks.h>
 
 #include <cctype>
 #include <iostream>

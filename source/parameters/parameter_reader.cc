@@ -1,9 +1,9 @@
 #include <deal.II/base/utilities.h>
 
-#include <thinlayer/input_error.h>
-#include <thinlayer/parameter_checks.h>
-#include <thinlayer/parameter_text.h>
-#include <thinlayer/parameters.h>
+#include <thinlayer/base/input_error.h>
+#include <thinlayer/parameters/parameter_checks.h>
+#include <thinlayer/parameters/parameter_text.h>
+#include <thinlayer/parameters/parameters.h>
 
 #include <filesystem>
 #include <fstream>

@@ -1,7 +1,7 @@
 #include <deal.II/base/utilities.h>
 
-#include <thinlayer/input_error.h>
-#include <thinlayer/parameter_text.h>
+#include <thinlayer/base/input_error.h>
+#include <thinlayer/parameters/parameter_text.h>
 
 #include <algorithm>
 #include <cctype>

@@ -1,6 +1,6 @@
-#include <thinlayer/interruption.h>
+#include <thinlayer/base/interruption.h>
 #include <thinlayer/solution_methods/viscoplastic.h>
-#include <thinlayer/step_progress.h>
+#include <thinlayer/stepping/step_progress.h>
 
 #include <algorithm>
 

@@ -3,7 +3,7 @@
 
 #include <deal.II/lac/vector.h>
 
-#include <thinlayer/anderson_acceleration.h>
+#include <thinlayer/solvers/anderson_acceleration.h>
 #include <thinlayer/solution_methods/return_mapping_method.h>
 
 namespace thinlayer

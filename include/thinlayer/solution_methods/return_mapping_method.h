@@ -3,9 +3,9 @@
 
 #include <deal.II/lac/vector.h>
 
-#include <thinlayer/analysis.h>
-#include <thinlayer/solution_method.h>
-#include <thinlayer/solution_methods/growth_monitor.h>
+#include <thinlayer/analysis/analysis.h>
+#include <thinlayer/solution_methods/solution_method.h>
+#include <thinlayer/stepping/growth_monitor.h>
 
 #include <vector>
 

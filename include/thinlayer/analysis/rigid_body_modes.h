@@ -1,0 +1,46 @@
+#ifndef thinlayer_analysis_rigid_body_modes_h
+#define thinlayer_analysis_rigid_body_modes_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/sparse_matrix.h>
+
+#include <string>
+#include <vector>
+
+namespace thinlayer
+{
+  using namespace dealii;
+
+  /**
+   * The rigid-body motion, if any, that the supports of a plane-strain body
+   * leave free: a description ("a rotation about (0.5, 0.5)", "a
+   * translation in the direction (1, 0)"), or an empty string.
+   *
+   * A free translation makes the stiffness exactly singular and its
+   * factorisation fails; a free rotation does not: rounding leaves a pivot
+   * of order 1e-16 of the others, the factorisation succeeds, and the
+   * first solve returns displacements 1e10 times the elastic ones, which
+   * look like a collapse at load 0. So the supports are checked directly.
+   * The three rigid motions (two translations and a rotation) are taken
+   * with their constrained values set to zero (the supports held);
+   * a combination that the supports do not resist is one the condensed
+   * stiffness maps to zero up to rounding: the smallest singular value of
+   * K R, its columns scaled by |K| |R|, is below 1e-9 (rounding gives
+   * 1e-15; a motion the supports hold, even at one node of a million,
+   * gives 1e-4 or more).
+   *
+   * @param support_points   the point of every DoF;
+   * @param dof_component    the component (0: x, 1: y) of every DoF;
+   * @param constraints      the constraints, Dirichlet lines (without
+   *                         entries) counting as supports;
+   * @param condensed_stiffness the stiffness condensed with them.
+   */
+  std::string
+  free_rigid_body_motion(const std::vector<Point<2>>     &support_points,
+                         const std::vector<unsigned int> &dof_component,
+                         const AffineConstraints<double> &constraints,
+                         const SparseMatrix<double>      &condensed_stiffness);
+} // namespace thinlayer
+
+#endif

@@ -1,0 +1,86 @@
+#ifndef thinlayer_elements_interface_values_h
+#define thinlayer_elements_interface_values_h
+
+#include <deal.II/base/point.h>
+
+#include <thinlayer/discretisation/kinematics.h>
+
+#include <string>
+#include <vector>
+
+namespace thinlayer
+{
+  using namespace dealii;
+
+  /**
+   * What an engineer reads off an interface at one point of it: the
+   * relative displacement of its two faces (slip along it, opening across
+   * it) and the traction on its plane (shear along it, normal across it).
+   * Signs: the tangent s points along the interface in the direction of
+   * increasing arc length, the normal n is s turned a quarter turn
+   * anticlockwise; slip and opening are (u on the +n face) - (u on the -n
+   * face) along s and n; tractions are sigma n along s and n, tension
+   * positive. "Out of plane" is z in plane strain (always zero) and theta
+   * in Fourier scenes.
+   */
+  struct InterfaceValues
+  {
+    double slip;
+    double slip_out_of_plane;
+    double opening;
+    /// The same over the last load step alone: at a failed step, the
+    /// incipient mechanism.
+    double slip_increment;
+    double opening_increment;
+    double shear_traction;
+    double shear_traction_out_of_plane;
+    double normal_traction;
+    /// The largest yield ratio across the layer's thickness (NaN for an
+    /// elastic material).
+    double yield_ratio;
+    /// Whether a Gauss point across the thickness yields.
+    bool plastic;
+  };
+
+
+  /// Where a profile sample lies: its run along the interface, its arc
+  /// length along that run, and its position.
+  struct ProfileSample
+  {
+    unsigned int run;
+    double       arc_length;
+    Point<2>     position;
+  };
+
+
+  /**
+   * An interface's profile at one state: where its samples lie, and their
+   * values at every station (one station in plane strain).
+   */
+  struct Profile
+  {
+    std::vector<ProfileSample>                samples;
+    std::vector<std::vector<InterfaceValues>> stations;
+  };
+
+
+  /**
+   * The CSV of a profile (thin layer or zero-thickness elements): one row
+   * per sample and station, the run, arc length, position, station angle
+   * (degrees) and the values.
+   */
+  std::string
+  profile_csv(const Profile &profile, const Kinematics &kinematics);
+
+  /**
+   * The profile as a VTU for ParaView: each run a polyline through its
+   * samples (z = 0), the values as point data (in Fourier scenes one set
+   * per station, suffixed with its angle in degrees).
+   */
+  std::string
+  profile_vtu(const Profile &profile, const Kinematics &kinematics);
+
+
+} // namespace thinlayer
+
+#endif

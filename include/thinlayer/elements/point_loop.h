@@ -1,0 +1,161 @@
+#ifndef thinlayer_elements_point_loop_h
+#define thinlayer_elements_point_loop_h
+
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/thread_management.h>
+
+#include <thinlayer/discretisation/kinematics.h>
+#include <thinlayer/materials/material_law.h>
+#include <thinlayer/analysis/mode_state.h>
+#include <thinlayer/materials/point_history.h>
+#include <thinlayer/discretisation/strain_operator.h>
+
+#include <memory>
+#include <vector>
+
+namespace thinlayer
+{
+  using namespace dealii;
+
+  /**
+   * The loop over every Gauss point and station that turns the modes' step
+   * increments into stresses and nodal forces: the hot loop of every
+   * solution method. Two point rules share it:
+   *
+   * - viscoplastic_update(): the paper's viscoplastic strain increment,
+   *   sigma = sigma_0 + D (strain - eps_vp), and where F > 0 the new
+   *   viscoplastic strain dt F dQ/dsigma, whose D-projection is added to
+   *   each mode's body_load_change;
+   * - return_mapping_update(): the return mapping of the elastic trial
+   *   stress sigma_0 + D strain, setting each mode's internal_forces and its
+   *   stress excess in body_loads, optionally keeping the consistent
+   *   tangents.
+   *
+   * The cells are split into chunks run as parallel tasks. Each cell writes
+   * its nodal forces into its own slot, and one serial pass adds the slots
+   * into the global vectors in cell order: the sums, and so the
+   * iterations, do not depend on the number of threads, and no per-chunk
+   * global vectors are zeroed and summed every iteration. Everything is
+   * allocated in reinit(): an iteration allocates nothing.
+   */
+  class PointLoop
+  {
+  public:
+    /**
+     * Set up for the active cells described by @p strain_operator, with
+     * @p n_q points per cell, the law of every cell and the history of
+     * every point (point p = c * n_q + q). The objects are referenced, not
+     * copied.
+     */
+    void
+    reinit(const StrainOperator                   &strain_operator,
+           const Kinematics                       &kinematics,
+           const unsigned int                      n_q,
+           const std::vector<const MaterialLaw *> &cell_law,
+           const std::vector<PointHistory *>      &history);
+
+    /**
+     * The paper's point rule with pseudo time step @p time_step. Returns
+     * the number of yielding points and stations.
+     */
+    unsigned int
+    viscoplastic_update(const double                             time_step,
+                        std::vector<std::unique_ptr<ModeState>> &modes);
+
+    /**
+     * Return mapping at every point and station. With @p tangents (one per
+     * point and station, point-major), the consistent tangents are stored
+     * there. Returns the number of yielding points and stations.
+     */
+    unsigned int
+    return_mapping_update(std::vector<std::unique_ptr<ModeState>> &modes,
+                          std::vector<SymmetricTensor<4, 3>>      *tangents);
+
+    /// The modes' internal forces int B^T sigma of the current stresses.
+    void
+    compute_internal_forces(
+      std::vector<std::unique_ptr<ModeState>> &modes) const;
+
+    /// How many chunks the cells are split into.
+    unsigned int
+    n_chunks() const
+    {
+      return chunks;
+    }
+
+    /**
+     * Run @p work(begin, end, chunk) for the cells [begin, end) of every
+     * chunk as parallel tasks, and wait for them; for other per-cell work
+     * of the same size (Newton's cell tangents).
+     */
+    template <typename Work>
+    void
+    for_each_chunk(const Work &work)
+    {
+      tasks.clear();
+      for (unsigned int k = 0; k < chunks; ++k)
+        tasks.push_back(Threads::new_task([this, k, &work]() {
+          work(chunk_begin(k), chunk_begin(k + 1), k);
+          return 0u;
+        }));
+      for (auto &task : tasks)
+        task.join();
+    }
+
+  private:
+    /// Work space of one chunk, allocated once.
+    struct ChunkScratch
+    {
+      /// The cell's nodal increments, per mode.
+      std::vector<double> du;
+      /// The strain parts of each mode at a point.
+      std::vector<SymmetricTensor<2, 3>> mode_strain;
+    };
+
+    unsigned int
+    chunk_begin(const unsigned int k) const
+    {
+      return k * n_cells / chunks;
+    }
+
+    /// Both point rules: the parallel cell loop, then the serial pass.
+    template <typename PointRule>
+    unsigned int
+    update(std::vector<std::unique_ptr<ModeState>> &modes,
+           const PointRule                         &rule);
+
+    /// The cells [@p begin, @p end): their slots of cell_body_loads (and
+    /// cell_internal_forces), and cell_has_body_loads.
+    template <typename PointRule>
+    unsigned int
+    update_cells(const unsigned int                             begin,
+                 const unsigned int                             end,
+                 const std::vector<std::unique_ptr<ModeState>> &modes,
+                 const PointRule                               &rule,
+                 ChunkScratch                                  &scratch);
+
+    const StrainOperator                   *strain_operator = nullptr;
+    const Kinematics                       *kinematics      = nullptr;
+    const std::vector<const MaterialLaw *> *cell_law        = nullptr;
+    const std::vector<PointHistory *>      *history         = nullptr;
+    unsigned int                            n_q             = 0;
+    unsigned int                            n_cells         = 0;
+    unsigned int                            chunks          = 0;
+
+    /// Each cell's nodal body loads (viscoplastic: their increments), per
+    /// mode: n_modes * dofs_per_cell entries from c * n_modes *
+    /// dofs_per_cell on.
+    std::vector<double> cell_body_loads;
+    /// Each cell's nodal internal forces (return mapping), laid out as
+    /// cell_body_loads.
+    std::vector<double> cell_internal_forces;
+    /// Whether a cell's slot of cell_body_loads holds anything (0 when none
+    /// of its points yields): the serial pass skips the cells with 0.
+    std::vector<unsigned char> cell_has_body_loads;
+    /// The tasks, one per chunk (kept to reuse the storage).
+    std::vector<Threads::Task<unsigned int>> tasks;
+    std::vector<ChunkScratch>                chunk_scratch;
+  };
+} // namespace thinlayer
+
+#endif

@@ -1,0 +1,275 @@
+#ifndef thinlayer_elements_zero_thickness_elements_h
+#define thinlayer_elements_zero_thickness_elements_h
+
+#include <deal.II/base/tensor.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/sparse_matrix.h>
+
+#include <thinlayer/materials/interface_law.h>
+#include <thinlayer/mesh/interface_pairing.h>
+#include <thinlayer/elements/interface_values.h>
+#include <thinlayer/discretisation/kinematics.h>
+#include <thinlayer/analysis/mode_state.h>
+#include <thinlayer/parameters/parameters.h>
+
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace thinlayer
+{
+  using namespace dealii;
+
+  /// The state of one interface point at one station: tractions and
+  /// relative displacements in the local frame (s, n, t).
+  struct InterfacePointState
+  {
+    Tensor<1, 3> converged_traction;
+    Tensor<1, 3> traction;
+    Tensor<1, 3> plastic_jump;
+    Tensor<1, 3> step_plastic_jump;
+    Tensor<1, 3> pending_plastic_jump;
+    bool         yielding = false;
+  };
+
+
+  /**
+   * Zero-thickness (Goodman-type) interface elements along physical
+   * curves. The mesh is split along each curve when read
+   * (split_along_curves()), so each curve shows as pairs of facing cell
+   * sides, boundary faces with the curve's id; an element pairs two facing
+   * sides (6 nodes of the quadratic field) and couples their DoFs through
+   * an InterfaceLaw of the relative displacement
+   *   delta = u(+ side) - u(- side)
+   * in the local frame: s along the curve (runs from the lower-left end,
+   * as InterfaceProfile), n = s turned a quarter turn anticlockwise, t out
+   * of the plane. The integral over the side uses Gauss or Lobatto
+   * points, weighted by r in Fourier scenes.
+   *
+   * The elements take part in everything the cells do, through the
+   * Analysis: the elastic stiffness of every mode, the viscoplastic point
+   * rule, the return mapping with internal forces and stress excess, the
+   * acceptance and rejection of a step, and Newton's tangent. Station by
+   * station as the point loop: the relative displacement of the harmonics
+   * summed at each station (u_r, u_z with T1, u_theta with T2), the
+   * tractions projected back with the station weights.
+   */
+  class ZeroThicknessElements
+  {
+  public:
+    /**
+     * Pair the faces of every curve of @p curves. Throws InputError
+     * (naming @p parameter_file and the curve's section) where a face of a
+     * curve has no facing partner, or where an interface stiffness exceeds
+     * max_stiffness_ratio E / h of the cells beside it (@p materials).
+     */
+    void
+    reinit(const DoFHandler<2> &dof_handler,
+           const Mapping<2>    &mapping,
+           const Kinematics    &kinematics,
+           const std::map<types::boundary_id, InterfaceCurveParameters> &curves,
+           const std::map<types::material_id, MaterialParameters> &materials,
+           const std::string &parameter_file);
+
+    /**
+     * The largest interface stiffness accepted, in units of E / h (E the
+     * smaller Young's modulus of the two cells beside an element, h its
+     * side's length). Stiffer interfaces add no accuracy (the interface's
+     * compliance is already a millionth of the cells'), but the tractions,
+     * k times a jump that is the difference of two nearly equal
+     * displacements, lose their digits to round-off: in
+     * benchmarks/interfaces.py, Cases 2 and 3 at 1.25e6 E/h and above end
+     * in "collapses" at a tenth of the sliding load, or do not converge.
+     */
+    static constexpr double max_stiffness_ratio = 1e6;
+
+    bool
+    empty() const;
+
+    /// Add the couplings of each element's DoFs to @p dsp, with the fill-in
+    /// of @p constraints.
+    void
+    add_sparsity(DynamicSparsityPattern          &dsp,
+                 const AffineConstraints<double> &constraints) const;
+
+    /// Add the elastic stiffness of mode @p m to @p stiffness (raw) and to
+    /// @p condensed (with @p constraints).
+    void
+    assemble_elastic(const unsigned int               m,
+                     SparseMatrix<double>            &stiffness,
+                     SparseMatrix<double>            &condensed,
+                     const AffineConstraints<double> &constraints) const;
+
+    /// The viscoplastic point rule at every point and station; body loads
+    /// into each mode's body_load_change. Returns the yielding count.
+    unsigned int
+    viscoplastic_update(std::vector<std::unique_ptr<ModeState>> &modes);
+
+    /// Return mapping at every point and station; tractions into each
+    /// mode's internal_forces, the excess into its body_loads (both
+    /// added). Keeps the consistent tangents if @p with_tangents.
+    unsigned int
+    return_mapping_update(std::vector<std::unique_ptr<ModeState>> &modes,
+                          const bool with_tangents);
+
+    /// Add the current tractions' nodal forces to each mode's
+    /// internal_forces.
+    void
+    add_internal_forces(std::vector<std::unique_ptr<ModeState>> &modes) const;
+
+    void
+    accept();
+
+    void
+    reject();
+
+    /// The largest yield ratio over points and stations (NaN if none can
+    /// yield).
+    double
+    max_yield_ratio() const;
+
+    /// Whether every traction, and every yield ratio of a law that can
+    /// yield, is a finite number.
+    bool
+    all_finite() const;
+
+    bool
+    all_associated() const;
+
+    /// @name Newton's coupled tangent (DoF m * n_dofs + i for mode m)
+    /// @{
+    void
+    add_coupled_sparsity(
+      DynamicSparsityPattern          &dsp,
+      const AffineConstraints<double> &coupled_constraints) const;
+
+    /// With the tangents of the last return_mapping_update(true). Uses
+    /// work space sized in reinit(): it runs at every factorisation.
+    void
+    add_coupled_tangent(
+      SparseMatrix<double>            &tangent,
+      const AffineConstraints<double> &coupled_constraints) const;
+    /// @}
+
+    /// @name Output
+    /// @{
+    std::vector<types::boundary_id>
+    curve_ids() const;
+
+    /**
+     * The profile of curve @p curve: with the displacement of every mode
+     * in @p modes (the accepted solution plus the pending increment where
+     * @p pending).
+     */
+    Profile
+    profile(const types::boundary_id                       curve,
+            const std::vector<std::unique_ptr<ModeState>> &modes,
+            const bool                                     pending) const;
+    /// @}
+
+  private:
+    /// One term of the jump operator: the side-signed shape value of a
+    /// local DoF of the element.
+    struct Entry
+    {
+      unsigned int local_dof;
+      unsigned int component;
+      double       value;
+    };
+
+    struct IntegrationPoint
+    {
+      unsigned int       element;
+      types::boundary_id curve;
+      unsigned int       run;
+      double             arc_length;
+      dealii::Point<2>   position;
+      Tensor<1, 2>       tangent;
+      Tensor<1, 2>       normal;
+      /// Quadrature weight times side length, times r for Fourier.
+      double             weight;
+      std::vector<Entry> entries;
+    };
+
+    struct Element
+    {
+      const InterfaceLaw                  *law;
+      std::vector<types::global_dof_index> dofs;
+      /// The same DoFs of every mode in Newton's coupled numbering.
+      std::vector<types::global_dof_index> coupled_dofs;
+    };
+
+    /// The jump at station @p s in the local frame, of every mode's
+    /// vector ModeState::*@p vector at the element's DoFs. Allocates
+    /// nothing: it runs in every iteration.
+    Tensor<1, 3>
+    local_jump(const IntegrationPoint                        &point,
+               const unsigned int                             s,
+               const std::vector<std::unique_ptr<ModeState>> &modes,
+               Vector<double> ModeState::*const vector) const;
+
+    /// Add the nodal forces of local traction @p traction at point
+    /// @p point and station @p s, times the station and point weights, to
+    /// every mode's vector ModeState::*@p target.
+    void
+    add_forces(const IntegrationPoint                        &point,
+               const unsigned int                             s,
+               const Tensor<1, 3>                            &traction,
+               const std::vector<std::unique_ptr<ModeState>> &modes,
+               Vector<double> ModeState::*const target) const;
+
+    /// An InputError unless the stiffnesses of @p curve are at most
+    /// max_stiffness_ratio E / h for the cells of @p pair.
+    static void
+    check_stiffness(
+      const FacingSides                                      &pair,
+      const InterfaceCurveParameters                         &curve,
+      const std::map<types::material_id, MaterialParameters> &materials,
+      const std::string                                      &parameter_file);
+
+    /// The element of @p pair: its integration points along the side,
+    /// each with the jump operator over the two cells' DoFs.
+    void
+    add_element(const FacingSides              &pair,
+                const InterfaceCurveParameters &curve,
+                const DoFHandler<2>            &dof_handler,
+                const Mapping<2>               &mapping);
+
+    /**
+     * Run @p rule(point, station, law, state, jump, point_station) at every
+     * point and station, with the jump of the modes' step increments; the
+     * sum of what it returns (its yielding count).
+     */
+    template <typename Rule>
+    unsigned int
+    for_each_point(std::vector<std::unique_ptr<ModeState>> &modes,
+                   const Rule                              &rule);
+
+    /// The 3 x (modes x element DoFs) map from the element's DoFs of all
+    /// modes to the local jump at point @p point and station @p s.
+    void
+    jump_operator(const IntegrationPoint &point,
+                  const unsigned int      s,
+                  FullMatrix<double>     &G) const;
+
+    const Kinematics *kinematics = nullptr;
+    std::map<types::boundary_id, std::unique_ptr<InterfaceLaw>> laws;
+    std::vector<Element>                                        elements;
+    std::vector<IntegrationPoint>                               points;
+    /// Point-major: points[p] at station s is states[p * n_stations + s].
+    std::vector<InterfacePointState> states;
+    std::vector<Tensor<2, 3>>        tangents;
+    /// Work space of add_coupled_tangent(): a matrix per element, and the
+    /// jump operator of one point.
+    mutable std::vector<FullMatrix<double>> coupled_matrices;
+    mutable FullMatrix<double>              jump_scratch;
+  };
+} // namespace thinlayer
+
+#endif

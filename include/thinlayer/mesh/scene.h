@@ -1,0 +1,57 @@
+#ifndef thinlayer_mesh_scene_h
+#define thinlayer_mesh_scene_h
+
+#include <deal.II/grid/tria.h>
+
+#include <thinlayer/parameters/parameters.h>
+
+#include <ostream>
+#include <string>
+
+namespace thinlayer
+{
+  using namespace dealii;
+
+  /**
+   * The mesh of a scene, from a gmsh geometry (.geo) meshed by gmsh with the
+   * parameter file's geometry parameters, or from a gmsh mesh (.msh).
+   * Physical surfaces become material ids and physical curves boundary ids;
+   * a scene is then a parameter file plus a .geo, with nothing about a
+   * particular case in C++.
+   */
+  class Scene
+  {
+  public:
+    /**
+     * Build the mesh and check it against the parameter file: every
+     * material id of the mesh has a material, every material and boundary
+     * section and every monitored boundary id exists in the mesh, every
+     * cell is a convex quadrilateral, and there are at most Mesh/Maximum
+     * cells. Throws InputError otherwise, before anything is written. A
+     * .geo is meshed by gmsh (run_gmsh()), which reports on @p progress
+     * while it runs.
+     */
+    Scene(const Parameters &parameters, std::ostream &progress);
+
+    const Triangulation<2> &
+    triangulation() const;
+
+    /// The mesh in gmsh's format, as read (kept with the results).
+    const std::string &
+    mesh_text() const;
+
+  private:
+    Triangulation<2> tria;
+    std::string      msh;
+  };
+
+  /**
+   * Checks that the ids of @p tria and of @p parameters match; the part of
+   * Scene's work that also applies to meshes made in code.
+   */
+  template <int dim>
+  void
+  check_ids(const Parameters &parameters, const Triangulation<dim> &tria);
+} // namespace thinlayer
+
+#endif

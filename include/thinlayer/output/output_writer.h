@@ -1,0 +1,126 @@
+#ifndef thinlayer_output_output_writer_h
+#define thinlayer_output_output_writer_h
+
+#include <deal.II/base/data_out_base.h>
+
+#include <thinlayer/analysis/analysis.h>
+#include <thinlayer/postprocess/interface_profile.h>
+#include <thinlayer/postprocess/monitors.h>
+#include <thinlayer/parameters/parameters.h>
+#include <thinlayer/solution_methods/solution_method.h>
+
+#include <fstream>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace thinlayer
+{
+  using namespace dealii;
+
+  /**
+   * One row of history.csv: one load step.
+   */
+  struct HistoryRow
+  {
+    /// The load step attempted, and the attempt's number in the run (they
+    /// differ once a failed step has been cut back and retried).
+    unsigned int        step;
+    unsigned int        attempt;
+    double              load_factor;
+    double              load;
+    DisplacementMeasure displacement;
+    StepResult          result;
+    /// Whether the attempt's state was accepted.
+    bool accepted;
+    /// The attempt's secant stiffness along its increment against the
+    /// elastic one (Analysis::secant_stiffness_ratio()).
+    double stiffness_ratio;
+  };
+
+  /**
+   * The files of one run in its output directory: history.csv (one row per
+   * attempt at a load step, flushed as it goes so a long run can be
+   * watched),
+   * fields-NNNN.vtu with fields.pvd for ParaView, and whole files such as
+   * summary.json at the end, into @p directory (a ResultsDirectory's
+   * staging directory, which exists). Every write is checked: one that
+   * fails throws a WriteError that names the file.
+   */
+  class OutputWriter
+  {
+  public:
+    OutputWriter(const OutputParameters &parameters,
+                 const std::string      &directory);
+
+    void
+    write_history_row(const HistoryRow &row);
+
+    /**
+     * The fields of load step @p step as fields-NNNN.vtu, and fields.pvd
+     * listing every step so far. For Fourier kinematics the displacement
+     * is the one in the cut at angle @p theta. The profiles of
+     * @p interfaces add their cell fields (zero off the layers).
+     */
+    void
+    write_fields(const unsigned int                   step,
+                 const double                         load_factor,
+                 const Analysis<2>                   &analysis,
+                 const double                         theta,
+                 const std::vector<InterfaceProfile> &interfaces);
+
+    /**
+     * The profile of every one of @p interfaces at load step @p step
+     * (load factor @p load_factor), as interface-<id>-NNNN.csv, and of
+     * every curve of zero-thickness elements as interface-curve-<id>-NNNN.csv;
+     * @p with_vtu, also each as a VTU polyline, listed in
+     * interface-<id>.pvd and interface-curve-<id>.pvd.
+     */
+    void
+    write_interface_profiles(const unsigned int                   step,
+                             const double                         load_factor,
+                             const Analysis<2>                   &analysis,
+                             const std::vector<InterfaceProfile> &interfaces,
+                             const bool                           with_vtu);
+
+    /**
+     * The body revolved about its axis (revolved_view_vtu(), @p slices
+     * angles) as revolved-NNNN.vtu, and revolved.pvd listing every step so
+     * far.
+     */
+    void
+    write_revolved_view(const unsigned int step,
+                        const double       load_factor,
+                        const Analysis<2> &analysis,
+                        const unsigned int slices);
+
+    /**
+     * Vertex positions, displacements and the last step's displacement
+     * increments as displacements.csv (x, y, u_x, u_y, du_x, du_y),
+     * overwritten every step so that it holds the last one: at a failed
+     * step the increment is the mechanism at failure, for plots. For
+     * Fourier kinematics the field in the cut at angle @p theta.
+     */
+    template <int dim>
+    void
+    write_displacements(const Analysis<dim> &analysis,
+                        const double         theta) const;
+
+    /// Any other file (the mesh, the parameters), written whole.
+    void
+    write_file(const std::string &name, const std::string &content) const;
+
+
+  private:
+    std::string                                 directory;
+    unsigned int                                vtu_subdivisions;
+    std::ofstream                               history;
+    std::vector<std::pair<double, std::string>> pvd_records;
+    std::vector<std::pair<double, std::string>> revolved_records;
+    std::map<std::string, std::vector<std::pair<double, std::string>>>
+      profile_records;
+  };
+} // namespace thinlayer
+
+#endif

@@ -1,0 +1,139 @@
+#ifndef thinlayer_output_run_summary_h
+#define thinlayer_output_run_summary_h
+
+#include <map>
+#include <string>
+
+namespace thinlayer
+{
+  /**
+   * The figures of one run: what it was (model, discretisation, size), how
+   * it ended (collapse load against the reference, iterations) and what it
+   * cost. This is the one list of them: summary.json and the rows of
+   * sweep.csv are both written from visit(), so a new figure is a member
+   * here, one line in visit(), and its value set in run_scene().
+   */
+  struct RunSummary
+  {
+    std::string                   parameter_file;
+    std::string                   mesh_file;
+    std::map<std::string, double> geometry_parameters;
+    std::string                   kinematics;
+    /// The harmonics, space-separated ("0" in plane strain).
+    std::string  harmonics;
+    unsigned int stations = 0;
+    std::string  element;
+    unsigned int gauss_points_per_direction = 0;
+    unsigned int cells                      = 0;
+    unsigned int dofs                       = 0;
+    unsigned int equations                  = 0;
+
+    /**
+     * How the run ended: "completed" (every load step converged),
+     * "collapse" (under load, the stepping reached a mechanism: a step
+     * that failed with one as evidence, or one that converged on it)
+     * or "not converged" (anything else; the reason says what).
+     */
+    std::string outcome;
+    std::string reason;
+    /// The collapse load: the last accepted load where the outcome is a
+    /// collapse; under prescribed displacement, the load's plateau if the
+    /// last step reached one; NaN otherwise.
+    double collapse_load;
+    /// Whether every load step converged.
+    bool   converged = false;
+    double last_converged_load;
+    double first_failed_load;
+    double reference_load;
+    double relative_error;
+    /// The displacement measure after the last step run.
+    double       final_displacement;
+    double       final_displacement_min;
+    double       final_displacement_max;
+    unsigned int load_steps = 0;
+    /// Attempts at load steps: load_steps and the cut-back ones.
+    unsigned int attempts = 0;
+    /// Accepted steps whose largest yield ratio exceeds 10 TOL: stresses
+    /// that drifted out of the yield surface (the viscoplastic method's
+    /// criterion does not bound it).
+    unsigned int steps_with_drift = 0;
+    unsigned int total_iterations = 0;
+    /// The iterations of the steps up to the last converged one (those of
+    /// a failed step depend on rounding).
+    unsigned int converged_iterations = 0;
+    std::string  method;
+    double       seconds_per_substitution;
+    double       seconds_per_iteration;
+    double       wall_seconds;
+    /// Warnings about the model (e.g. too few stations); empty if none.
+    std::string warnings;
+    /// Wall seconds per timer section.
+    std::map<std::string, double> timing;
+
+    RunSummary();
+
+    /// summary.json: every figure, nested ones as objects; NaN as null.
+    std::string
+    json() const;
+
+    /// The names of the figures that are single values, comma-separated:
+    /// the columns sweep.csv has for every run.
+    static std::string
+    csv_header();
+
+    /// The values of those figures, comma-separated; NaN as empty.
+    std::string
+    csv_row() const;
+
+    /// The row of a run that stopped with an error before it had figures:
+    /// "converged" 0, every other field empty.
+    static std::string
+    csv_error_row();
+
+    /**
+     * Calls @p visitor(name, value) for every figure in order, value being
+     * a double, an unsigned int, a bool, a std::string, or a map of names
+     * to doubles.
+     */
+    template <typename Visitor>
+    void
+    visit(Visitor &visitor) const
+    {
+      visitor("parameter_file", parameter_file);
+      visitor("mesh_file", mesh_file);
+      visitor("geometry_parameters", geometry_parameters);
+      visitor("kinematics", kinematics);
+      visitor("harmonics", harmonics);
+      visitor("stations", stations);
+      visitor("element", element);
+      visitor("gauss_points_per_direction", gauss_points_per_direction);
+      visitor("cells", cells);
+      visitor("dofs", dofs);
+      visitor("equations", equations);
+      visitor("outcome", outcome);
+      visitor("reason", reason);
+      visitor("collapse_load", collapse_load);
+      visitor("converged", converged);
+      visitor("last_converged_load", last_converged_load);
+      visitor("first_failed_load", first_failed_load);
+      visitor("reference_load", reference_load);
+      visitor("relative_error", relative_error);
+      visitor("final_displacement", final_displacement);
+      visitor("final_displacement_min", final_displacement_min);
+      visitor("final_displacement_max", final_displacement_max);
+      visitor("load_steps", load_steps);
+      visitor("attempts", attempts);
+      visitor("steps_with_drift", steps_with_drift);
+      visitor("total_iterations", total_iterations);
+      visitor("iterations_to_last_converged_step", converged_iterations);
+      visitor("method", method);
+      visitor("seconds_per_substitution", seconds_per_substitution);
+      visitor("seconds_per_iteration", seconds_per_iteration);
+      visitor("wall_seconds", wall_seconds);
+      visitor("warnings", warnings);
+      visitor("timing", timing);
+    }
+  };
+} // namespace thinlayer
+
+#endif

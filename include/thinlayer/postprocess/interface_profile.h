@@ -1,0 +1,108 @@
+#ifndef thinlayer_postprocess_interface_profile_h
+#define thinlayer_postprocess_interface_profile_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/vector.h>
+
+#include <thinlayer/analysis/analysis.h>
+#include <thinlayer/elements/interface_values.h>
+
+#include <string>
+#include <vector>
+
+namespace thinlayer
+{
+  using namespace dealii;
+
+  /**
+   * The profile of a thin-layer interface: the cells of one material id,
+   * one cell thick, chained through their short sides into one or more
+   * runs, sampled at the Gauss abscissae along the layer (where the
+   * stresses live). At each sample:
+   *
+   * - position and arc length along the layer's mid-line (each run from
+   *   the end nearest the lower left, x before y);
+   * - slip and opening: the displacement on the layer's two long faces at
+   *   the sample's abscissa, differenced: the facing points that a
+   *   zero-thickness element would pair (so a layer under a uniform strain
+   *   eps shows eps d, d the offset between those points, t n where the
+   *   short sides are normal to the layer);
+   * - tractions: the stress averaged over the Gauss points across the
+   *   thickness, on the layer's plane.
+   *
+   * The tangent of each cell is its mid-line's chord, so cells are taken
+   * as straight, as gmsh makes them. In Fourier scenes the profile is
+   * taken at every station.
+   */
+  class InterfaceProfile
+  {
+  public:
+    /**
+     * The layer of material id @p material_id in @p analysis. Throws
+     * InputError (naming @p parameter_file and the entry
+     * Interfaces/Material ids) if no cell has that id or the layer is more
+     * than one cell thick.
+     */
+    InterfaceProfile(const Analysis<2>       &analysis,
+                     const types::material_id material_id,
+                     const std::string       &parameter_file);
+
+    types::material_id
+    get_material_id() const;
+
+    unsigned int
+    n_points() const;
+
+    /// The values at every sample, at station @p station.
+    std::vector<InterfaceValues>
+    evaluate(const Analysis<2> &analysis, const unsigned int station) const;
+
+    /// The values at every sample and station.
+    Profile
+    profile(const Analysis<2> &analysis) const;
+
+    /**
+     * Cell averages of slip, opening, shear and normal traction at station
+     * @p station, over all active cells (zero off the layer), for the VTU.
+     */
+    std::vector<Vector<double>>
+    cell_fields(const Analysis<2> &analysis, const unsigned int station) const;
+
+    /// The names of cell_fields()' vectors.
+    static const std::vector<std::string> cell_field_names;
+
+  private:
+    struct Sample
+    {
+      DoFHandler<2>::active_cell_iterator cell;
+      unsigned int                        run;
+      double                              arc_length;
+      Point<2>                            position;
+      Tensor<1, 2>                        tangent;
+      Tensor<1, 2>                        normal;
+      /// Unit-cell points on the +n and -n faces opposite the sample.
+      Point<2> unit_plus;
+      Point<2> unit_minus;
+      /// The Gauss points across the thickness at this abscissa.
+      std::vector<unsigned int> thickness_points;
+    };
+
+    /// The samples of one cell, entered through its short face
+    /// @p entry_face, with arc length @p start at that face; returns the
+    /// arc length at the far face.
+    double
+    add_cell_samples(const Analysis<2>                         &analysis,
+                     const DoFHandler<2>::active_cell_iterator &cell,
+                     const unsigned int                         long_direction,
+                     const unsigned int                         entry_face,
+                     const unsigned int                         run,
+                     const double                               start);
+
+    types::material_id  material_id;
+    std::vector<Sample> samples;
+  };
+} // namespace thinlayer
+
+#endif

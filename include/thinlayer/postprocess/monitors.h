@@ -1,0 +1,93 @@
+#ifndef thinlayer_postprocess_monitors_h
+#define thinlayer_postprocess_monitors_h
+
+#include <deal.II/base/index_set.h>
+
+#include <thinlayer/analysis/analysis.h>
+#include <thinlayer/parameters/parameters.h>
+
+#include <utility>
+
+namespace thinlayer
+{
+  using namespace dealii;
+
+  /**
+   * A displacement component over a boundary: length-weighted mean, and the
+   * extremes over its nodes (their spread shows how uniform it is).
+   */
+  struct DisplacementMeasure
+  {
+    double mean;
+    double min;
+    double max;
+  };
+
+  /**
+   * What the "load" and "displacement" columns of history.csv measure on an
+   * analysis, as the Monitors section asks: the load factor, a sum of
+   * reactions or a stress averaged over a material id, each times a scale;
+   * and a displacement component averaged over a boundary id, or at a
+   * point. Monitors read the body; they never change it.
+   */
+  template <int dim>
+  class Monitors
+  {
+  public:
+    /**
+     * Monitors of @p analysis, which must be set up. A displacement point
+     * outside the mesh is an InputError naming the entry of
+     * @p parameter_file.
+     */
+    Monitors(const MonitorParameters &parameters,
+             const Analysis<dim>     &analysis,
+             const std::string       &parameter_file);
+
+    /// The load measure, times its scale.
+    double
+    load() const;
+
+    /// The displacement measure, times its scale.
+    DisplacementMeasure
+    displacement() const;
+
+  private:
+    /// The integral of the load's stress component over its material id,
+    /// and the area of that material id.
+    std::pair<double, double>
+    stress_integral() const;
+
+    /**
+     * The resultant of the reactions (MonitorParameters::LoadComponent):
+     * the residual f_int - f_ext at the DoFs of the load's boundary id,
+     * after the residuals of eliminated centre nodes are handed to their
+     * masters. In a Fourier analysis a mode's nodal forces are integrals
+     * over the circle (int f T(n theta) r dtheta), so the whole body's
+     * resultants are sums over the nodes of one mode: the axial force of
+     * harmonic 0 (f_z), the force along theta = 0 of harmonic 1
+     * (f_r - f_theta), its overturning moment (z (f_r - f_theta) - r f_z),
+     * and the torque of the antisymmetric harmonic 0 (r f_theta). Each is
+     * the work of the nodal forces on the rigid motion it belongs to,
+     * which the element represents exactly.
+     */
+    double
+    reaction() const;
+
+    /// The sum over the load boundary's DoFs of component @p component of
+    /// @p forces, each times the support point's coordinate @p weight_by
+    /// (0: x or r, 1: y or z; -1: none).
+    double
+    boundary_sum(const Vector<double> &forces,
+                 const unsigned int    component,
+                 const int             weight_by = -1) const;
+
+    const MonitorParameters &parameters;
+    const Analysis<dim>     &analysis;
+    /// Per component, the DoFs on the load's boundary id and their
+    /// support points.
+    std::vector<std::vector<std::pair<types::global_dof_index, Point<dim>>>>
+      reaction_dofs;
+  };
+} // namespace thinlayer
+
+#endif

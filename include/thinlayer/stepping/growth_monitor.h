@@ -1,0 +1,54 @@
+#ifndef thinlayer_stepping_growth_monitor_h
+#define thinlayer_stepping_growth_monitor_h
+
+#include <deal.II/lac/vector.h>
+
+#include <thinlayer/analysis/mode_state.h>
+
+#include <memory>
+#include <vector>
+
+namespace thinlayer
+{
+  using namespace dealii;
+
+  /**
+   * Whether the displacement of a load step that runs to its iteration
+   * limit is still growing: the evidence of a mechanism that an iterative
+   * method gives when it creeps along one. The change of the step's
+   * displacement increment since the first iteration is measured at half
+   * the iterations and at the end: under a mechanism it grows linearly
+   * (the body loads grow without bound), so the ratio is near 2; a step
+   * that converges, however slowly, settles, and the ratio is nearer 1.
+   */
+  class GrowthMonitor
+  {
+  public:
+    /// Keep the modes' step increments after the first iteration.
+    void
+    start(const std::vector<std::unique_ptr<ModeState>> &modes);
+
+    /// After iteration @p iteration of at most @p limit: at half the
+    /// limit, measure the change.
+    void
+    iteration_done(const unsigned int                             iteration,
+                   const unsigned int                             limit,
+                   const std::vector<std::unique_ptr<ModeState>> &modes);
+
+    /// The change at the end of the step against the change at half the
+    /// limit; NaN if the step did not get that far.
+    double
+    growth_ratio(const std::vector<std::unique_ptr<ModeState>> &modes);
+
+  private:
+    /// max over the modes of max |du - du_first|.
+    double
+    change(const std::vector<std::unique_ptr<ModeState>> &modes);
+
+    std::vector<Vector<double>> first;
+    Vector<double>              work;
+    double                      change_at_half = 0;
+  };
+} // namespace thinlayer
+
+#endif

@@ -1,0 +1,169 @@
+#include <deal.II/base/exceptions.h>
+
+#include <thinlayer/app/command_line.h>
+#include <thinlayer/base/input_error.h>
+#include <thinlayer/base/interruption.h>
+#include <thinlayer/parameters/parameter_text.h>
+#include <thinlayer/parameters/parameters.h>
+#include <thinlayer/output/results_directory.h>
+#include <thinlayer/app/run.h>
+#include <thinlayer/app/sweep.h>
+
+#include <csignal>
+#include <sstream>
+
+namespace thinlayer
+{
+  namespace
+  {
+    void
+    print_usage(std::ostream &out)
+    {
+      out << "usage: thinlayer FILE.prm [-s \"Section/Entry=value\"]...\n"
+          << "       thinlayer --print-parameters\n"
+          << "       thinlayer --help\n\n"
+          << "Runs the scene described by FILE.prm (a gmsh .geo or .msh plus\n"
+          << "materials, boundary conditions and a load programme). -s\n"
+          << "overrides any entry, e.g. -s \"Mesh/Geometry "
+             "parameters=alpha=30\"\n"
+          << "or -s \"Material 2/Young's modulus=1e4\". Results go to the\n"
+          << "directory named by Output/Directory: history.csv, summary.json,\n"
+          << "fields.pvd with one VTU per load step.\n";
+    }
+
+
+    /**
+     * The parameter file and the overrides of @p arguments. Returns the
+     * exit status where the command line is done (help, the parameter
+     * list, or a bad command line: 2), or -1 to go on with the run.
+     */
+    int
+    parse_arguments(const std::vector<std::string> &arguments,
+                    std::string                    &file,
+                    std::vector<std::string>       &overrides,
+                    std::ostream                   &out,
+                    std::ostream                   &err)
+    {
+      for (unsigned int i = 0; i < arguments.size(); ++i)
+        {
+          const std::string &a = arguments[i];
+          if (a == "--help" || a == "-h")
+            {
+              print_usage(out);
+              return 0;
+            }
+          else if (a == "--print-parameters")
+            {
+              ParameterReader().print_parameters(out);
+              return 0;
+            }
+          else if (a == "-s" || a == "--set")
+            {
+              if (i + 1 == arguments.size())
+                {
+                  err << "thinlayer: " << a
+                      << " needs an argument \"Section/Entry=value\"\n";
+                  return 2;
+                }
+              overrides.push_back(arguments[++i]);
+            }
+          else if (!a.empty() && a[0] == '-')
+            {
+              err << "thinlayer: unknown option '" << a << "'\n";
+              print_usage(err);
+              return 2;
+            }
+          else if (file.empty())
+            file = a;
+          else
+            {
+              err << "thinlayer: only one parameter file, got '" << file
+                  << "' and '" << a << "'\n";
+              return 2;
+            }
+        }
+      if (file.empty())
+        {
+          print_usage(err);
+          return 2;
+        }
+      return -1;
+    }
+  } // namespace
+
+
+  int
+  run_command_line(const std::vector<std::string> &arguments,
+                   std::ostream                   &out,
+                   std::ostream                   &err)
+  {
+    std::string              file;
+    std::vector<std::string> overrides;
+    if (const int status =
+          parse_arguments(arguments, file, overrides, out, err);
+        status >= 0)
+      return status;
+
+    try
+      {
+        const ScopedInterruption interruption;
+        // A file size limit (ulimit -f) then fails the write (EFBIG), which
+        // is reported like a full disk, instead of killing the program.
+        std::signal(SIGXFSZ, SIG_IGN);
+        const Parameters parameters  = ParameterReader().read(file, overrides);
+        unsigned int     failed_runs = 0;
+        if (parameters.sweep.values.empty())
+          run_scene(parameters, out);
+        else
+          failed_runs = run_sweep(file, overrides, parameters, out);
+        out.flush();
+        if (!out)
+          {
+            err << "thinlayer: cannot write to standard output; the results "
+                   "are in Output/Directory\n";
+            return 1;
+          }
+        // 128 + the signal, as a shell reports a process it ended.
+        if (interrupted())
+          return 128 + interruption_signal();
+        if (failed_runs > 0)
+          {
+            err << "thinlayer: " << failed_runs
+                << " run(s) of the sweep ended in an error (sweep.csv, "
+                   "column error)\n";
+            return 1;
+          }
+        return 0;
+      }
+    // Messages may quote the input, which may be binary: control bytes
+    // are written as \xNN.
+    catch (const InputError &e)
+      {
+        err << "thinlayer: " << printable(e.what()) << '\n';
+        return 1;
+      }
+    catch (const Interrupted &e)
+      {
+        err << "thinlayer: " << printable(e.what()) << '\n';
+        return 128 + interruption_signal();
+      }
+    catch (const WriteError &e)
+      {
+        err << "thinlayer: " << printable(e.what())
+            << "; Output/Directory still holds the run it held before\n";
+        return 1;
+      }
+    catch (const ExceptionBase &e)
+      {
+        std::ostringstream info;
+        e.print_info(info);
+        err << "thinlayer: internal error: " << printable(info.str()) << '\n';
+        return 3;
+      }
+    catch (const std::exception &e)
+      {
+        err << "thinlayer: internal error: " << printable(e.what()) << '\n';
+        return 3;
+      }
+  }
+} // namespace thinlayer

@@ -1,0 +1,352 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <thinlayer/discretisation/boundary_data.h>
+#include <thinlayer/base/input_error.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace thinlayer
+{
+  namespace
+  {
+    /**
+     * Points of the trapezoidal rule over the circle: exact for the
+     * trigonometric polynomials of the harmonics in use (degree < 64).
+     */
+    constexpr unsigned int n_circle_points = 64;
+
+    /**
+     * A vector-valued FunctionParser from ';'-separated expressions; a
+     * single expression stands for every component.
+     */
+    std::unique_ptr<FunctionParser<3>>
+    make_function(const std::string                   &expressions,
+                  const unsigned int                   n_components,
+                  const bool                           fourier,
+                  const std::map<std::string, double> &geometry_parameters)
+    {
+      auto parts = Utilities::split_string_list(expressions, ';');
+      if (parts.size() == 1 && n_components > 1)
+        parts.assign(n_components, parts[0]);
+      auto constants  = geometry_parameters;
+      constants["pi"] = numbers::PI;
+      auto f          = std::make_unique<FunctionParser<3>>(n_components);
+      f->initialize(fourier ? "r,z,theta" : "x,y,unused_z", parts, constants);
+      return f;
+    }
+
+    bool
+    is_zero(const std::string &expressions)
+    {
+      for (const auto &e : Utilities::split_string_list(expressions, ';'))
+        if (e != "0")
+          return false;
+      return true;
+    }
+
+    /**
+     * The amplitudes of a mode of the prescribed displacement, as a
+     * function on the mesh (for interpolate_boundary_values).
+     */
+    class ModeAmplitude : public Function<2>
+    {
+    public:
+      /// As many components as the element has (2 in plane strain, 3 for
+      /// Fourier): deal.II writes that many values per point.
+      ModeAmplitude(const unsigned int n_components,
+                    const std::function<Tensor<1, 3>(const Point<2> &)> &f)
+        : Function<2>(n_components)
+        , f(f)
+      {}
+
+      double
+      value(const Point<2> &x, const unsigned int c) const override
+      {
+        return f(x)[c];
+      }
+
+    private:
+      std::function<Tensor<1, 3>(const Point<2> &)> f;
+    };
+  } // namespace
+
+
+  BoundaryData::BoundaryData(
+    const std::map<types::boundary_id, BoundaryParameters> &boundaries,
+    const std::map<std::string, double>                    &constants,
+    const Kinematics                                       &kinematics,
+    const std::string                                      &parameter_file)
+    : kinematics(kinematics)
+    , parameter_file(parameter_file)
+  {
+    const unsigned int n       = kinematics.n_components();
+    const bool         fourier = kinematics.is_fourier();
+    for (const auto &[id, b] : boundaries)
+      {
+        Condition        &c = conditions[id];
+        std::vector<bool> mask(b.constrained_components);
+        mask.resize(n, false);
+        c.constrained  = ComponentMask(mask);
+        c.displacement = make_function(b.displacement, n, fourier, constants);
+        c.traction     = make_function(b.traction, n, fourier, constants);
+        c.pressure     = make_function(b.pressure, 1, fourier, constants);
+        c.loaded       = !(is_zero(b.traction) && is_zero(b.pressure));
+        c.section      = BoundaryParameters::section(id);
+      }
+  }
+
+
+  void
+  BoundaryData::check_finite(const Vector<double> &v,
+                             const Point<2>       &x,
+                             const double          theta,
+                             const std::string    &entry) const
+  {
+    for (const double value : v)
+      if (!std::isfinite(value))
+        {
+          std::ostringstream where;
+          where.precision(6);
+          if (kinematics.is_fourier())
+            where << "r = " << x[0] << ", z = " << x[1]
+                  << ", theta = " << theta;
+          else
+            where << "x = " << x[0] << ", y = " << x[1];
+          throw InputError(parameter_file,
+                           entry,
+                           std::string("gives ") +
+                             (std::isnan(value) ? "nan"
+                              : value > 0       ? "inf"
+                                                : "-inf") +
+                             " at " + where.str() +
+                             " on the boundary; expected finite numbers");
+        }
+  }
+
+
+  double
+  BoundaryData::pressure(const Condition &c,
+                         const Point<2>  &x,
+                         const double     theta) const
+  {
+    Vector<double> v(1);
+    v[0] = c.pressure->value(Point<3>(x[0], x[1], theta));
+    check_finite(v, x, theta, c.section + "/Pressure");
+    return v[0];
+  }
+
+
+  Tensor<1, 3>
+  BoundaryData::evaluate(const FunctionParser<3> &f,
+                         const Point<2>          &x,
+                         const double             theta,
+                         const std::string       &entry) const
+  {
+    Vector<double> v(f.n_components);
+    f.vector_value(Point<3>(x[0], x[1], theta), v);
+    check_finite(v, x, theta, entry);
+    Tensor<1, 3> result;
+    if (!kinematics.is_fourier())
+      {
+        for (unsigned int c = 0; c < v.size(); ++c)
+          result[c] = v[c];
+        return result;
+      }
+    // Cartesian (x, y, z) to cylindrical (r, z, theta).
+    const double cos_t = std::cos(theta), sin_t = std::sin(theta);
+    result[0] = v[0] * cos_t + v[1] * sin_t;
+    result[1] = v[2];
+    result[2] = -v[0] * sin_t + v[1] * cos_t;
+    return result;
+  }
+
+
+  void
+  BoundaryData::make_zero_constraints(
+    const DoFHandler<2>       &dof_handler,
+    AffineConstraints<double> &constraints) const
+  {
+    const unsigned int n = kinematics.n_components();
+    for (const auto &[id, c] : conditions)
+      if (c.constrained.n_selected_components(n) > 0)
+        VectorTools::interpolate_boundary_values(dof_handler,
+                                                 id,
+                                                 Functions::ZeroFunction<2>(n),
+                                                 constraints,
+                                                 c.constrained);
+  }
+
+
+  std::map<types::global_dof_index, double>
+  BoundaryData::prescribed_values(const Mapping<2>    &mapping,
+                                  const DoFHandler<2> &dof_handler,
+                                  const unsigned int   m) const
+  {
+    const unsigned int n = kinematics.n_components();
+    // Later ids overwrite earlier ones at shared nodes: going from the
+    // highest id down makes the lowest id win, the documented rule.
+    std::map<types::global_dof_index, double>             values;
+    std::map<types::global_dof_index, types::boundary_id> set_by;
+    for (auto c = conditions.rbegin(); c != conditions.rend(); ++c)
+      {
+        if (c->second.constrained.n_selected_components(n) == 0)
+          continue;
+        std::map<types::global_dof_index, double> own;
+        const FunctionParser<3>                  &u = *c->second.displacement;
+        const std::string   entry = c->second.section + "/Displacement";
+        const ModeAmplitude amplitude(
+          kinematics.n_components(), [&](const Point<2> &x) {
+            if (!kinematics.is_fourier())
+              return evaluate(u, x, 0, entry);
+            Tensor<1, 3> a;
+            const double d = 2 * numbers::PI / n_circle_points;
+            for (unsigned int j = 0; j < n_circle_points; ++j)
+              {
+                const double       theta = j * d;
+                const Tensor<1, 3> g     = evaluate(u, x, theta, entry);
+                a[0] += g[0] * kinematics.T1_at(m, theta) * d;
+                a[1] += g[1] * kinematics.T1_at(m, theta) * d;
+                a[2] += g[2] * kinematics.T2_at(m, theta) * d;
+              }
+            const double c1 = kinematics.c1(m), c2 = kinematics.c2(m);
+            a[0] = (c1 > 0) ? a[0] / c1 : 0.;
+            a[1] = (c1 > 0) ? a[1] / c1 : 0.;
+            a[2] = (c2 > 0) ? a[2] / c2 : 0.;
+            return a;
+          });
+        VectorTools::interpolate_boundary_values(mapping,
+                                                 dof_handler,
+                                                 c->first,
+                                                 amplitude,
+                                                 own,
+                                                 c->second.constrained);
+        for (const auto &[dof, value] : own)
+          {
+            const auto earlier = values.find(dof);
+            if (earlier != values.end() &&
+                std::abs(earlier->second - value) >
+                  1e-12 * std::max(std::abs(earlier->second), std::abs(value)))
+              note_conflict(mapping, dof_handler, dof, c->first, set_by[dof]);
+            values[dof] = value;
+            set_by[dof] = c->first;
+          }
+      }
+    return values;
+  }
+
+
+  void
+  BoundaryData::assemble_load_vector(const Mapping<2>    &mapping,
+                                     const DoFHandler<2> &dof_handler,
+                                     const unsigned int   m,
+                                     Vector<double>      &load) const
+  {
+    load                                    = 0;
+    const FiniteElement<2>              &fe = dof_handler.get_fe();
+    const QGauss<1>                      quadrature(fe.degree + 2);
+    FEFaceValues<2>                      fe_face(mapping,
+                            fe,
+                            quadrature,
+                            update_values | update_normal_vectors |
+                              update_quadrature_points | update_JxW_values);
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    Vector<double>                       cell_load(fe.n_dofs_per_cell());
+
+    // Angles and trigonometric weights of the circle integral (a single
+    // angle, weight 1, in plane strain).
+    std::vector<double> thetas = {0}, weights = {1};
+    if (kinematics.is_fourier())
+      {
+        thetas.resize(n_circle_points);
+        weights.assign(n_circle_points, 2 * numbers::PI / n_circle_points);
+        for (unsigned int j = 0; j < n_circle_points; ++j)
+          thetas[j] = j * 2 * numbers::PI / n_circle_points;
+      }
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const auto f : cell->face_indices())
+        {
+          if (!cell->face(f)->at_boundary())
+            continue;
+          const auto c = conditions.find(cell->face(f)->boundary_id());
+          if (c == conditions.end() || !c->second.loaded)
+            continue;
+          fe_face.reinit(cell, f);
+          cell_load = 0;
+          for (const unsigned int q : fe_face.quadrature_point_indices())
+            {
+              const Point<2> &x  = fe_face.quadrature_point(q);
+              const double    dA = kinematics.area_factor(x) * fe_face.JxW(q);
+              // The mode's share of the traction, component by component.
+              Tensor<1, 3> t;
+              for (unsigned int j = 0; j < thetas.size(); ++j)
+                {
+                  Tensor<1, 3> g = evaluate(*c->second.traction,
+                                            x,
+                                            thetas[j],
+                                            c->second.section + "/Traction");
+                  const double p = pressure(c->second, x, thetas[j]);
+                  for (unsigned int d = 0; d < 2; ++d)
+                    g[d] -= p * fe_face.normal_vector(q)[d];
+                  t[0] += g[0] * kinematics.T1_at(m, thetas[j]) * weights[j];
+                  t[1] += g[1] * kinematics.T1_at(m, thetas[j]) * weights[j];
+                  t[2] += g[2] * kinematics.T2_at(m, thetas[j]) * weights[j];
+                }
+              for (const unsigned int i : fe_face.dof_indices())
+                {
+                  const unsigned int k = fe.system_to_component_index(i).first;
+                  cell_load[i] += t[k] * fe_face.shape_value(i, q) * dA;
+                }
+            }
+          cell->get_dof_indices(dofs);
+          for (const unsigned int i : fe_face.dof_indices())
+            load[dofs[i]] += cell_load[i];
+        }
+  }
+
+
+  void
+  BoundaryData::note_conflict(const Mapping<2>             &mapping,
+                              const DoFHandler<2>          &dof_handler,
+                              const types::global_dof_index dof,
+                              const types::boundary_id      winner,
+                              const types::boundary_id      loser) const
+  {
+    // One warning per pair of ids, naming the first node where they
+    // disagree.
+    const std::string ids = "Boundary " + std::to_string(winner) +
+                            " and Boundary " + std::to_string(loser);
+    for (const auto &w : warnings)
+      if (w.find(ids) != std::string::npos)
+        return;
+    std::vector<Point<2>> points(dof_handler.n_dofs());
+    DoFTools::map_dofs_to_support_points(mapping, dof_handler, points);
+    std::ostringstream where;
+    where << points[dof][0] << ", " << points[dof][1];
+    warnings.push_back("warning: " + ids +
+                       " prescribe different displacements at the node (" +
+                       where.str() + "); the lower id's value is used");
+  }
+
+
+  const std::vector<std::string> &
+  BoundaryData::get_warnings() const
+  {
+    return warnings;
+  }
+
+
+  bool
+  BoundaryData::has_constraints() const
+  {
+    for (const auto &[id, c] : conditions)
+      if (c.constrained.n_selected_components(kinematics.n_components()) > 0)
+        return true;
+    return false;
+  }
+} // namespace thinlayer

@@ -1,0 +1,123 @@
+#include <thinlayer/elements/interface_values.h>
+#include <thinlayer/base/text_format.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace thinlayer
+{
+  std::string
+  profile_csv(const Profile &profile, const Kinematics &kinematics)
+  {
+    const std::vector<ProfileSample> &samples = profile.samples;
+    const auto                        number  = text_format::csv_number;
+    std::ostringstream                out;
+    out << "run,arc_length,x,y,angle,slip,slip_out_of_plane,opening,"
+           "slip_increment,opening_increment,shear_traction,"
+           "shear_traction_out_of_plane,normal_traction,yield_ratio,"
+           "plastic\n";
+    for (unsigned int station = 0; station < kinematics.n_stations(); ++station)
+      {
+        const double angle =
+          kinematics.station_angle(station) * 180 / numbers::PI;
+        const std::vector<InterfaceValues> &at_station =
+          profile.stations[station];
+        for (unsigned int k = 0; k < samples.size(); ++k)
+          {
+            const ProfileSample   &s = samples[k];
+            const InterfaceValues &v = at_station[k];
+            out << s.run << ',' << number(s.arc_length) << ','
+                << number(s.position[0]) << ',' << number(s.position[1]) << ','
+                << number(angle) << ',' << number(v.slip) << ','
+                << number(v.slip_out_of_plane) << ',' << number(v.opening)
+                << ',' << number(v.slip_increment) << ','
+                << number(v.opening_increment) << ','
+                << number(v.shear_traction) << ','
+                << number(v.shear_traction_out_of_plane) << ','
+                << number(v.normal_traction) << ',' << number(v.yield_ratio)
+                << ',' << (v.plastic ? 1 : 0) << '\n';
+          }
+      }
+    return out.str();
+  }
+
+
+  std::string
+  profile_vtu(const Profile &profile, const Kinematics &kinematics)
+  {
+    const std::vector<ProfileSample> &samples = profile.samples;
+    std::ostringstream                out;
+    out << std::setprecision(10);
+    // The runs, each a polyline through its samples in order.
+    std::vector<std::vector<unsigned int>> runs;
+    for (unsigned int k = 0; k < samples.size(); ++k)
+      {
+        if (samples[k].run >= runs.size())
+          runs.resize(samples[k].run + 1);
+        runs[samples[k].run].push_back(k);
+      }
+    out << "<?xml version=\"1.0\"?>\n"
+        << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" "
+           "byte_order=\"LittleEndian\">\n<UnstructuredGrid>\n"
+        << "<Piece NumberOfPoints=\"" << samples.size() << "\" NumberOfCells=\""
+        << runs.size() << "\">\n"
+        << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" "
+           "format=\"ascii\">\n";
+    for (const ProfileSample &s : samples)
+      out << s.position[0] << ' ' << s.position[1] << " 0\n";
+    out << "</DataArray>\n</Points>\n<Cells>\n"
+        << "<DataArray type=\"Int64\" Name=\"connectivity\" "
+           "format=\"ascii\">\n";
+    for (const auto &run : runs)
+      for (const unsigned int k : run)
+        out << k << '\n';
+    out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" "
+           "format=\"ascii\">\n";
+    std::size_t offset = 0;
+    for (const auto &run : runs)
+      out << (offset += run.size()) << '\n';
+    out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" "
+           "format=\"ascii\">\n";
+    for (std::size_t r = 0; r < runs.size(); ++r)
+      out << "4\n"; // VTK_POLY_LINE
+    out << "</DataArray>\n</Cells>\n<PointData>\n";
+
+    using Field = double                              InterfaceValues::*;
+    const std::vector<std::pair<const char *, Field>> fields = {
+      {"slip", &InterfaceValues::slip},
+      {"slip_out_of_plane", &InterfaceValues::slip_out_of_plane},
+      {"opening", &InterfaceValues::opening},
+      {"slip_increment", &InterfaceValues::slip_increment},
+      {"opening_increment", &InterfaceValues::opening_increment},
+      {"shear_traction", &InterfaceValues::shear_traction},
+      {"shear_traction_out_of_plane",
+       &InterfaceValues::shear_traction_out_of_plane},
+      {"normal_traction", &InterfaceValues::normal_traction},
+      {"yield_ratio", &InterfaceValues::yield_ratio}};
+    for (unsigned int station = 0; station < kinematics.n_stations(); ++station)
+      {
+        const std::string suffix =
+          kinematics.is_fourier()
+            ? "_" + std::to_string(static_cast<int>(std::round(
+                      kinematics.station_angle(station) * 180 / numbers::PI)))
+            : std::string();
+        const auto &values = profile.stations[station];
+        for (const auto &[name, field] : fields)
+          {
+            out << "<DataArray type=\"Float64\" Name=\"" << name << suffix
+                << "\" format=\"ascii\">\n";
+            for (const InterfaceValues &v : values)
+              out << (std::isfinite(v.*field) ? v.*field : 0.) << '\n';
+            out << "</DataArray>\n";
+          }
+        out << "<DataArray type=\"UInt8\" Name=\"plastic" << suffix
+            << "\" format=\"ascii\">\n";
+        for (const InterfaceValues &v : values)
+          out << (v.plastic ? 1 : 0) << '\n';
+        out << "</DataArray>\n";
+      }
+    out << "</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+    return out.str();
+  }
+} // namespace thinlayer

@@ -1,0 +1,596 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <thinlayer/base/input_error.h>
+#include <thinlayer/elements/zero_thickness_elements.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <sstream>
+
+namespace thinlayer
+{
+
+
+  void
+  ZeroThicknessElements::reinit(
+    const DoFHandler<2>                                          &dof_handler,
+    const Mapping<2>                                             &mapping,
+    const Kinematics                                             &kinematics,
+    const std::map<types::boundary_id, InterfaceCurveParameters> &curves,
+    const std::map<types::material_id, MaterialParameters>       &materials,
+    const std::string &parameter_file)
+  {
+    this->kinematics = &kinematics;
+    laws.clear();
+    elements.clear();
+    points.clear();
+    std::set<types::boundary_id> ids;
+    for (const auto &[id, parameters] : curves)
+      {
+        laws[id] = std::make_unique<InterfaceLaw>(parameters);
+        ids.insert(id);
+      }
+    if (!ids.empty())
+      for (const FacingSides &pair :
+           pair_facing_sides(dof_handler, ids, parameter_file))
+        {
+          check_stiffness(pair,
+                          curves.at(pair.curve),
+                          materials,
+                          parameter_file);
+          add_element(pair, curves.at(pair.curve), dof_handler, mapping);
+        }
+
+    coupled_matrices.clear();
+    for (Element &element : elements)
+      {
+        element.coupled_dofs.clear();
+        for (unsigned int m = 0; m < kinematics.n_modes(); ++m)
+          for (const auto dof : element.dofs)
+            element.coupled_dofs.push_back(m * dof_handler.n_dofs() + dof);
+        coupled_matrices.emplace_back(element.coupled_dofs.size(),
+                                      element.coupled_dofs.size());
+      }
+
+    states.assign(points.size() * kinematics.n_stations(),
+                  InterfacePointState());
+    tangents.assign(states.size(), Tensor<2, 3>());
+    for (unsigned int p = 0; p < points.size(); ++p)
+      for (unsigned int s = 0; s < kinematics.n_stations(); ++s)
+        tangents[p * kinematics.n_stations() + s] =
+          elements[points[p].element].law->elasticity();
+  }
+
+
+  void
+  ZeroThicknessElements::check_stiffness(
+    const FacingSides                                      &pair,
+    const InterfaceCurveParameters                         &curve,
+    const std::map<types::material_id, MaterialParameters> &materials,
+    const std::string                                      &parameter_file)
+  {
+    const double h = pair.entry.distance(pair.exit);
+    const double E =
+      std::min(materials.at(pair.plus_cell->material_id()).youngs_modulus,
+               materials.at(pair.minus_cell->material_id()).youngs_modulus);
+    const double limit = max_stiffness_ratio * E / h;
+    for (const auto &[entry, stiffness] :
+         {std::pair<const char *, double>{"Normal stiffness",
+                                          curve.normal_stiffness},
+          {"Shear stiffness", curve.shear_stiffness}})
+      if (stiffness > limit)
+        {
+          std::ostringstream message;
+          message << "expected at most " << max_stiffness_ratio
+                  << " E / h = " << limit << " for the element at ("
+                  << 0.5 * (pair.entry + pair.exit) << ") (E = " << E
+                  << " of the cells beside it, side h = " << h << "), got "
+                  << stiffness
+                  << ": a stiffer interface adds no accuracy, and round-off "
+                     "takes its tractions";
+          throw InputError(parameter_file,
+                           InterfaceCurveParameters::section(pair.curve) + "/" +
+                             entry,
+                           message.str());
+        }
+  }
+
+
+  void
+  ZeroThicknessElements::add_element(const FacingSides              &pair,
+                                     const InterfaceCurveParameters &curve,
+                                     const DoFHandler<2> &dof_handler,
+                                     const Mapping<2>    &mapping)
+  {
+    const FiniteElement<2>              &fe = dof_handler.get_fe();
+    std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
+    const Tensor<1, 2>                   chord   = pair.exit - pair.entry;
+    const double                         length  = chord.norm();
+    const Tensor<1, 2>                   tangent = chord / length;
+    const Tensor<1, 2>                   normal({-tangent[1], tangent[0]});
+    const Quadrature<1>                  rule =
+      curve.integration == InterfaceCurveParameters::Integration::lobatto
+                         ? Quadrature<1>(QGaussLobatto<1>(3))
+                         : Quadrature<1>(QGauss<1>(curve.points));
+
+    Element element{laws.at(pair.curve).get(), {}};
+    std::map<types::global_dof_index, unsigned int> local;
+    for (unsigned int q = 0; q < rule.size(); ++q)
+      {
+        IntegrationPoint point;
+        point.element    = elements.size();
+        point.curve      = pair.curve;
+        point.run        = pair.run;
+        point.position   = pair.entry + rule.point(q)[0] * chord;
+        point.arc_length = pair.arc_length + rule.point(q)[0] * length;
+        point.tangent    = tangent;
+        point.normal     = normal;
+        point.weight =
+          rule.weight(q) * length * kinematics->area_factor(point.position);
+        // The jump: shape values on the plus side less those on the minus
+        // side, at the point's place in each cell.
+        for (const auto &[cell, sign] :
+             {std::pair<DoFHandler<2>::active_cell_iterator, double>{
+                pair.plus_cell, 1.},
+              {pair.minus_cell, -1.}})
+          {
+            const dealii::Point<2> unit =
+              mapping.transform_real_to_unit_cell(cell, point.position);
+            cell->get_dof_indices(cell_dofs);
+            for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+              {
+                const double value = fe.shape_value(i, unit);
+                if (std::abs(value) < 1e-12)
+                  continue;
+                const auto [it, inserted] =
+                  local.emplace(cell_dofs[i], element.dofs.size());
+                if (inserted)
+                  element.dofs.push_back(cell_dofs[i]);
+                point.entries.push_back({it->second,
+                                         fe.system_to_component_index(i).first,
+                                         sign * value});
+              }
+          }
+        points.push_back(point);
+      }
+    elements.push_back(element);
+  }
+
+
+  bool
+  ZeroThicknessElements::empty() const
+  {
+    return elements.empty();
+  }
+
+
+  Tensor<1, 3>
+  ZeroThicknessElements::local_jump(
+    const IntegrationPoint                        &point,
+    const unsigned int                             s,
+    const std::vector<std::unique_ptr<ModeState>> &modes,
+    Vector<double> ModeState::*const vector) const
+  {
+    const Element &element = elements[point.element];
+    Tensor<1, 3>   jump; // (x, y, theta) summed over the modes
+    for (unsigned int m = 0; m < modes.size(); ++m)
+      {
+        const Vector<double> &v  = (*modes[m]).*vector;
+        const double          t1 = kinematics->T1(m, s);
+        const double          t2 = kinematics->T2(m, s);
+        for (const Entry &e : point.entries)
+          jump[e.component] += (e.component < 2 ? t1 : t2) * e.value *
+                               v[element.dofs[e.local_dof]];
+      }
+    return Tensor<1, 3>(
+      {jump[0] * point.tangent[0] + jump[1] * point.tangent[1],
+       jump[0] * point.normal[0] + jump[1] * point.normal[1],
+       jump[2]});
+  }
+
+
+  void
+  ZeroThicknessElements::add_forces(
+    const IntegrationPoint                        &point,
+    const unsigned int                             s,
+    const Tensor<1, 3>                            &traction,
+    const std::vector<std::unique_ptr<ModeState>> &modes,
+    Vector<double> ModeState::*const target) const
+  {
+    const Element &element = elements[point.element];
+    const double   weight  = kinematics->station_weight(s) * point.weight;
+    // The traction in (x, y, theta).
+    const double global[3] = {traction[0] * point.tangent[0] +
+                                traction[1] * point.normal[0],
+                              traction[0] * point.tangent[1] +
+                                traction[1] * point.normal[1],
+                              traction[2]};
+    for (unsigned int m = 0; m < modes.size(); ++m)
+      {
+        Vector<double> &v  = (*modes[m]).*target;
+        const double    t1 = kinematics->T1(m, s);
+        const double    t2 = kinematics->T2(m, s);
+        for (const Entry &e : point.entries)
+          v[element.dofs[e.local_dof]] += weight * (e.component < 2 ? t1 : t2) *
+                                          e.value * global[e.component];
+      }
+  }
+
+
+  void
+  ZeroThicknessElements::jump_operator(const IntegrationPoint &point,
+                                       const unsigned int      s,
+                                       FullMatrix<double>     &G) const
+  {
+    const Element     &element = elements[point.element];
+    const unsigned int n       = element.dofs.size();
+    if (G.m() != 3 || G.n() != kinematics->n_modes() * n)
+      G.reinit(3, kinematics->n_modes() * n);
+    else
+      G = 0;
+    for (unsigned int m = 0; m < kinematics->n_modes(); ++m)
+      {
+        const double t1 = kinematics->T1(m, s), t2 = kinematics->T2(m, s);
+        for (const Entry &e : point.entries)
+          {
+            const unsigned int column = m * n + e.local_dof;
+            if (e.component < 2)
+              {
+                G(0, column) += t1 * e.value * point.tangent[e.component];
+                G(1, column) += t1 * e.value * point.normal[e.component];
+              }
+            else
+              G(2, column) += t2 * e.value;
+          }
+      }
+  }
+
+
+  void
+  ZeroThicknessElements::add_sparsity(
+    DynamicSparsityPattern          &dsp,
+    const AffineConstraints<double> &constraints) const
+  {
+    for (const Element &element : elements)
+      constraints.add_entries_local_to_global(element.dofs,
+                                              dsp,
+                                              /*keep_constrained=*/true);
+  }
+
+
+  void
+  ZeroThicknessElements::assemble_elastic(
+    const unsigned int               m,
+    SparseMatrix<double>            &stiffness,
+    SparseMatrix<double>            &condensed,
+    const AffineConstraints<double> &constraints) const
+  {
+    // K_m = int (c1 G1^T K G1 + c2 G2^T K G2) w: the in-plane components
+    // with T1, the out-of-plane one with T2, integrated exactly over the
+    // circle (as the cells' stiffness), so the harmonics decouple.
+    std::vector<FullMatrix<double>> matrices(elements.size());
+    for (unsigned int k = 0; k < elements.size(); ++k)
+      matrices[k].reinit(elements[k].dofs.size(), elements[k].dofs.size());
+    for (const IntegrationPoint &point : points)
+      {
+        const Element     &element = elements[point.element];
+        const unsigned int n       = element.dofs.size();
+        const Tensor<2, 3> K       = element.law->elasticity();
+        FullMatrix<double> G(3, n);
+        for (const Entry &e : point.entries)
+          if (e.component < 2)
+            {
+              G(0, e.local_dof) += e.value * point.tangent[e.component];
+              G(1, e.local_dof) += e.value * point.normal[e.component];
+            }
+          else
+            G(2, e.local_dof) += e.value;
+        const double        c[3] = {kinematics->c1(m),
+                                    kinematics->c1(m),
+                                    kinematics->c2(m)};
+        FullMatrix<double> &A    = matrices[point.element];
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n; ++j)
+            for (unsigned int a = 0; a < 3; ++a)
+              A(i, j) += point.weight * c[a] * G(a, i) * K[a][a] * G(a, j);
+      }
+    for (unsigned int k = 0; k < elements.size(); ++k)
+      {
+        stiffness.add(elements[k].dofs, matrices[k]);
+        constraints.distribute_local_to_global(matrices[k],
+                                               elements[k].dofs,
+                                               condensed);
+      }
+  }
+
+
+  template <typename Rule>
+  unsigned int
+  ZeroThicknessElements::for_each_point(
+    std::vector<std::unique_ptr<ModeState>> &modes,
+    const Rule                              &rule)
+  {
+    const unsigned int n_stations = kinematics->n_stations();
+    unsigned int       n_yielding = 0;
+    for (unsigned int p = 0; p < points.size(); ++p)
+      for (unsigned int s = 0; s < n_stations; ++s)
+        n_yielding +=
+          rule(points[p],
+               s,
+               *elements[points[p].element].law,
+               states[p * n_stations + s],
+               local_jump(points[p], s, modes, &ModeState::step_increment),
+               p * n_stations + s);
+    return n_yielding;
+  }
+
+
+  unsigned int
+  ZeroThicknessElements::viscoplastic_update(
+    std::vector<std::unique_ptr<ModeState>> &modes)
+  {
+    // The paper's rule: the traction of the step's jump less its
+    // viscoplastic jump; where F > 0, a viscoplastic jump increment
+    // dt F dQ/dt whose K-projection is a body load.
+    return for_each_point(modes,
+                          [&](const IntegrationPoint &point,
+                              const unsigned int      s,
+                              const InterfaceLaw     &law,
+                              InterfacePointState    &state,
+                              const Tensor<1, 3>     &jump,
+                              const unsigned int /*point_station*/) {
+                            state.traction = state.converged_traction +
+                                             law.elastic_traction(
+                                               jump - state.step_plastic_jump);
+                            state.pending_plastic_jump = 0;
+                            state.yielding             = false;
+                            if (!law.can_yield())
+                              return 0u;
+                            const double F = law.yield_function(state.traction);
+                            if (F <= 0)
+                              return 0u;
+                            state.yielding = true;
+                            const Tensor<1, 3> plastic =
+                              (law.viscoplastic_time_step() * F) *
+                              law.flow_direction(state.traction);
+                            state.step_plastic_jump += plastic;
+                            state.pending_plastic_jump = plastic;
+                            add_forces(point,
+                                       s,
+                                       law.elastic_traction(plastic),
+                                       modes,
+                                       &ModeState::body_load_change);
+                            return 1u;
+                          });
+  }
+
+
+  unsigned int
+  ZeroThicknessElements::return_mapping_update(
+    std::vector<std::unique_ptr<ModeState>> &modes,
+    const bool                               with_tangents)
+  {
+    // The trial traction returned to the admissible set: the traction
+    // gives the internal forces, the excess a body load.
+    return for_each_point(
+      modes,
+      [&](const IntegrationPoint &point,
+          const unsigned int      s,
+          const InterfaceLaw     &law,
+          InterfacePointState    &state,
+          const Tensor<1, 3>     &jump,
+          const unsigned int      point_station) {
+        const Tensor<1, 3> trial =
+          state.converged_traction + law.elastic_traction(jump);
+        const InterfaceReturnMapping r =
+          law.return_mapping(trial, with_tangents);
+        state.traction = r.traction;
+        state.yielding = (r.region != InterfaceReturn::elastic);
+        if (with_tangents)
+          tangents[point_station] = r.tangent;
+        state.step_plastic_jump = law.compliance() * (trial - r.traction);
+        if (state.yielding)
+          add_forces(
+            point, s, trial - r.traction, modes, &ModeState::body_loads);
+        add_forces(
+          point, s, state.traction, modes, &ModeState::internal_forces);
+        return state.yielding ? 1u : 0u;
+      });
+  }
+
+
+  void
+  ZeroThicknessElements::add_internal_forces(
+    std::vector<std::unique_ptr<ModeState>> &modes) const
+  {
+    const unsigned int n_stations = kinematics->n_stations();
+    for (unsigned int p = 0; p < points.size(); ++p)
+      for (unsigned int s = 0; s < n_stations; ++s)
+        add_forces(points[p],
+                   s,
+                   states[p * n_stations + s].traction,
+                   modes,
+                   &ModeState::internal_forces);
+  }
+
+
+  void
+  ZeroThicknessElements::accept()
+  {
+    for (InterfacePointState &state : states)
+      {
+        state.converged_traction = state.traction;
+        state.plastic_jump +=
+          state.step_plastic_jump - state.pending_plastic_jump;
+        state.step_plastic_jump    = 0;
+        state.pending_plastic_jump = 0;
+      }
+  }
+
+
+  void
+  ZeroThicknessElements::reject()
+  {
+    for (InterfacePointState &state : states)
+      {
+        state.traction             = state.converged_traction;
+        state.step_plastic_jump    = 0;
+        state.pending_plastic_jump = 0;
+      }
+  }
+
+
+  double
+  ZeroThicknessElements::max_yield_ratio() const
+  {
+    double             ratio      = std::numeric_limits<double>::quiet_NaN();
+    const unsigned int n_stations = kinematics ? kinematics->n_stations() : 1;
+    for (unsigned int p = 0; p < points.size(); ++p)
+      {
+        const InterfaceLaw &law = *elements[points[p].element].law;
+        if (law.can_yield())
+          for (unsigned int s = 0; s < n_stations; ++s)
+            {
+              const double r =
+                law.yield_ratio(states[p * n_stations + s].traction);
+              ratio = std::isnan(ratio) ? r : std::max(ratio, r);
+            }
+      }
+    return ratio;
+  }
+
+
+  bool
+  ZeroThicknessElements::all_finite() const
+  {
+    const unsigned int n_stations = kinematics ? kinematics->n_stations() : 1;
+    for (unsigned int p = 0; p < points.size(); ++p)
+      {
+        const InterfaceLaw &law = *elements[points[p].element].law;
+        for (unsigned int s = 0; s < n_stations; ++s)
+          {
+            const Tensor<1, 3> &t = states[p * n_stations + s].traction;
+            if (!std::isfinite(t[0]) || !std::isfinite(t[1]) ||
+                !std::isfinite(t[2]) ||
+                (law.can_yield() && !std::isfinite(law.yield_ratio(t))))
+              return false;
+          }
+      }
+    return true;
+  }
+
+
+  bool
+  ZeroThicknessElements::all_associated() const
+  {
+    for (const auto &[id, law] : laws)
+      if (!law->is_associated())
+        return false;
+    return true;
+  }
+
+
+  void
+  ZeroThicknessElements::add_coupled_sparsity(
+    DynamicSparsityPattern          &dsp,
+    const AffineConstraints<double> &coupled_constraints) const
+  {
+    for (const Element &element : elements)
+      coupled_constraints.add_entries_local_to_global(element.coupled_dofs,
+                                                      dsp,
+                                                      true);
+  }
+
+
+  void
+  ZeroThicknessElements::add_coupled_tangent(
+    SparseMatrix<double>            &tangent,
+    const AffineConstraints<double> &coupled_constraints) const
+  {
+    const unsigned int n_stations = kinematics->n_stations();
+    for (auto &matrix : coupled_matrices)
+      matrix = 0;
+    FullMatrix<double> &G = jump_scratch;
+    for (unsigned int p = 0; p < points.size(); ++p)
+      for (unsigned int s = 0; s < n_stations; ++s)
+        {
+          jump_operator(points[p], s, G);
+          const Tensor<2, 3> &C = tangents[p * n_stations + s];
+          const double        weight =
+            kinematics->station_weight(s) * points[p].weight;
+          FullMatrix<double> &A = coupled_matrices[points[p].element];
+          for (unsigned int i = 0; i < G.n(); ++i)
+            for (unsigned int a = 0; a < 3; ++a)
+              if (G(a, i) != 0)
+                for (unsigned int b = 0; b < 3; ++b)
+                  if (C[a][b] != 0)
+                    for (unsigned int j = 0; j < G.n(); ++j)
+                      A(i, j) += weight * G(a, i) * C[a][b] * G(b, j);
+        }
+    for (unsigned int k = 0; k < elements.size(); ++k)
+      coupled_constraints.distribute_local_to_global(coupled_matrices[k],
+                                                     elements[k].coupled_dofs,
+                                                     tangent);
+  }
+
+
+  std::vector<types::boundary_id>
+  ZeroThicknessElements::curve_ids() const
+  {
+    std::vector<types::boundary_id> ids;
+    for (const auto &[id, law] : laws)
+      ids.push_back(id);
+    return ids;
+  }
+
+
+  Profile
+  ZeroThicknessElements::profile(
+    const types::boundary_id                       curve,
+    const std::vector<std::unique_ptr<ModeState>> &modes,
+    const bool                                     pending) const
+  {
+    const unsigned int        n_stations = kinematics->n_stations();
+    Profile                   result;
+    std::vector<unsigned int> indices;
+    for (unsigned int p = 0; p < points.size(); ++p)
+      if (points[p].curve == curve)
+        {
+          result.samples.push_back(
+            {points[p].run, points[p].arc_length, points[p].position});
+          indices.push_back(p);
+        }
+    for (unsigned int s = 0; s < n_stations; ++s)
+      {
+        std::vector<InterfaceValues> &values = result.stations.emplace_back();
+        for (const unsigned int p : indices)
+          {
+            const InterfaceLaw        &law   = *elements[points[p].element].law;
+            const InterfacePointState &state = states[p * n_stations + s];
+            const Tensor<1, 3>         djump =
+              local_jump(points[p], s, modes, &ModeState::step_increment);
+            // The state: the accepted solution, plus the pending step.
+            const Tensor<1, 3> jump =
+              local_jump(points[p], s, modes, &ModeState::solution) +
+              (pending ? djump : Tensor<1, 3>());
+            InterfaceValues v;
+            v.slip                        = jump[0];
+            v.opening                     = jump[1];
+            v.slip_out_of_plane           = jump[2];
+            v.slip_increment              = djump[0];
+            v.opening_increment           = djump[1];
+            v.shear_traction              = state.traction[0];
+            v.normal_traction             = state.traction[1];
+            v.shear_traction_out_of_plane = state.traction[2];
+            v.yield_ratio                 = law.can_yield()
+                                              ? law.yield_ratio(state.traction)
+                                              : std::numeric_limits<double>::quiet_NaN();
+            v.plastic                     = state.yielding;
+            values.push_back(v);
+          }
+      }
+    return result;
+  }
+} // namespace thinlayer

@@ -1,0 +1,440 @@
+#include <deal.II/grid/grid_in.h>
+
+#include <thinlayer/base/file_utilities.h>
+#include <thinlayer/mesh/gmsh_process.h>
+#include <thinlayer/base/input_error.h>
+#include <thinlayer/mesh/mesh_splitting.h>
+#include <thinlayer/mesh/scene.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <set>
+#include <sstream>
+
+namespace thinlayer
+{
+  namespace
+  {
+    bool
+    is_identifier_char(const char c)
+    {
+      return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+    }
+
+    /**
+     * The text of a .geo with the files it includes, to check that the
+     * geometry parameters set from the parameter file exist. Scanned by
+     * hand: a regular expression recurses over long lines.
+     */
+    std::string
+    geometry_text(const std::string &file, const unsigned int depth = 0)
+    {
+      std::string       text = read_file(file);
+      const std::string directory =
+        std::filesystem::path(file).parent_path().string();
+      std::string included;
+      for (std::size_t at = text.find("Include");
+           at != std::string::npos && depth < 8;
+           at = text.find("Include", at + 7))
+        {
+          std::size_t open = at + 7;
+          while (open < text.size() &&
+                 std::isspace(static_cast<unsigned char>(text[open])))
+            ++open;
+          if (open >= text.size() || text[open] != '"')
+            continue;
+          const std::size_t close = text.find('"', open + 1);
+          if (close == std::string::npos)
+            break;
+          included += geometry_text((directory.empty() ? "" : directory + "/") +
+                                      text.substr(open + 1, close - open - 1),
+                                    depth + 1);
+        }
+      return text + included;
+    }
+
+    /// Whether @p name stands in @p text as a whole word.
+    bool
+    contains_word(const std::string &text, const std::string &name)
+    {
+      for (std::size_t at = text.find(name); at != std::string::npos;
+           at             = text.find(name, at + 1))
+        if ((at == 0 || !is_identifier_char(text[at - 1])) &&
+            (at + name.size() == text.size() ||
+             !is_identifier_char(text[at + name.size()])))
+          return true;
+      return false;
+    }
+
+    /**
+     * Mesh a .geo with the gmsh program, setting its DefineConstant[]
+     * parameters with -setnumber. Returns the mesh in gmsh's 2.2 format.
+     */
+    std::string
+    mesh_geometry(const Parameters &p, std::ostream &progress)
+    {
+      const std::string geo = geometry_text(p.mesh.file);
+      for (const auto &[name, value] : p.mesh.geometry_parameters)
+        if (!contains_word(geo, name))
+          throw InputError(p.parameter_file,
+                           "Mesh/Geometry parameters",
+                           "'" + name + "' is not a parameter of " +
+                             p.mesh.file);
+
+      return run_gmsh({p.mesh.file,
+                       p.mesh.geometry_parameters,
+                       p.mesh.max_cells,
+                       p.parameter_file},
+                      progress);
+    }
+
+    /**
+     * A quadrilateral of the gmsh text @p msh (format 2 or 4) that names
+     * the same node twice among its corners: deal.II cannot build such a
+     * cell (its debug library stops on it, its release library goes on
+     * with a cell of zero area), so it is found here first. Returns a
+     * description of the first, or an empty string.
+     */
+    std::string
+    repeated_corner(const std::string &msh)
+    {
+      std::istringstream in(msh);
+      std::string        line;
+      double             version = 2;
+      while (std::getline(in, line) && line.rfind("$Elements", 0) != 0)
+        if (line.rfind("$MeshFormat", 0) == 0)
+          in >> version;
+      // gmsh element types of quadrilaterals: 4, 9 and 8 nodes.
+      const auto is_quad = [](const int type) {
+        return type == 3 || type == 10 || type == 16;
+      };
+      // The first repeated corner among the next n element lines; their
+      // type from the line (format 2: "id type n_tags tags... nodes") or,
+      // given, for the whole block (format 4: "id nodes").
+      const auto scan = [&](const long n, const int block_type) {
+        for (long k = 0; k < n && std::getline(in, line); ++k)
+          {
+            std::istringstream fields(line);
+            int                element, type = block_type, n_tags = 0, tag;
+            fields >> element;
+            if (block_type < 0)
+              fields >> type >> n_tags;
+            for (int t = 0; t < n_tags; ++t)
+              fields >> tag;
+            if (!is_quad(type))
+              continue;
+            std::vector<long> corners(4);
+            for (auto &c : corners)
+              fields >> c;
+            for (unsigned int i = 0; i < 4; ++i)
+              for (unsigned int j = i + 1; j < 4; ++j)
+                if (corners[i] == corners[j])
+                  return "element " + std::to_string(element) +
+                         " (gmsh's numbering) names node " +
+                         std::to_string(corners[i]) +
+                         " twice among its corners";
+          }
+        return std::string();
+      };
+      if (version < 4)
+        {
+          long n = 0;
+          in >> n;
+          std::getline(in, line);
+          return scan(n, -1);
+        }
+      long n_blocks = 0, n_elements, min_tag, max_tag;
+      in >> n_blocks >> n_elements >> min_tag >> max_tag;
+      for (long b = 0; b < n_blocks; ++b)
+        {
+          int  entity_dim, entity, type;
+          long n = 0;
+          in >> entity_dim >> entity >> type >> n;
+          std::getline(in, line);
+          if (const std::string found = scan(n, type); !found.empty())
+            return found;
+        }
+      return "";
+    }
+
+
+    /**
+     * Every cell a convex quadrilateral of a size the arithmetic can carry.
+     * For a bilinear cell the Jacobian is positive everywhere exactly when
+     * it is positive at the four corners, where it is the cross product of
+     * the two edges that meet there: a repeated vertex, a bow-tie, a
+     * re-entrant corner or a cell of zero area shows as a corner whose
+     * product is not positive. A cell whose corner products are below
+     * 1e-12 of the mesh's extent squared (a thin layer of aspect ratio
+     * 10^6 is still far above) turns the stiffness into rounding error.
+     */
+    void
+    check_cell_shapes(const Triangulation<2> &tria, const std::string &file)
+    {
+      Point<2> low = tria.get_vertices()[0], high = low;
+      for (const auto &v : tria.get_vertices())
+        for (unsigned int d = 0; d < 2; ++d)
+          {
+            low[d]  = std::min(low[d], v[d]);
+            high[d] = std::max(high[d], v[d]);
+          }
+      const double extent = (high - low).norm_square();
+      for (const auto &cell : tria.active_cell_iterators())
+        {
+          // deal.II numbers a quadrilateral's vertices lexicographically;
+          // 0, 1, 3, 2 goes round it anticlockwise.
+          const Point<2> v[4]       = {cell->vertex(0),
+                                       cell->vertex(1),
+                                       cell->vertex(3),
+                                       cell->vertex(2)};
+          double         smallest   = std::numeric_limits<double>::max();
+          int            coincident = -1;
+          double         area       = 0;
+          for (unsigned int k = 0; k < 4; ++k)
+            {
+              const Tensor<1, 2> a = v[(k + 1) % 4] - v[k];
+              const Tensor<1, 2> b = v[(k + 3) % 4] - v[k];
+              smallest = std::min(smallest, a[0] * b[1] - a[1] * b[0]);
+              area +=
+                (v[k][0] * v[(k + 1) % 4][1] - v[(k + 1) % 4][0] * v[k][1]) / 2;
+              if (coincident < 0 && a.norm_square() <= 1e-24 * extent)
+                coincident = k;
+            }
+          if (smallest > 1e-12 * extent && coincident < 0)
+            continue;
+          std::ostringstream where;
+          where << "cell " << cell->active_cell_index() << " of physical "
+                << "surface " << cell->material_id() << ", corners";
+          for (const auto &corner : v)
+            where << " (" << corner[0] << ", " << corner[1] << ')';
+          std::ostringstream what;
+          if (coincident >= 0)
+            what << ": two corners coincide at (" << v[coincident][0] << ", "
+                 << v[coincident][1]
+                 << ") (to 1e-12 of the mesh's size), a quadrilateral "
+                 << "collapsed to a triangle of area " << std::abs(area)
+                 << "; expected four distinct corners";
+          else if (smallest <= 0)
+            what << ": expected a convex quadrilateral, got one that is "
+                    "folded (a bow-tie), not convex, or flat at a corner "
+                    "(area "
+                 << area << ")";
+          else
+            what << ": the cell (area " << area
+                 << ") is smaller than 1e-12 of the mesh's extent squared, "
+                    "too small for the stiffness to be computed";
+          throw InputError(file, "", where.str() + what.str());
+        }
+    }
+
+
+    std::string
+    describe(const std::set<unsigned int> &ids, const bool boundary = false)
+    {
+      std::string text;
+      for (const auto id : ids)
+        text += (text.empty() ? "" : ", ") + std::to_string(id) +
+                ((boundary && id == 0) ? " (untagged)" : "");
+      return text.empty() ? "none" : text;
+    }
+  } // namespace
+
+
+  Scene::Scene(const Parameters &p, std::ostream &progress)
+  {
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(p.mesh.file, error) ||
+        !std::ifstream(p.mesh.file))
+      throw InputError(p.parameter_file,
+                       "Mesh/File",
+                       "cannot read the mesh file '" + p.mesh.file + "'" +
+                         (error ? ": " + error.message()
+                          : std::filesystem::exists(p.mesh.file, error) &&
+                              !std::filesystem::is_regular_file(p.mesh.file,
+                                                                error)
+                            ? std::string(": not a regular file")
+                            : std::string()));
+
+    const std::string extension =
+      std::filesystem::path(p.mesh.file).extension().string();
+    if (extension == ".geo")
+      msh = mesh_geometry(p, progress);
+    else if (extension == ".msh")
+      msh = read_file(p.mesh.file);
+    else
+      throw InputError(p.parameter_file,
+                       "Mesh/File",
+                       "expected a .geo or .msh file, got '" + p.mesh.file +
+                         "'");
+
+    if (const std::string repeated = repeated_corner(msh); !repeated.empty())
+      throw InputError(p.mesh.file,
+                       "",
+                       repeated +
+                         ": expected a quadrilateral with four distinct "
+                         "corners");
+    if (!p.interface_curves.empty())
+      {
+        std::set<unsigned int> curves;
+        for (const auto &[id, curve] : p.interface_curves)
+          curves.insert(id);
+        msh = split_along_curves(msh, curves, p.mesh.file);
+      }
+    try
+      {
+        GridIn<2> grid_in;
+        grid_in.attach_triangulation(tria);
+        std::istringstream in(msh);
+        grid_in.read_msh(in);
+      }
+    catch (const ExceptionBase &e)
+      {
+        std::ostringstream message;
+        e.print_info(message);
+        throw InputError(p.mesh.file,
+                         "",
+                         "cannot read the mesh: " + message.str());
+      }
+    if (tria.n_active_cells() == 0)
+      throw InputError(p.mesh.file,
+                       "",
+                       "the mesh has no 2D cells: are all surfaces in a "
+                       "physical group?");
+    if (!tria.all_reference_cells_are_hyper_cube())
+      throw InputError(p.mesh.file,
+                       "",
+                       "expected quadrilateral cells only (use Recombine "
+                       "Surface or Mesh.RecombineAll in the .geo)");
+    if (tria.n_active_cells() > p.mesh.max_cells)
+      throw InputError(p.parameter_file,
+                       "Mesh/Maximum cells",
+                       "the mesh of " + p.mesh.file + " has " +
+                         std::to_string(tria.n_active_cells()) +
+                         " cells, more than the limit of " +
+                         std::to_string(p.mesh.max_cells) +
+                         "; check the geometry parameters, or raise the "
+                         "limit");
+    check_cell_shapes(tria, p.mesh.file);
+    check_ids(p, tria);
+  }
+
+
+  const Triangulation<2> &
+  Scene::triangulation() const
+  {
+    return tria;
+  }
+
+
+  const std::string &
+  Scene::mesh_text() const
+  {
+    return msh;
+  }
+
+
+  template <int dim>
+  void
+  check_ids(const Parameters &p, const Triangulation<dim> &tria)
+  {
+    std::set<unsigned int> mesh_materials, mesh_boundaries;
+    for (const auto &cell : tria.active_cell_iterators())
+      {
+        mesh_materials.insert(cell->material_id());
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary())
+            mesh_boundaries.insert(face->boundary_id());
+      }
+
+    if (p.kinematics.fourier)
+      {
+        // The mesh is the r-z plane: r = x >= 0, and faces on the axis need
+        // the per-harmonic axis conditions.
+        double size = 0, min_x = 0;
+        for (const auto &v : tria.get_vertices())
+          {
+            size  = std::max(size, v.norm());
+            min_x = std::min(min_x, v[0]);
+          }
+        if (min_x < -1e-12 * size)
+          throw InputError(p.parameter_file,
+                           "Kinematics/Type",
+                           "Fourier kinematics need the mesh in the r-z plane "
+                           "with r = x >= 0, but it reaches x = " +
+                             std::to_string(min_x));
+        std::set<unsigned int> on_axis;
+        for (const auto &face : tria.active_face_iterators())
+          if (face->at_boundary() &&
+              std::abs(face->vertex(0)[0]) <= 1e-12 * size &&
+              std::abs(face->vertex(1)[0]) <= 1e-12 * size)
+            on_axis.insert(face->boundary_id());
+        if (!on_axis.empty() && on_axis.count(static_cast<unsigned int>(
+                                  p.kinematics.axis_boundary_id)) == 0)
+          throw InputError(p.parameter_file,
+                           "Kinematics/Axis boundary id",
+                           "the mesh reaches the axis r = 0 on boundary id " +
+                             describe(on_axis, true) +
+                             ": set that id, so that every harmonic gets its "
+                             "axis conditions");
+      }
+
+    for (const auto id : mesh_materials)
+      if (p.materials.count(id) == 0)
+        throw InputError(p.parameter_file,
+                         "Material " + std::to_string(id),
+                         "the mesh has cells with material id " +
+                           std::to_string(id) +
+                           " (a physical surface) but this file has no "
+                           "'subsection Material " +
+                           std::to_string(id) + "'");
+    for (const auto &[id, material] : p.materials)
+      if (mesh_materials.count(id) == 0)
+        throw InputError(p.parameter_file,
+                         "Material " + std::to_string(id),
+                         "the mesh has no physical surface " +
+                           std::to_string(id) + " (its material ids: " +
+                           describe(mesh_materials) + ")");
+    for (const auto &[id, boundary] : p.boundaries)
+      if (mesh_boundaries.count(id) == 0)
+        throw InputError(p.parameter_file,
+                         "Boundary " + std::to_string(id),
+                         "the mesh has no physical curve " +
+                           std::to_string(id) +
+                           " on its boundary (its boundary ids: " +
+                           describe(mesh_boundaries, true) + ")");
+    if (p.monitors.displacement_measure ==
+          MonitorParameters::DisplacementMeasure::boundary_average &&
+        mesh_boundaries.count(p.monitors.displacement_boundary_id) == 0)
+      throw InputError(p.parameter_file,
+                       "Monitors/Displacement boundary id",
+                       "the mesh has no boundary id " +
+                         std::to_string(p.monitors.displacement_boundary_id) +
+                         " (its boundary ids: " +
+                         describe(mesh_boundaries, true) + ")");
+    if (p.monitors.load_measure ==
+          MonitorParameters::LoadMeasure::stress_average &&
+        mesh_materials.count(p.monitors.load_material_id) == 0)
+      throw InputError(p.parameter_file,
+                       "Monitors/Load material id",
+                       "the mesh has no material id " +
+                         std::to_string(p.monitors.load_material_id) +
+                         " (its material ids: " + describe(mesh_materials) +
+                         ")");
+    if (p.monitors.load_measure == MonitorParameters::LoadMeasure::reaction &&
+        mesh_boundaries.count(p.monitors.load_boundary_id) == 0)
+      throw InputError(p.parameter_file,
+                       "Monitors/Load boundary id",
+                       "the mesh has no boundary id " +
+                         std::to_string(p.monitors.load_boundary_id) +
+                         " (its boundary ids: " +
+                         describe(mesh_boundaries, true) + ")");
+  }
+
+
+  template void
+  check_ids(const Parameters &, const Triangulation<2> &);
+} // namespace thinlayer

@@ -1,0 +1,274 @@
+#include <deal.II/numerics/data_out.h>
+
+#include <thinlayer/postprocess/cell_fields.h>
+#include <thinlayer/materials/elasticity.h>
+#include <thinlayer/output/output_writer.h>
+#include <thinlayer/output/results_directory.h>
+#include <thinlayer/output/revolved_view.h>
+#include <thinlayer/base/text_format.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+namespace thinlayer
+{
+  namespace
+  {
+    /// Throw a WriteError naming the file @p name if @p stream failed.
+    void
+    check_written(const std::ostream &stream, const std::string &name)
+    {
+      if (!stream)
+        throw WriteError(
+          "cannot write " + name + ": " +
+          (errno != 0 ? std::strerror(errno) : "the stream failed"));
+    }
+  } // namespace
+
+
+  OutputWriter::OutputWriter(const OutputParameters &parameters,
+                             const std::string      &directory)
+    : directory(directory)
+    , vtu_subdivisions(parameters.vtu_subdivisions)
+  {
+    errno = 0;
+    history.open(directory + "/history.csv");
+    history << "step,attempt,load_factor,load,displacement,displacement_min,"
+               "displacement_max,iterations,converged,accepted,"
+               "max_yield_ratio,plastic_points,cut_backs,factorisations,"
+               "stiffness_ratio,growth_ratio,non_finite\n"
+            << std::flush;
+    check_written(history, "history.csv");
+  }
+
+
+  void
+  OutputWriter::write_history_row(const HistoryRow &row)
+  {
+    // A value that is not a finite number (a yield ratio where no
+    // material can yield, a diverged step) as empty.
+    const auto number = text_format::csv_number;
+    errno             = 0;
+    history << row.step << ',' << row.attempt << ',' << number(row.load_factor)
+            << ',' << number(row.load) << ',' << number(row.displacement.mean)
+            << ',' << number(row.displacement.min) << ','
+            << number(row.displacement.max) << ',' << row.result.iterations
+            << ',' << (row.result.converged ? 1 : 0) << ','
+            << (row.accepted ? 1 : 0) << ','
+            << number(row.result.max_yield_ratio) << ','
+            << row.result.plastic_points << ',' << row.result.cut_backs << ','
+            << row.result.factorisations << ',' << number(row.stiffness_ratio)
+            << ',' << number(row.result.growth_ratio) << ','
+            << (row.result.non_finite ? 1 : 0) << '\n'
+            << std::flush;
+    check_written(history, "history.csv");
+  }
+
+
+  void
+  OutputWriter::write_fields(const unsigned int                   step,
+                             const double                         load_factor,
+                             const Analysis<2>                   &analysis,
+                             const double                         theta,
+                             const std::vector<InterfaceProfile> &interfaces)
+  {
+    constexpr int                  dim         = 2;
+    const auto                    &dof_handler = analysis.get_dof_handler();
+    const Kinematics              &kinematics  = analysis.get_kinematics();
+    const bool                     fourier     = kinematics.is_fourier();
+    const CellFields               fields(analysis);
+    const std::vector<std::string> names =
+      fourier ? std::vector<std::string>{"stress_rr",
+                                         "stress_zz",
+                                         "stress_tt",
+                                         "stress_rz",
+                                         "stress_rt",
+                                         "stress_zt"}
+              : std::vector<std::string>{"stress_xx",
+                                         "stress_yy",
+                                         "stress_zz",
+                                         "stress_xy"};
+
+    DataOut<dim> data_out;
+    data_out.attach_dof_handler(dof_handler);
+    // In-plane displacement as a vector; u_theta (Fourier) as a scalar. At
+    // the monitored angle, which for Fourier is where the field is cut.
+    const Vector<double>     u = analysis.displacement_at(theta);
+    std::vector<std::string> displacement_names(dim, "displacement");
+    std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      interpretation(dim,
+                     DataComponentInterpretation::component_is_part_of_vector);
+    if (fourier)
+      {
+        displacement_names.push_back("displacement_theta");
+        interpretation.push_back(
+          DataComponentInterpretation::component_is_scalar);
+      }
+    data_out.add_data_vector(u,
+                             displacement_names,
+                             DataOut<dim>::type_dof_data,
+                             interpretation);
+    for (unsigned int s = 0; s < kinematics.n_stations(); ++s)
+      {
+        // Fourier fields carry their station's angle in degrees.
+        const std::string suffix =
+          fourier ? "_" + std::to_string(static_cast<int>(std::round(
+                            kinematics.station_angle(s) * 180 / numbers::PI)))
+                  : std::string();
+        for (unsigned int k = 0; k < fields.n_components; ++k)
+          data_out.add_data_vector(fields.stress[s][k], names[k] + suffix);
+        data_out.add_data_vector(fields.equivalent[s],
+                                 "equivalent_stress" + suffix);
+        data_out.add_data_vector(fields.plastic_strain[s],
+                                 "plastic_strain" + suffix);
+        data_out.add_data_vector(fields.yield_ratio[s], "yield_ratio" + suffix);
+        // Every layer's cells in one field per quantity.
+        if (!interfaces.empty())
+          {
+            std::vector<Vector<double>> layers =
+              interfaces[0].cell_fields(analysis, s);
+            for (unsigned int i = 1; i < interfaces.size(); ++i)
+              {
+                const auto more = interfaces[i].cell_fields(analysis, s);
+                for (unsigned int k = 0; k < layers.size(); ++k)
+                  layers[k] += more[k];
+              }
+            for (unsigned int k = 0; k < layers.size(); ++k)
+              data_out.add_data_vector(layers[k],
+                                       InterfaceProfile::cell_field_names[k] +
+                                         suffix);
+          }
+      }
+    data_out.add_data_vector(fields.material, "material_id");
+    data_out.build_patches(analysis.get_mapping(),
+                           vtu_subdivisions,
+                           DataOut<dim>::curved_inner_cells);
+
+    std::ostringstream name;
+    name << "fields-" << std::setw(4) << std::setfill('0') << step << ".vtu";
+    std::ostringstream vtu;
+    data_out.write_vtu(vtu);
+    write_file(name.str(), vtu.str());
+
+    pvd_records.emplace_back(load_factor, name.str());
+    std::ostringstream pvd;
+    DataOutBase::write_pvd_record(pvd, pvd_records);
+    write_file("fields.pvd", pvd.str());
+  }
+
+
+  void
+  OutputWriter::write_interface_profiles(
+    const unsigned int                   step,
+    const double                         load_factor,
+    const Analysis<2>                   &analysis,
+    const std::vector<InterfaceProfile> &interfaces,
+    const bool                           with_vtu)
+  {
+    const Kinematics &kinematics = analysis.get_kinematics();
+    // Each profile as NAME-NNNN.csv, and with_vtu as NAME-NNNN.vtu listed
+    // in NAME.pvd.
+    const auto write = [&](const std::string &base, const Profile &profile) {
+      std::ostringstream name;
+      name << base << '-' << std::setw(4) << std::setfill('0') << step;
+      write_file(name.str() + ".csv", profile_csv(profile, kinematics));
+      if (!with_vtu)
+        return;
+      write_file(name.str() + ".vtu", profile_vtu(profile, kinematics));
+      auto &records = profile_records[base];
+      records.emplace_back(load_factor, name.str() + ".vtu");
+      std::ostringstream pvd;
+      DataOutBase::write_pvd_record(pvd, records);
+      write_file(base + ".pvd", pvd.str());
+    };
+    for (const InterfaceProfile &interface : interfaces)
+      write("interface-" + std::to_string(interface.get_material_id()),
+            interface.profile(analysis));
+    const ZeroThicknessElements &elements = analysis.get_interface_elements();
+    for (const types::boundary_id curve : elements.curve_ids())
+      write("interface-curve-" + std::to_string(curve),
+            elements.profile(curve,
+                             analysis.get_modes(),
+                             analysis.is_pending()));
+  }
+
+
+  void
+  OutputWriter::write_revolved_view(const unsigned int step,
+                                    const double       load_factor,
+                                    const Analysis<2> &analysis,
+                                    const unsigned int slices)
+  {
+    std::ostringstream name;
+    name << "revolved-" << std::setw(4) << std::setfill('0') << step << ".vtu";
+    write_file(name.str(), revolved_view_vtu(analysis, slices));
+    revolved_records.emplace_back(load_factor, name.str());
+    std::ostringstream pvd;
+    DataOutBase::write_pvd_record(pvd, revolved_records);
+    write_file("revolved.pvd", pvd.str());
+  }
+
+
+  template <int dim>
+  void
+  OutputWriter::write_displacements(const Analysis<dim> &analysis,
+                                    const double         theta) const
+  {
+    const auto          &dof_handler = analysis.get_dof_handler();
+    const bool           fourier     = analysis.get_kinematics().is_fourier();
+    const Vector<double> u           = analysis.displacement_at(theta);
+    const Vector<double> du          = analysis.displacement_at(theta, true);
+    // The Cartesian components in the cut at theta: x = u_r cos(theta) -
+    // u_theta sin(theta) for Fourier, and y along the axis.
+    const auto x_component = [&](const Vector<double>         &v,
+                                 const types::global_dof_index r,
+                                 const types::global_dof_index t) {
+      return fourier ? v[r] * std::cos(theta) - v[t] * std::sin(theta) : v[r];
+    };
+    std::vector<bool>  written(dof_handler.get_triangulation().n_vertices());
+    std::ostringstream csv;
+    csv << std::setprecision(10) << "x,y,u_x,u_y,du_x,du_y\n";
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const unsigned int v : cell->vertex_indices())
+        if (!written[cell->vertex_index(v)])
+          {
+            written[cell->vertex_index(v)] = true;
+            const auto r                   = cell->vertex_dof_index(v, 0);
+            const auto z                   = cell->vertex_dof_index(v, 1);
+            const auto t = fourier ? cell->vertex_dof_index(v, 2) : r;
+            csv << cell->vertex(v)[0] << ',' << cell->vertex(v)[1] << ','
+                << x_component(u, r, t) << ',' << u[z] << ','
+                << x_component(du, r, t) << ',' << du[z] << '\n';
+          }
+    write_file("displacements.csv", csv.str());
+  }
+
+
+  void
+  OutputWriter::write_file(const std::string &name,
+                           const std::string &content) const
+  {
+    // Write beside, then rename: a reader never sees half a file.
+    const std::string path = directory + "/" + name;
+    errno                  = 0;
+    {
+      std::ofstream out(path + ".partial");
+      out << content;
+      out.close();
+      check_written(out, name);
+    }
+    std::error_code error;
+    std::filesystem::rename(path + ".partial", path, error);
+    if (error)
+      throw WriteError("cannot write " + name + ": " + error.message());
+  }
+
+
+  template void
+  OutputWriter::write_displacements(const Analysis<2> &, const double) const;
+} // namespace thinlayer

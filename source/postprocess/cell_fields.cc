@@ -1,0 +1,56 @@
+#include <thinlayer/postprocess/cell_fields.h>
+#include <thinlayer/materials/elasticity.h>
+
+#include <cmath>
+#include <limits>
+
+namespace thinlayer
+{
+  template <int dim>
+  CellFields::CellFields(const Analysis<dim> &analysis)
+  {
+    const auto        &tria    = analysis.get_dof_handler().get_triangulation();
+    const unsigned int n_q     = analysis.n_quadrature_points();
+    const unsigned int n_cells = tria.n_active_cells();
+    const unsigned int n_s     = analysis.get_kinematics().n_stations();
+    n_components               = analysis.get_kinematics().is_fourier() ? 6 : 4;
+    stress.assign(n_s,
+                  std::vector<Vector<double>>(n_components,
+                                              Vector<double>(n_cells)));
+    equivalent.assign(n_s, Vector<double>(n_cells));
+    plastic_strain.assign(n_s, Vector<double>(n_cells));
+    yield_ratio.assign(n_s, Vector<double>(n_cells));
+    material.reinit(n_cells);
+    for (const auto &cell : tria.active_cell_iterators())
+      {
+        const unsigned int c   = cell->active_cell_index();
+        const MaterialLaw &law = analysis.material_law(c);
+        for (unsigned int s = 0; s < n_s; ++s)
+          {
+            yield_ratio[s][c] = law.can_yield()
+                                  ? std::numeric_limits<double>::lowest()
+                                  : std::numeric_limits<double>::quiet_NaN();
+            for (unsigned int q = 0; q < n_q; ++q)
+              {
+                const PointState &state = analysis.point_state(c, q, s);
+                for (unsigned int k = 0; k < n_components; ++k)
+                  stress[s][k][c] +=
+                    state.stress[components[k][0]][components[k][1]] / n_q;
+                equivalent[s][c] += equivalent_stress(state.stress) / n_q;
+                // Equivalent plastic strain sqrt(2/3 e:e).
+                plastic_strain[s][c] +=
+                  std::sqrt(2. / 3. *
+                            (state.plastic_strain * state.plastic_strain)) /
+                  n_q;
+                if (law.can_yield())
+                  yield_ratio[s][c] =
+                    std::max(yield_ratio[s][c], law.yield_ratio(state.stress));
+              }
+          }
+        material[c] = cell->material_id();
+      }
+  }
+
+
+  template CellFields::CellFields(const Analysis<2> &);
+} // namespace thinlayer

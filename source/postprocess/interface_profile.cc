@@ -1,0 +1,337 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <thinlayer/base/input_error.h>
+#include <thinlayer/postprocess/interface_profile.h>
+#include <thinlayer/base/text_format.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace thinlayer
+{
+  namespace
+  {
+    using CellIterator = DoFHandler<2>::active_cell_iterator;
+
+    /// A unit-cell point at abscissa @p along in direction @p direction and
+    /// @p across in the other.
+    Point<2>
+    unit_point(const unsigned int direction,
+               const double       along,
+               const double       across)
+    {
+      Point<2> p;
+      p[direction]     = along;
+      p[1 - direction] = across;
+      return p;
+    }
+
+    /// Lexicographic order of points, x before y, to a tolerance.
+    bool
+    lower_left(const Point<2> &a, const Point<2> &b, const double tolerance)
+    {
+      if (std::abs(a[0] - b[0]) > tolerance)
+        return a[0] < b[0];
+      return a[1] < b[1] - tolerance;
+    }
+
+    /// Whether the neighbour of @p cell across face @p f is in the layer.
+    bool
+    layer_neighbour(const CellIterator      &cell,
+                    const unsigned int       f,
+                    const types::material_id id)
+    {
+      return !cell->at_boundary(f) && cell->neighbor(f)->is_active() &&
+             cell->neighbor(f)->material_id() == id;
+    }
+  } // namespace
+
+
+  const std::vector<std::string> InterfaceProfile::cell_field_names = {
+    "interface_slip",
+    "interface_opening",
+    "interface_shear_traction",
+    "interface_normal_traction"};
+
+
+  InterfaceProfile::InterfaceProfile(const Analysis<2>       &analysis,
+                                     const types::material_id material_id,
+                                     const std::string       &parameter_file)
+    : material_id(material_id)
+  {
+    const auto  &dof_handler = analysis.get_dof_handler();
+    const auto  &tria        = dof_handler.get_triangulation();
+    const double tolerance =
+      1e-9 * GridTools::diameter(static_cast<const Triangulation<2> &>(tria));
+    const std::string entry = "Interfaces/Material ids";
+    const std::string name  = "material id " + std::to_string(material_id);
+
+    // Each layer cell's long direction: the one in which its layer
+    // neighbours lie (the chain runs through the short faces), or for a
+    // cell alone its longer sides.
+    std::map<CellIterator, unsigned int> long_direction;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->material_id() == material_id)
+        {
+          std::array<unsigned int, 2> neighbours = {{0, 0}};
+          for (const unsigned int f : cell->face_indices())
+            neighbours[f / 2] += layer_neighbour(cell, f, material_id);
+          unsigned int direction;
+          if (neighbours[0] > 0 && neighbours[1] > 0)
+            {
+              std::ostringstream message;
+              message << "expected a layer one cell thick, without "
+                         "branches: the cell of "
+                      << name << " at (" << cell->center()
+                      << ") has cells of that material along two directions";
+              throw InputError(parameter_file, entry, message.str());
+            }
+          else if (neighbours[0] + neighbours[1] > 0)
+            direction = neighbours[0] > 0 ? 0 : 1;
+          else
+            direction = cell->face(2)->measure() + cell->face(3)->measure() >=
+                            cell->face(0)->measure() + cell->face(1)->measure()
+                          ? 0
+                          : 1;
+          long_direction[cell] = direction;
+        }
+    if (long_direction.empty())
+      throw InputError(parameter_file,
+                       entry,
+                       "expected a material id of the mesh: no cell has " +
+                         name);
+
+    // Runs start at an end: a cell with a free short face, the one whose
+    // free face is nearest the lower left first; closed loops last.
+    std::vector<std::pair<Point<2>, std::pair<CellIterator, unsigned int>>>
+      starts;
+    for (const auto &[cell, direction] : long_direction)
+      for (const unsigned int f : {2 * direction, 2 * direction + 1})
+        if (!layer_neighbour(cell, f, material_id))
+          starts.push_back({cell->face(f)->center(), {cell, f}});
+    std::sort(starts.begin(), starts.end(), [&](const auto &a, const auto &b) {
+      return lower_left(a.first, b.first, tolerance);
+    });
+    for (const auto &[cell, direction] : long_direction)
+      starts.push_back({cell->center(), {cell, 2 * direction}});
+
+    std::set<CellIterator> visited;
+    unsigned int           run = 0;
+    for (const auto &start : starts)
+      {
+        CellIterator cell       = start.second.first;
+        unsigned int entry_face = start.second.second;
+        if (visited.count(cell) != 0)
+          continue;
+        double arc_length = 0;
+        while (true)
+          {
+            visited.insert(cell);
+            const unsigned int direction = long_direction.at(cell);
+            arc_length                   = add_cell_samples(
+              analysis, cell, direction, entry_face, run, arc_length);
+            const unsigned int exit = entry_face ^ 1;
+            if (!layer_neighbour(cell, exit, material_id))
+              break;
+            const CellIterator next = cell->neighbor(exit);
+            if (visited.count(next) != 0)
+              break;
+            entry_face = cell->neighbor_of_neighbor(exit);
+            cell       = next;
+            if (entry_face / 2 != long_direction.at(cell))
+              {
+                std::ostringstream message;
+                message << "expected a layer one cell thick: the cell of "
+                        << name << " at (" << cell->center()
+                        << ") joins the layer through a long side";
+                throw InputError(parameter_file, entry, message.str());
+              }
+          }
+        ++run;
+      }
+  }
+
+
+  double
+  InterfaceProfile::add_cell_samples(const Analysis<2>  &analysis,
+                                     const CellIterator &cell,
+                                     const unsigned int  long_direction,
+                                     const unsigned int  entry_face,
+                                     const unsigned int  run,
+                                     const double        start)
+  {
+    const Mapping<2> &mapping = analysis.get_mapping();
+    const auto        mid     = [&](const double along) {
+      return mapping.transform_unit_to_real_cell(
+        cell, unit_point(long_direction, along, 0.5));
+    };
+    // Along the layer from the entry face: +1 if it is the face at 0.
+    const bool         forward = (entry_face % 2 == 0);
+    const Point<2>     entry   = mid(forward ? 0. : 1.);
+    const Tensor<1, 2> chord   = mid(forward ? 1. : 0.) - entry;
+    const Tensor<1, 2> tangent = chord / chord.norm();
+    const Tensor<1, 2> normal({-tangent[1], tangent[0]});
+    // Which unit face lies on the +n side.
+    const Tensor<1, 2> across =
+      mapping.transform_unit_to_real_cell(cell,
+                                          unit_point(long_direction, 0.5, 1.)) -
+      mapping.transform_unit_to_real_cell(cell,
+                                          unit_point(long_direction, 0.5, 0.));
+    const double plus_face = (across * normal > 0) ? 1. : 0.;
+
+    const unsigned int n_1d = static_cast<unsigned int>(
+      std::lround(std::sqrt(analysis.n_quadrature_points())));
+    const QGauss<1>     gauss_1d(n_1d);
+    const QGauss<2>     gauss_2d(n_1d);
+    std::vector<double> abscissae;
+    for (const auto &p : gauss_1d.get_points())
+      abscissae.push_back(p[0]);
+    if (!forward)
+      std::reverse(abscissae.begin(), abscissae.end());
+    for (const double along : abscissae)
+      {
+        Sample sample;
+        sample.cell       = cell;
+        sample.run        = run;
+        sample.position   = mid(along);
+        sample.arc_length = start + (sample.position - entry).norm();
+        sample.tangent    = tangent;
+        sample.normal     = normal;
+        sample.unit_plus  = unit_point(long_direction, along, plus_face);
+        sample.unit_minus = unit_point(long_direction, along, 1 - plus_face);
+        for (unsigned int q = 0; q < gauss_2d.size(); ++q)
+          if (std::abs(gauss_2d.point(q)[long_direction] - along) < 1e-12)
+            sample.thickness_points.push_back(q);
+        samples.push_back(sample);
+      }
+    return start + chord.norm();
+  }
+
+
+  types::material_id
+  InterfaceProfile::get_material_id() const
+  {
+    return material_id;
+  }
+
+
+  unsigned int
+  InterfaceProfile::n_points() const
+  {
+    return samples.size();
+  }
+
+
+  std::vector<InterfaceValues>
+  InterfaceProfile::evaluate(const Analysis<2> &analysis,
+                             const unsigned int station) const
+  {
+    const Kinematics       &kinematics = analysis.get_kinematics();
+    const double            theta      = kinematics.station_angle(station);
+    const Vector<double>    u          = analysis.displacement_at(theta);
+    const Vector<double>    du         = analysis.displacement_at(theta, true);
+    const FiniteElement<2> &fe         = analysis.get_dof_handler().get_fe();
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+
+    // The face-to-face difference of @p v at a sample, 3 components.
+    const auto difference = [&](const Vector<double> &v, const Sample &s) {
+      Tensor<1, 3> d;
+      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+        {
+          const unsigned int c = fe.system_to_component_index(i).first;
+          d[c] += v[dofs[i]] * (fe.shape_value(i, s.unit_plus) -
+                                fe.shape_value(i, s.unit_minus));
+        }
+      return d;
+    };
+
+    std::vector<InterfaceValues> values;
+    values.reserve(samples.size());
+    for (const Sample &s : samples)
+      {
+        s.cell->get_dof_indices(dofs);
+        const Tensor<1, 3> t3({s.tangent[0], s.tangent[1], 0});
+        const Tensor<1, 3> n3({s.normal[0], s.normal[1], 0});
+        const Tensor<1, 3> out({0, 0, 1});
+        const Tensor<1, 3> jump  = difference(u, s);
+        const Tensor<1, 3> djump = difference(du, s);
+
+        const unsigned int    cell_index = s.cell->active_cell_index();
+        const MaterialLaw    &law        = analysis.material_law(cell_index);
+        SymmetricTensor<2, 3> stress;
+        InterfaceValues       v;
+        v.plastic     = false;
+        v.yield_ratio = law.can_yield()
+                          ? std::numeric_limits<double>::lowest()
+                          : std::numeric_limits<double>::quiet_NaN();
+        for (const unsigned int q : s.thickness_points)
+          {
+            const PointState &state =
+              analysis.point_state(cell_index, q, station);
+            stress += state.stress / s.thickness_points.size();
+            v.plastic = v.plastic || state.yielding;
+            if (law.can_yield())
+              v.yield_ratio =
+                std::max(v.yield_ratio, law.yield_ratio(state.stress));
+          }
+        const Tensor<1, 3> traction   = stress * n3;
+        v.slip                        = jump * t3;
+        v.slip_out_of_plane           = jump * out;
+        v.opening                     = jump * n3;
+        v.slip_increment              = djump * t3;
+        v.opening_increment           = djump * n3;
+        v.shear_traction              = traction * t3;
+        v.shear_traction_out_of_plane = traction * out;
+        v.normal_traction             = traction * n3;
+        values.push_back(v);
+      }
+    return values;
+  }
+
+
+  Profile
+  InterfaceProfile::profile(const Analysis<2> &analysis) const
+  {
+    Profile result;
+    for (const Sample &s : samples)
+      result.samples.push_back({s.run, s.arc_length, s.position});
+    for (unsigned int station = 0;
+         station < analysis.get_kinematics().n_stations();
+         ++station)
+      result.stations.push_back(evaluate(analysis, station));
+    return result;
+  }
+
+
+  std::vector<Vector<double>>
+  InterfaceProfile::cell_fields(const Analysis<2> &analysis,
+                                const unsigned int station) const
+  {
+    const unsigned int n_cells =
+      analysis.get_dof_handler().get_triangulation().n_active_cells();
+    std::vector<Vector<double>>        fields(cell_field_names.size(),
+                                       Vector<double>(n_cells));
+    std::vector<unsigned int>          count(n_cells);
+    const std::vector<InterfaceValues> values = evaluate(analysis, station);
+    for (unsigned int k = 0; k < samples.size(); ++k)
+      {
+        const unsigned int c = samples[k].cell->active_cell_index();
+        fields[0][c] += values[k].slip;
+        fields[1][c] += values[k].opening;
+        fields[2][c] += values[k].shear_traction;
+        fields[3][c] += values[k].normal_traction;
+        ++count[c];
+      }
+    for (auto &field : fields)
+      for (unsigned int c = 0; c < n_cells; ++c)
+        if (count[c] > 0)
+          field[c] /= count[c];
+    return fields;
+  }
+} // namespace thinlayer

@@ -1,0 +1,54 @@
+#include <thinlayer/solution_methods/solution_method.h>
+#include <thinlayer/solution_methods/accelerated_initial_stress.h>
+#include <thinlayer/solution_methods/initial_stress.h>
+#include <thinlayer/solution_methods/newton.h>
+#include <thinlayer/solution_methods/newton_fallback.h>
+#include <thinlayer/solution_methods/viscoplastic.h>
+
+namespace thinlayer
+{
+  template <int dim>
+  void
+  SolutionMethod<dim>::state_accepted()
+  {}
+
+
+  template <int dim>
+  void
+  SolutionMethod<dim>::state_rejected()
+  {}
+
+
+  template <int dim>
+  std::unique_ptr<SolutionMethod<dim>>
+  create_solution_method(const SolverParameters &parameters,
+                         Analysis<dim>          &analysis)
+  {
+    using Method = SolverParameters::Method;
+    switch (parameters.method)
+      {
+        case Method::viscoplastic:
+          return std::make_unique<ViscoplasticMethod<dim>>(parameters,
+                                                           analysis);
+        case Method::initial_stress:
+          return std::make_unique<InitialStressMethod<dim>>(parameters,
+                                                            analysis);
+        case Method::accelerated_initial_stress:
+          return std::make_unique<AcceleratedInitialStressMethod<dim>>(
+            parameters, analysis);
+        case Method::newton:
+          return std::make_unique<NewtonMethod<dim>>(parameters, analysis);
+        case Method::accelerated_with_newton_fallback:
+          return std::make_unique<NewtonFallbackMethod<dim>>(parameters,
+                                                             analysis);
+      }
+    AssertThrow(false, ExcInternalError());
+    return nullptr;
+  }
+
+
+  template class SolutionMethod<2>;
+
+  template std::unique_ptr<SolutionMethod<2>>
+  create_solution_method(const SolverParameters &, Analysis<2> &);
+} // namespace thinlayer

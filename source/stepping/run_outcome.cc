@@ -1,0 +1,127 @@
+#include <thinlayer/stepping/run_outcome.h>
+#include <thinlayer/base/text_format.h>
+
+#include <cmath>
+#include <csignal>
+
+// How a run ended: the evidence of a mechanism, and the outcome, its
+// reason and the collapse load that summary.json reports.
+
+namespace thinlayer
+{
+  bool
+  shows_mechanism(const double stiffness_ratio, const double growth_ratio)
+  {
+    // Displacements ten times the elastic ones in either direction: at
+    // and beyond the limit load no equilibrium is near, and where a
+    // failing iterate runs depends on the method (from the secant
+    // predictor it often runs against the load). A method that merely
+    // diverges converges again once the step is cut: this is asked of a
+    // step that failed at the collapse resolution (or, with the programme
+    // as given, of the step that failed, the paper's collapse). The creep of
+    // a thin layer's curve, where Newton can run away below loads that
+    // still converge, is caught earlier by its knee (mechanism_knee_ratio).
+    return std::abs(stiffness_ratio) < mechanism_stiffness_ratio ||
+           growth_ratio >= mechanism_growth_ratio;
+  }
+
+
+  namespace
+  {
+    using text_format::printf;
+
+    /// The stiffness and growth figures of the step that ended the run,
+    /// in words, for the reason.
+    std::string
+    evidence(const ProgrammeResult &run)
+    {
+      std::string text =
+        std::string(run.stopped_on_mechanism
+                      ? "the step converged, with a secant stiffness of "
+                      : "the failed step's secant stiffness is ") +
+        printf("%.2g", run.stiffness_ratio) + " of the elastic one";
+      if (std::isfinite(run.growth_ratio))
+        text += ", and its displacement change grew by a factor " +
+                printf("%.3g", run.growth_ratio) +
+                " over the second half of its iterations";
+      return text;
+    }
+  } // namespace
+
+
+  void
+  judge_outcome(const Analysis<2>     &analysis,
+                const ProgrammeResult &run,
+                RunSummary            &s)
+  {
+    const auto at = [](const double load_factor) {
+      return " at load factor " + printf("%.6g", load_factor);
+    };
+    if (run.interrupted_by != 0)
+      {
+        s.outcome = "interrupted";
+        s.reason  = std::string(run.interrupted_by == SIGINT    ? "SIGINT"
+                               : run.interrupted_by == SIGTERM ? "SIGTERM"
+                                                               : "a signal") +
+                   " stopped the step" + at(run.interrupted_load_factor) +
+                   "; the steps before it are complete";
+        return;
+      }
+    if (!run.stopped)
+      {
+        s.outcome = run.converged ? "completed" : "not converged";
+        s.reason  = run.converged
+                      ? "every load step converged"
+                      : "steps that failed were accepted (Solver/Continue "
+                        "after failure)";
+        if (!analysis.has_external_load() && run.converged &&
+            std::abs(run.last_stiffness) <=
+              plateau_stiffness_ratio * std::abs(run.first_stiffness))
+          {
+            s.collapse_load = run.last_converged_load;
+            s.reason += "; the load reached its plateau";
+          }
+        return;
+      }
+    s.outcome = "not converged";
+    if (run.non_finite)
+      s.reason = "values that are not finite numbers" +
+                 at(run.failed_load_factor) +
+                 " (an overflow: displacements, stresses, tractions or "
+                 "their invariants beyond the range of double precision)";
+    else if (run.against_load)
+      s.reason = "the step" + at(run.failed_load_factor) +
+                 " converged to a state moving against its load (secant "
+                 "stiffness " +
+                 printf("%.2g", run.stiffness_ratio) +
+                 " of the elastic one): a spurious equilibrium, no response "
+                 "of the body and no mechanism";
+    else if (!analysis.has_external_load())
+      s.reason = "the step failed" + at(run.failed_load_factor) +
+                 " under prescribed displacement, where a failed step is "
+                 "no collapse";
+    else if (!run.any_step_converged && !run.bracket_resolved)
+      s.reason = "the first step failed" + at(run.failed_load_factor) +
+                 " and no state converged: a collapse load, if this is "
+                 "one, lies somewhere below it; expected smaller first "
+                 "steps (Loading/Load increments) or automatic stepping";
+    else if (shows_mechanism(run.stiffness_ratio, run.growth_ratio))
+      {
+        s.outcome         = "collapse";
+        s.collapse_load   = run.last_converged_load;
+        const bool probed = std::isfinite(run.probe_load_factor);
+        s.reason =
+          "a mechanism" +
+          (probed ? " beyond the failed step" + at(run.failed_load_factor) +
+                      ", shown by a probe" + at(run.probe_load_factor)
+                  : at(run.failed_load_factor)) +
+          ": " + evidence(run) + "; the collapse load factor lies between " +
+          printf("%.6g", run.last_converged_load_factor) + " and " +
+          printf("%.6g",
+                 probed ? run.probe_load_factor : run.failed_load_factor);
+      }
+    else
+      s.reason = "the step failed" + at(run.failed_load_factor) +
+                 " with no mechanism shown: " + evidence(run);
+  }
+} // namespace thinlayer
