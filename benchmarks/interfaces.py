@@ -29,10 +29,10 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from run import results, write_results  # noqa: E402 (scripts/ on the path)
-from outcomes import run  # noqa: E402 (a run by the default method)
+from benchmarks.outcomes import run  # noqa: E402 (a run by the default method)
+from benchmarks.run import write_results  # noqa: E402
+from thinlayer_tools import TOP, cases, results  # noqa: E402
 
-TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 OUT = os.path.join(TOP, "output", "benchmarks", "interfaces")
 
 E_OVER_L = 1e5  # every case: E = 1e5 of the soil or blocks, L = 1
@@ -42,8 +42,7 @@ E_OVER_L = 1e5  # every case: E = 1e5 of the soil or blocks, L = 1
 # profiled; entries for both models.
 CASES = {
     "case1": ("Case 1, adhesive, alpha 45",
-              "prm/case1-inclined-adhesive.prm",
-              "alpha=45, aspect_ratio={ar}, elements_along=8, elements_block=8", 2,
+              cases.PARAMETER_FILES["case1"], cases.geometry("case1", 1, alpha=45), 2,
               "prm/case1-inclined-adhesive-zero-thickness.prm",
               "alpha=45, elements_along=8, elements_block=8, zero_thickness=1", [3], 3, []),
     "case2": ("Case 2, strip footing",
@@ -61,9 +60,7 @@ CASES = {
               "half_width=1, width=5, depth=3, n_footing=8, n_side=12, n_depth=10, "
               "zero_thickness=1", [5], 5, []),
     "case4": ("Case 4, rough wall",
-              "prm/case4-rough-wall.prm",
-              "wall_height=1, width=3, depth=2, aspect_ratio={ar}, n_wall=10, "
-              "n_below=5, n_x=12", 2,
+              cases.PARAMETER_FILES["case4"], cases.geometry("case4", 1), 2,
               "prm/case4-rough-wall-zero-thickness.prm",
               "wall_height=1, width=3, depth=2, aspect_ratio=10, n_wall=10, n_below=5, "
               "n_x=12, zero_thickness=1", [6, 7], 6,

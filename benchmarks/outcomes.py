@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Outcomes of every case with every solution method: the results are not tests.
 
-    /usr/bin/python3 benchmarks/outcomes.py [--quick] [--repeat N] [--methods M,...]
+    /usr/bin/python3 -m benchmarks.outcomes [--quick] [--repeat N] [--methods M,...]
                                             [--cases C,...] [--levels L,...]
 
 Runs every paper case and Prandtl over mesh levels and, where the case has
@@ -25,7 +25,7 @@ Table 1 (Case 1, alpha 10-80 x aspect ratio 10, 100, 1000) by the default
 method, on the scene's mesh and on one twice as fine, each collapse load
 against 1/(sin alpha cos alpha), the zero-thickness interface's value, and
 beside the upper bound of the layer the mesh models (a slip plane inside
-the layer, scripts/closed_form.py), which the body's exact collapse load
+the layer, thinlayer_tools/closed_form.py), which the body's exact collapse load
 cannot exceed (table1.csv, table1.md). THINLAYER in the environment names another binary.
 """
 import argparse
@@ -35,40 +35,30 @@ import os
 import statistics
 import subprocess
 
-from run import results, write_results  # the benchmarks' reader and table writer
-import closed_form  # noqa: E402 (scripts/, on the path run.py sets)
+from benchmarks.run import write_results
+from thinlayer_tools import THINLAYER, TOP, cases, closed_form, results
 
-TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-THINLAYER = os.environ.get("THINLAYER", os.path.join(TOP, "build", "thinlayer"))
 OUT = os.path.join(TOP, "output", "benchmarks", "outcomes")
 
 # case: (parameter file, {level: geometry parameters with {ar} for the
-# interface's aspect ratio}, aspect ratios, load increments)
+# interface's aspect ratio}, aspect ratios), the levels of
+# thinlayer_tools.cases.
+LAYER_ASPECT_RATIOS = [10, 100, 1000, 10000]
 CASES = {
-    "prandtl": ("prm/prandtl-strip-footing.prm", {
-        1: "half_width=1, width=5, depth=3, n_footing=8, n_side=12, n_depth=12, growth=1.15",
-        2: "half_width=1, width=5, depth=3, n_footing=16, n_side=24, n_depth=24, growth=1.07",
-        3: "half_width=1, width=5, depth=3, n_footing=32, n_side=48, n_depth=48, growth=1.035",
-    }, [None]),
-    "case1": ("prm/case1-inclined-adhesive.prm", {
-        1: "alpha=30, aspect_ratio={ar}, elements_along=8, elements_block=8",
-        2: "alpha=30, aspect_ratio={ar}, elements_along=16, elements_block=16",
-        3: "alpha=30, aspect_ratio={ar}, elements_along=32, elements_block=32",
-    }, [10, 100, 1000, 10000]),
-    "case2": ("prm/case2-strip-footing.prm", {
-        1: "half_width=1, width=5, depth=3, aspect_ratio={ar}, n_footing=8, n_side=12, n_depth=10, interface_beyond_footing=1, refinement=1",
-        2: "half_width=1, width=5, depth=3, aspect_ratio={ar}, n_footing=8, n_side=12, n_depth=10, interface_beyond_footing=1, refinement=2",
-        3: "half_width=1, width=5, depth=3, aspect_ratio={ar}, n_footing=8, n_side=12, n_depth=10, interface_beyond_footing=1, refinement=3",
-    }, [10, 100, 1000, 10000]),
-    "case3": ("prm/case3-circular-footing.prm", {
-        1: "half_width=1, width=5, depth=3, aspect_ratio={ar}, n_footing=8, n_side=12, n_depth=10, interface_beyond_footing=1, refinement=1",
-        2: "half_width=1, width=5, depth=3, aspect_ratio={ar}, n_footing=8, n_side=12, n_depth=10, interface_beyond_footing=1, refinement=2",
-    }, [10, 100, 1000, 10000]),
-    "case4-rough": ("prm/case4-rough-wall.prm", {
-        1: "wall_height=1, width=3, depth=2, aspect_ratio={ar}, n_wall=10, n_below=5, n_x=12",
-        2: "wall_height=1, width=3, depth=2, aspect_ratio={ar}, n_wall=20, n_below=10, n_x=24",
-        3: "wall_height=1, width=3, depth=2, aspect_ratio={ar}, n_wall=40, n_below=20, n_x=48",
-    }, [10, 100, 1000, 10000]),
+    "prandtl": (cases.PARAMETER_FILES["prandtl"],
+                {level: cases.geometry("prandtl", level) for level in (1, 2, 3)}, [None]),
+    "case1": (cases.PARAMETER_FILES["case1"],
+              {level: cases.geometry("case1", level) for level in (1, 2, 3)},
+              LAYER_ASPECT_RATIOS),
+    "case2": (cases.PARAMETER_FILES["case2"],
+              {level: cases.geometry("case2", level) for level in (1, 2, 3)},
+              LAYER_ASPECT_RATIOS),
+    "case3": (cases.PARAMETER_FILES["case3"],
+              {level: cases.geometry("case3", level) for level in (1, 2)},
+              LAYER_ASPECT_RATIOS),
+    "case4-rough": (cases.PARAMETER_FILES["case4"],
+                    {level: cases.geometry("case4", level) for level in (1, 2, 3)},
+                    LAYER_ASPECT_RATIOS),
 }
 # Each method with its convergence criterion and tolerance.
 METHODS = {

@@ -1,10 +1,10 @@
 #!/usr/bin/python3
 """Speed and accuracy benchmarks of thinlayer: the results are not tests.
 
-    /usr/bin/python3 benchmarks/run.py [--quick] [--repeat N]
-    /usr/bin/python3 benchmarks/run.py --ladder [--repeat N]
-    /usr/bin/python3 benchmarks/run.py --stability
-    /usr/bin/python3 benchmarks/run.py --performance [--repeat N]
+    /usr/bin/python3 -m benchmarks.run [--quick] [--repeat N]
+    /usr/bin/python3 -m benchmarks.run --ladder [--repeat N]
+    /usr/bin/python3 -m benchmarks.run --stability
+    /usr/bin/python3 -m benchmarks.run --performance [--repeat N]
 
 Default: case x solution method x tolerance x mesh level, each run N times
 (default 3), into output/benchmarks/ (or --output): benchmarks.csv (the
@@ -42,39 +42,25 @@ import json
 import os
 import statistics
 import subprocess
-import sys
 import time
 
-TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.join(TOP, "scripts"))
-import results  # noqa: E402
-THINLAYER = os.environ.get("THINLAYER", os.path.join(TOP, "build", "thinlayer"))
+from thinlayer_tools import THINLAYER, TOP, cases, results, run_module
 OUT = os.path.join(TOP, "output", "benchmarks")
 
-# case: (parameter file, {mesh level: geometry parameters})
+# case: (parameter file, {mesh level: geometry parameters}), the levels of
+# thinlayer_tools.cases at the aspect ratio (and Case 1's inclination) each
+# case is benchmarked at.
 CASES = {
-    "prandtl": ("prm/prandtl-strip-footing.prm", {
-        1: "half_width=1, width=5, depth=3, n_footing=8, n_side=12, n_depth=12, growth=1.15",
-        2: "half_width=1, width=5, depth=3, n_footing=16, n_side=24, n_depth=24, growth=1.07",
-        3: "half_width=1, width=5, depth=3, n_footing=32, n_side=48, n_depth=48, growth=1.035",
-    }),
-    "case1-adhesive": ("prm/case1-inclined-adhesive.prm", {
-        1: "alpha=30, aspect_ratio=100, elements_along=8, elements_block=8",
-        2: "alpha=30, aspect_ratio=100, elements_along=16, elements_block=16",
-        3: "alpha=30, aspect_ratio=100, elements_along=32, elements_block=32",
-    }),
-    "case2": ("prm/case2-strip-footing.prm", {
-        1: "half_width=1, width=5, depth=3, aspect_ratio=10, n_footing=8, n_side=12, n_depth=10, interface_beyond_footing=1, refinement=1",
-        2: "half_width=1, width=5, depth=3, aspect_ratio=10, n_footing=8, n_side=12, n_depth=10, interface_beyond_footing=1, refinement=2",
-    }),
-    "case3": ("prm/case3-circular-footing.prm", {
-        1: "half_width=1, width=5, depth=3, aspect_ratio=10, n_footing=8, n_side=12, n_depth=10, interface_beyond_footing=1, refinement=1",
-        2: "half_width=1, width=5, depth=3, aspect_ratio=10, n_footing=8, n_side=12, n_depth=10, interface_beyond_footing=1, refinement=2",
-    }),
-    "case4-rough": ("prm/case4-rough-wall.prm", {
-        1: "wall_height=1, width=3, depth=2, aspect_ratio=10, n_wall=10, n_below=5, n_x=12",
-        2: "wall_height=1, width=3, depth=2, aspect_ratio=10, n_wall=20, n_below=10, n_x=24",
-    }),
+    "prandtl": (cases.PARAMETER_FILES["prandtl"],
+                {level: cases.geometry("prandtl", level) for level in (1, 2, 3)}),
+    "case1-adhesive": (cases.PARAMETER_FILES["case1"],
+                       {level: cases.geometry("case1", level, 100) for level in (1, 2, 3)}),
+    "case2": (cases.PARAMETER_FILES["case2"],
+              {level: cases.geometry("case2", level, 10) for level in (1, 2)}),
+    "case3": (cases.PARAMETER_FILES["case3"],
+              {level: cases.geometry("case3", level, 10) for level in (1, 2)}),
+    "case4-rough": (cases.PARAMETER_FILES["case4"],
+                    {level: cases.geometry("case4", level, 10) for level in (1, 2)}),
 }
 # The levels the default mode runs per case: two where a run takes about a
 # second, one where the slower methods take several (Case 3, Case 4), and
@@ -436,8 +422,8 @@ def stability():
             start = time.time()
             subprocess.run(command, capture_output=True, text=True, check=True)
             seconds = time.time() - start
-            subprocess.run(["/usr/bin/python3", os.path.join(TOP, "scripts", "plot_stability.py"),
-                            directory], capture_output=True, text=True, check=True)
+            run_module("thinlayer_tools.plots.stability", [directory],
+                       capture_output=True, text=True, check=True)
             with open(os.path.join(directory, "sweep.csv"), newline="") as f:
                 runs = list(csv.DictReader(f))
             detected = [r for r in runs if results.collapse_detected(r)]

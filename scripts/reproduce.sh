@@ -24,4 +24,6 @@ while [ $# -gt 0 ]; do
   shift
 done
 "$top/scripts/setup.sh" build
-exec /usr/bin/python3 "$top/scripts/reproduce.py" "${arguments[@]}"
+# The Python package thinlayer_tools lives in the top folder.
+export PYTHONPATH="$top${PYTHONPATH:+:$PYTHONPATH}"
+exec /usr/bin/python3 -m thinlayer_tools.reproduce "${arguments[@]}"

@@ -105,6 +105,6 @@ else
   "$top/scripts/reproduce.sh" --quick --output "$report" 2>&1 | tee "$build/reproduce-quick.log" ||
     { echo "thinlayer setup: the reproduction failed; the log is $build/reproduce-quick.log" >&2
       exit 1; }
-  /usr/bin/python3 "$top/scripts/check_report.py" "$report/report.html"
+  PYTHONPATH="$top" /usr/bin/python3 -m thinlayer_tools.report.check "$report/report.html"
   echo "thinlayer setup: all tests passed (Release, Debug, valgrind, the report in Chromium)"
 fi

@@ -4,7 +4,7 @@ tables and figures need, by the paper's method and by the default one,
 the validations against closed forms, the stability maps and the
 speed-against-accuracy benchmark, then write DIR/report.html.
 
-    /usr/bin/python3 scripts/reproduce.py [--quick] [--output DIR] [--report-only]
+    /usr/bin/python3 -m thinlayer_tools.reproduce [--quick] [--output DIR] [--report-only]
 
 Call it through scripts/reproduce.sh, which builds thinlayer first. The runs
 go into DIR/runs/NAME (each a thinlayer results directory), the benchmark
@@ -21,12 +21,9 @@ import subprocess
 import sys
 import time
 
-TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.join(TOP, "scripts"))
-THINLAYER = os.environ.get("THINLAYER", os.path.join(TOP, "build", "thinlayer"))
-
-from report import case1, case4, footings, methods, page  # noqa: E402
-from report.runs import DEFAULT, PAPER, Runs  # noqa: E402
+from thinlayer_tools import THINLAYER, TOP, run_module
+from thinlayer_tools.report import case1, case4, footings, methods, page
+from thinlayer_tools.report.runs import DEFAULT, PAPER, Runs
 
 ALL_ALPHAS = "alpha = 10, 20, 30, 40, 45, 50, 60, 70, 80"
 QUICK_ALPHAS = "alpha = 20, 45, 70"
@@ -107,11 +104,10 @@ def run_all(runs, directory):
 
 def run_benchmark(directory, quick):
     """benchmarks/run.py's speed-against-accuracy matrix into DIR/benchmarks."""
-    command = ["/usr/bin/python3", os.path.join(TOP, "benchmarks", "run.py"),
-               "--output", os.path.join(directory, "benchmarks")]
-    command += ["--quick", "--repeat", "1"] if quick else ["--repeat", "3"]
-    print("benchmark: " + " ".join(command[1:]), flush=True)
-    if subprocess.run(command).returncode != 0:
+    arguments = ["--output", os.path.join(directory, "benchmarks")]
+    arguments += ["--quick", "--repeat", "1"] if quick else ["--repeat", "3"]
+    print("benchmark: python3 -m benchmarks.run " + " ".join(arguments), flush=True)
+    if run_module("benchmarks.run", arguments).returncode != 0:
         sys.exit("reproduce: the benchmark failed")
 
 
@@ -174,7 +170,7 @@ def introduction(quick):
 
 
 def footer(directory, runs, seconds):
-    return ("Written by scripts/reproduce.py from the runs in %s/runs (every run's "
+    return ("Written by thinlayer_tools/reproduce.py from the runs in %s/runs (every run's "
             "history.csv, summary.json, mesh.msh and parameters.prm are there) in %.0f s on %s; "
             "thinlayer %s." % (directory, seconds, runs.machine(), runs.version()))
 

@@ -3,10 +3,10 @@
 
 Run with Debian's python3 (it has python3-matplotlib):
 
-    /usr/bin/python3 scripts/plot_case1.py table1     output/case1-table1
-    /usr/bin/python3 scripts/plot_case1.py figure3    output/case1-figure3
-    /usr/bin/python3 scripts/plot_case1.py frictional output/case1-figure4
-    /usr/bin/python3 scripts/plot_case1.py frictional output/case1-figure5
+    /usr/bin/python3 -m thinlayer_tools.plots.case1 table1     output/case1-table1
+    /usr/bin/python3 -m thinlayer_tools.plots.case1 figure3    output/case1-figure3
+    /usr/bin/python3 -m thinlayer_tools.plots.case1 frictional output/case1-figure4
+    /usr/bin/python3 -m thinlayer_tools.plots.case1 frictional output/case1-figure5
 
 Each reads DIR/sweep.csv and the runs' history.csv files and writes PNG
 (and for table1 a Markdown and a CSV table) into DIR.
@@ -21,10 +21,10 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-import closed_form  # noqa: E402
-import results  # noqa: E402
-from report import figures  # noqa: E402
-from report.case1 import slip_panel  # noqa: E402
+from thinlayer_tools import closed_form  # noqa: E402
+from thinlayer_tools import results  # noqa: E402
+from thinlayer_tools.report import figures  # noqa: E402
+from thinlayer_tools.report.case1 import slip_panel  # noqa: E402
 
 
 def read_csv(path):
@@ -49,7 +49,7 @@ def table1(directory):
 
     lines = ["# Table 1: P_ult / C_w, computed against 1/(sin a cos a)", "",
              "'layer <=' is the upper bound of the layer the mesh models (a slip plane",
-             "inside it, scripts/closed_form.py): its exact collapse load is at most that.", ""]
+             "inside it, thinlayer_tools/closed_form.py): its exact collapse load is at most that.", ""]
     flat = [["alpha", "analytic", "aspect_ratio", "tolerance", "computed",
              "relative_error", "collapse_detected", "total_iterations"]]
     for tol in tolerances:

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Figure 12 and Table 2 of Griffiths (Case 4, passive earth pressure).
 
-    /usr/bin/python3 scripts/plot_case4.py SMOOTH_DIR ROUGH_SWEEP_DIR
+    /usr/bin/python3 -m thinlayer_tools.plots.case4 SMOOTH_DIR ROUGH_SWEEP_DIR
 
 SMOOTH_DIR is the output of prm/case4-smooth-wall.prm, ROUGH_SWEEP_DIR of
 prm/case4-figure12.prm (a sweep over the wall column's adhesion). Writes
@@ -17,7 +17,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-import results  # noqa: E402
+from thinlayer_tools import results  # noqa: E402
 
 CP2 = {0.0: 2.0, 0.5: 2.4, 1.0: 2.6}
 C_U = 1.0

@@ -24,7 +24,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-import results  # noqa: E402
+from thinlayer_tools import results  # noqa: E402
 
 
 SERIES = re.compile(r"(interface-(?:curve-)?\d+)-(\d+)\.csv$")

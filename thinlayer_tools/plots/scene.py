@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Curves and displacement vectors of one thinlayer run.
 
-    /usr/bin/python3 scripts/plot_scene.py OUTPUT_DIR [REFERENCE_LABEL]
+    /usr/bin/python3 -m thinlayer_tools.plots.scene OUTPUT_DIR [REFERENCE_LABEL]
 
 Reads OUTPUT_DIR/history.csv, summary.json and displacements.csv and writes
 load_displacement.png (load against displacement: converged states
@@ -21,8 +21,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-import results  # noqa: E402
-from report import figures  # noqa: E402
+from thinlayer_tools import results  # noqa: E402
+from thinlayer_tools.report import figures  # noqa: E402
 
 
 def main(directory, reference_label="analytic", load_label="load (the scene's Load measure)",

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Stability map of a sweep over aspect ratio and tolerance.
 
-    /usr/bin/python3 scripts/plot_stability.py OUTPUT_DIR
+    /usr/bin/python3 -m thinlayer_tools.plots.stability OUTPUT_DIR
 
 Reads OUTPUT_DIR/sweep.csv (swept over aspect_ratio and Solver/Tolerance)
 and each run's history.csv, and writes stability.png: for every aspect ratio
@@ -20,7 +20,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-import results  # noqa: E402
+from thinlayer_tools import results  # noqa: E402
 
 
 def main(directory):

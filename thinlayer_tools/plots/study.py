@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Error against the analytic value, and cost, over a thinlayer sweep.
 
-    /usr/bin/python3 scripts/plot_study.py OUTPUT_DIR X_NAME
+    /usr/bin/python3 -m thinlayer_tools.plots.study OUTPUT_DIR X_NAME
 
 Reads OUTPUT_DIR/sweep.csv (X_NAME is one of the swept names, e.g.
 aspect_ratio; every combination of the other swept names is a series) and
@@ -20,7 +20,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-import results  # noqa: E402
+from thinlayer_tools import results  # noqa: E402
 
 
 def value(text):

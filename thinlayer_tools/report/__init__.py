@@ -8,5 +8,5 @@ page      the HTML page: sections, tables, embedded images, verdicts
 runs      the runs of a reproduction (summaries, sweeps, paths) as sections read them
 case1, footings, case4, methods
           the sections: what the paper shows, what thinlayer computes, and
-          the verdict, from the runs of scripts/reproduce.py
+          the verdict, from the runs of thinlayer_tools/reproduce.py
 """

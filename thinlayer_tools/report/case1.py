@@ -4,10 +4,10 @@ import math
 
 import matplotlib.pyplot as plt
 
-import closed_form
-import results
-from report import figures, page
-from report.page import Section
+from thinlayer_tools import closed_form
+from thinlayer_tools import results
+from thinlayer_tools.report import figures, page
+from thinlayer_tools.report.page import Section
 
 # Table 1 as printed: P_ult / C_w to two decimals.
 TABLE1 = {10: 5.85, 20: 3.11, 30: 2.31, 40: 2.03, 45: 2.00, 50: 2.03, 60: 2.31, 70: 3.11, 80: 5.85}
@@ -71,7 +71,7 @@ def table1(runs, quick):
         "The closed form matches every printed value to its two decimals (largest "
         "difference after rounding %.3f). Beyond the paper, the thin layer computed: the "
         "default method collapsed in %d of %d runs, %d of them at or below the layer's own "
-        "upper bound (scripts/closed_form.py) within the 0.5%% the collapse is bracketed "
+        "upper bound (thinlayer_tools/closed_form.py) within the 0.5%% the collapse is bracketed "
         "to. A layer of finite thickness can slide on a plane "
         "inside it, so at small and large alpha a thick layer (aspect ratio 10) is weaker "
         "than the interface Table 1 describes; the runs above that bound are the "

@@ -3,10 +3,10 @@
 zero-thickness elements."""
 import matplotlib.pyplot as plt
 
-import closed_form
-import results
-from report import figures, page
-from report.page import Section
+from thinlayer_tools import closed_form
+from thinlayer_tools import results
+from thinlayer_tools.report import figures, page
+from thinlayer_tools.report.page import Section
 
 # Table 2 (CP2): K_pc by C_w / c_u.
 CP2 = {0.0: 2.0, 0.5: 2.4, 1.0: 2.6}

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Check a reproduction report the way a reader gets it: in a browser.
 
-    /usr/bin/python3 scripts/check_report.py REPORT.html [--screenshot PNG]
+    /usr/bin/python3 -m thinlayer_tools.report.check REPORT.html [--screenshot PNG]
 
 Fails (exit 1, naming what is wrong) unless
 - the page holds a section for each of the paper's items (Table 1,
@@ -122,10 +122,10 @@ def main():
         os.path.abspath(arguments.report)), "screenshot.png")
     found = problems(arguments.report, screenshot)
     for problem in found:
-        print("check_report: %s: %s" % (arguments.report, problem), file=sys.stderr)
+        print("thinlayer_tools.report.check: %s: %s" % (arguments.report, problem), file=sys.stderr)
     if found:
         sys.exit(1)
-    print("check_report: %s renders in Chromium (%s) and holds every paper item"
+    print("thinlayer_tools.report.check: %s renders in Chromium (%s) and holds every paper item"
           % (arguments.report, screenshot))
 
 

@@ -19,7 +19,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.collections import LineCollection, PolyCollection  # noqa: E402
 from matplotlib.patches import Patch  # noqa: E402
 
-import results  # noqa: E402
+from thinlayer_tools import results  # noqa: E402
 
 # Faces of the mesh drawings by the physical surface's name; others grey.
 MATERIAL_COLOURS = {"interface": "#d62728", "footing": "#7f7f7f", "wall": "#7f7f7f",

@@ -5,9 +5,9 @@ import math
 
 import matplotlib.pyplot as plt
 
-import results
-from report import figures
-from report.page import Section
+from thinlayer_tools import results
+from thinlayer_tools.report import figures
+from thinlayer_tools.report.page import Section
 
 # The paper's failure loads over the sliding load, read from its text,
 # with the band we read its words as: "around 10% higher" (Case 2) and

@@ -9,9 +9,9 @@ import matplotlib.pyplot as plt
 from matplotlib.colors import ListedColormap
 from matplotlib.patches import Patch
 
-import results
-from report import figures
-from report.page import Section
+from thinlayer_tools import results
+from thinlayer_tools.report import figures
+from thinlayer_tools.report.page import Section
 
 METHODS = ("viscoplastic", "default", "newton")
 # Map categories: colour and legend.

@@ -4,7 +4,7 @@ import os
 import platform
 import subprocess
 
-import results
+from thinlayer_tools import results
 
 # The solver entries of the paper's method and of thinlayer's default one.
 PAPER = ("Solver/Method=viscoplastic", "Solver/Convergence criterion=body loads")

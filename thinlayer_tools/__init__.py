@@ -1,0 +1,36 @@
+"""thinlayer's Python side: reading results, closed forms, the cases'
+meshes, plots and the reproduction report.
+
+Run its programs as modules from the repository's top folder (or with it on
+PYTHONPATH), with Debian's own python3 and matplotlib:
+
+    /usr/bin/python3 -m thinlayer_tools.reproduce [--quick]
+    /usr/bin/python3 -m thinlayer_tools.plots.scene output/prandtl-strip-footing "(2 + pi) c"
+    /usr/bin/python3 -m benchmarks.outcomes --quick
+
+results       history.csv, summary.json, sweep.csv read as every script should
+closed_form   the analytic collapse loads and bounds the cases are checked against
+cases         the benchmark cases' parameter files and mesh levels, defined once
+plots         one chart program per study
+report        the sections of the reproduction report, and its check in Chromium
+reproduce     the paper reproduced into one report
+"""
+import os
+import subprocess
+
+TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+"""The repository's top folder."""
+
+THINLAYER = os.environ.get("THINLAYER", os.path.join(TOP, "build", "thinlayer"))
+"""The thinlayer executable (the Release build unless $THINLAYER names another)."""
+
+
+def run_module(module, arguments, **options):
+    """Run `python3 -m MODULE ARGUMENTS` (a plot, a benchmark) as a child
+    process that imports this package as its parent does; OPTIONS go to
+    subprocess.run."""
+    environment = dict(os.environ)
+    path = environment.get("PYTHONPATH")
+    environment["PYTHONPATH"] = TOP + (os.pathsep + path if path else "")
+    return subprocess.run(["/usr/bin/python3", "-m", module] + list(arguments),
+                          env=environment, **options)
