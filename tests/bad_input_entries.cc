@@ -2,7 +2,8 @@
 // mean nothing in the scene (an empty load programme, no load at all, a
 // body free to rotate, Fourier entries in plane strain, a point given for
 // a boundary average, a repeated component or parameter, a sweep that
-// names a parameter twice, sweeps itself or has more runs than the cap)
+// names a parameter twice, sweeps itself or has more runs than the cap,
+// expectations of the run that cannot be met or mean nothing)
 // are refused with one clear message naming the file and the entry, a
 // non-zero exit, and the previous run and a file of the user's beside it
 // kept byte for byte.
@@ -119,6 +120,65 @@ namespace
   }
 
 
+  /// What a verification scene expects of its run: malformed expectations
+  /// are bad input; a run that misses a well-formed one is written (it is
+  /// a result) and exits with status 4, and one that meets it with 0.
+  void
+  check_reference_expectations()
+  {
+    check("an expected outcome that is none (collapsed)",
+          {"good.prm", "-s", "Reference/Expected outcome=collapsed"});
+    check("an expected load range with low > high",
+          {"good.prm",
+           "-s",
+           "Reference/Analytic load=1",
+           "-s",
+           "Reference/Expected load range=2, 1"});
+    check("an expected load range of one number",
+          {"good.prm",
+           "-s",
+           "Reference/Analytic load=1",
+           "-s",
+           "Reference/Expected load range=1"});
+
+    // The valid scene is elastic: it completes at load factor 1.
+    const auto run = [](const std::string              &what,
+                        const std::vector<std::string> &expectations) {
+      std::vector<std::string> arguments = {"good.prm",
+                                            "-s",
+                                            "Output/Directory=expectations",
+                                            "-s",
+                                            "Reference/Analytic load=1"};
+      for (const std::string &e : expectations)
+        {
+          arguments.push_back("-s");
+          arguments.push_back(e);
+        }
+      std::ostringstream out, err;
+      const int   status = thinlayer::run_command_line(arguments, out, err);
+      std::string check_line;
+      std::istringstream lines(out.str());
+      for (std::string line; std::getline(lines, line);)
+        if (line.find("reference check") != std::string::npos)
+          check_line = line;
+      std::cout << "* " << what << "\n  exit status " << status
+                << ", summary written: "
+                << (std::filesystem::exists("expectations/summary.json") ? "yes"
+                                                                         : "no")
+                << "\n"
+                << check_line << "\n  " << err.str() << '\n';
+      std::filesystem::remove_all("expectations");
+    };
+    run("a run that meets its expectations",
+        {"Reference/Expected outcome=completed",
+         "Reference/Expected load range=0.999999, 1.000001"});
+    run("a run whose outcome misses the expected one",
+        {"Reference/Expected outcome=collapse"});
+    run("a run whose load misses the expected range",
+        {"Reference/Expected load range=1.5, 2"});
+  }
+
+
   /// Sweeps that cannot mean what they say.
   void
   check_sweeps()
@@ -153,4 +213,5 @@ main()
   check_supports();
   check_meaningless_entries();
   check_sweeps();
+  check_reference_expectations();
 }

@@ -1,13 +1,14 @@
 #include <deal.II/base/exceptions.h>
 
 #include <thinlayer/app/command_line.h>
-#include <thinlayer/base/input_error.h>
-#include <thinlayer/base/interruption.h>
-#include <thinlayer/parameters/parameter_text.h>
-#include <thinlayer/parameters/parameters.h>
-#include <thinlayer/output/results_directory.h>
 #include <thinlayer/app/run.h>
 #include <thinlayer/app/sweep.h>
+#include <thinlayer/base/input_error.h>
+#include <thinlayer/base/interruption.h>
+#include <thinlayer/output/reference_check.h>
+#include <thinlayer/output/results_directory.h>
+#include <thinlayer/parameters/parameter_text.h>
+#include <thinlayer/parameters/parameters.h>
 
 #include <csignal>
 #include <sstream>
@@ -110,12 +111,16 @@ namespace thinlayer
         // A file size limit (ulimit -f) then fails the write (EFBIG), which
         // is reported like a full disk, instead of killing the program.
         std::signal(SIGXFSZ, SIG_IGN);
-        const Parameters parameters  = ParameterReader().read(file, overrides);
-        unsigned int     failed_runs = 0;
+        const Parameters parameters = ParameterReader().read(file, overrides);
+        SweepResult      result;
         if (parameters.sweep.values.empty())
-          run_scene(parameters, out);
+          {
+            const RunSummary summary = run_scene(parameters, out);
+            result.missed_references =
+              check_reference(parameters.reference, summary).passed ? 0 : 1;
+          }
         else
-          failed_runs = run_sweep(file, overrides, parameters, out);
+          result = run_sweep(file, overrides, parameters, out);
         out.flush();
         if (!out)
           {
@@ -126,12 +131,20 @@ namespace thinlayer
         // 128 + the signal, as a shell reports a process it ended.
         if (interrupted())
           return 128 + interruption_signal();
-        if (failed_runs > 0)
+        if (result.failed_runs > 0)
           {
-            err << "thinlayer: " << failed_runs
+            err << "thinlayer: " << result.failed_runs
                 << " run(s) of the sweep ended in an error (sweep.csv, "
                    "column error)\n";
             return 1;
+          }
+        if (result.missed_references > 0)
+          {
+            err << "thinlayer: " << result.missed_references
+                << " run(s) missed what Reference/Expected outcome or "
+                   "Expected load range asks of them (the line 'reference "
+                   "check FAILED' says what)\n";
+            return 4;
           }
         return 0;
       }

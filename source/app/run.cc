@@ -1,17 +1,18 @@
 #include <deal.II/base/timer.h>
 
 #include <thinlayer/analysis/analysis.h>
-#include <thinlayer/postprocess/interface_profile.h>
-#include <thinlayer/base/interruption.h>
-#include <thinlayer/stepping/load_stepping.h>
-#include <thinlayer/postprocess/monitors.h>
-#include <thinlayer/output/output_writer.h>
-#include <thinlayer/output/results_directory.h>
 #include <thinlayer/app/run.h>
-#include <thinlayer/stepping/run_outcome.h>
-#include <thinlayer/mesh/scene.h>
-#include <thinlayer/stepping/step_progress.h>
+#include <thinlayer/base/interruption.h>
 #include <thinlayer/base/text_format.h>
+#include <thinlayer/mesh/scene.h>
+#include <thinlayer/output/output_writer.h>
+#include <thinlayer/output/reference_check.h>
+#include <thinlayer/output/results_directory.h>
+#include <thinlayer/postprocess/interface_profile.h>
+#include <thinlayer/postprocess/monitors.h>
+#include <thinlayer/stepping/load_stepping.h>
+#include <thinlayer/stepping/run_outcome.h>
+#include <thinlayer/stepping/step_progress.h>
 
 #include <cmath>
 #include <filesystem>
@@ -76,6 +77,7 @@ namespace thinlayer
                   const bool               on_mechanism,
                   const LoadStepping::Next next,
                   const bool               probe,
+                  const bool               print_iterations,
                   std::ostream            &out)
     {
       out << "  step " << printf("%4.0f", step) << "  load factor "
@@ -87,8 +89,11 @@ namespace thinlayer
                                                   : "not accepted");
       else if (result.converged)
         out << "  load " << printf("%12.5e", load) << "  displacement "
-            << printf("%12.5e", displacement) << "  iterations "
-            << printf("%4.0f", result.iterations) << "  converged";
+            << printf("%12.5e", displacement)
+            << (print_iterations
+                  ? "  iterations " + printf("%4.0f", result.iterations)
+                  : std::string())
+            << "  converged";
       else if (next == LoadStepping::Next::retry)
         out << "  failed: cut back (its state is in history.csv)";
       else if (result.non_finite)
@@ -332,6 +337,7 @@ namespace thinlayer
                     a.on_mechanism,
                     next,
                     probe,
+                    p.output.print_iterations,
                     out);
     }
 
@@ -514,6 +520,9 @@ namespace thinlayer
       summary.total_iterations       = run.total_iterations;
       summary.converged_iterations   = run.converged_iterations;
       print_outcome(p, run, summary, out);
+      if (const ReferenceCheck check = check_reference(p.reference, summary);
+          check.checked)
+        out << "  reference check " << check.description << '\n';
       summary.timing = timer.get_summary_data(TimerOutput::total_wall_time);
       summary.seconds_per_substitution = analysis.substitution_seconds();
       summary.seconds_per_iteration =

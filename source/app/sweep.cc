@@ -1,11 +1,12 @@
 #include <deal.II/base/timer.h>
 
-#include <thinlayer/base/input_error.h>
-#include <thinlayer/base/interruption.h>
-#include <thinlayer/output/results_directory.h>
 #include <thinlayer/app/run.h>
 #include <thinlayer/app/sweep.h>
+#include <thinlayer/base/input_error.h>
+#include <thinlayer/base/interruption.h>
 #include <thinlayer/base/text_format.h>
+#include <thinlayer/output/reference_check.h>
+#include <thinlayer/output/results_directory.h>
 
 #include <cmath>
 #include <cstdio>
@@ -89,7 +90,9 @@ namespace thinlayer
     /// One line of progress for a finished run: its outcome, and its
     /// collapse load where it has one.
     void
-    print_run(const RunSummary &s, std::ostream &out)
+    print_run(const RunSummary &s,
+              const bool        print_iterations,
+              std::ostream     &out)
     {
       out << s.outcome;
       if (std::isfinite(s.collapse_load))
@@ -98,7 +101,8 @@ namespace thinlayer
       else
         out << ", last converged load "
             << text_format::printf("%.5g", s.last_converged_load);
-      out << ", " << s.converged_iterations << " iterations to it";
+      if (print_iterations)
+        out << ", " << s.converged_iterations << " iterations to it";
       if (std::isfinite(s.relative_error))
         out << ", relative error "
             << text_format::printf("%+.3e", s.relative_error);
@@ -148,7 +152,8 @@ namespace thinlayer
             const std::string              &directory,
             const std::string              &named,
             std::ostream                   &csv,
-            std::ostream                   &out)
+            std::ostream                   &out,
+            unsigned int                   &missed_references)
     {
       std::ostringstream run_output;
       try
@@ -156,7 +161,13 @@ namespace thinlayer
           const Parameters p = ParameterReader().read(file, overrides);
           const RunSummary s = run_scene_in(p, directory, run_output);
           csv << ',' << s.csv_row() << ",\n";
-          print_run(s, out);
+          print_run(s, p.output.print_iterations, out);
+          if (const ReferenceCheck check = check_reference(p.reference, s);
+              check.checked)
+            {
+              out << "    reference check " << check.description << '\n';
+              missed_references += check.passed ? 0 : 1;
+            }
           return true;
         }
       catch (const Interrupted &e)
@@ -187,7 +198,7 @@ namespace thinlayer
   } // namespace
 
 
-  unsigned int
+  SweepResult
   run_sweep(const std::string              &file,
             const std::vector<std::string> &overrides,
             const Parameters               &base,
@@ -234,7 +245,7 @@ namespace thinlayer
 
     out << "thinlayer: sweep of " << combinations.size() << " runs into "
         << base.output.directory << '\n';
-    unsigned int failed_runs = 0;
+    SweepResult result;
     for (unsigned int r = 0; r < combinations.size(); ++r)
       {
         csv << r + 1;
@@ -251,8 +262,9 @@ namespace thinlayer
                        directory_of(r).substr(base.output.directory.size()),
                      directory_of(r),
                      csv,
-                     out))
-          ++failed_runs;
+                     out,
+                     result.missed_references))
+          ++result.failed_runs;
         csv << std::flush;
         if (!csv)
           throw WriteError("cannot write sweep.csv (Output/Directory '" +
@@ -271,6 +283,6 @@ namespace thinlayer
     results.commit();
     out << "  results in " << base.output.directory << "/sweep.csv"
         << std::endl;
-    return failed_runs;
+    return result;
   }
 } // namespace thinlayer

@@ -450,6 +450,22 @@ namespace thinlayer
       "Closed-form value the final load is compared with, as an "
       "expression of the geometry parameters (e.g. "
       "'1/(sin(alpha*pi/180)*cos(alpha*pi/180))'); empty for none.");
+    prm.declare_entry(
+      "Expected outcome",
+      "",
+      Patterns::Anything(),
+      "The outcome a run of this scene must end in (collapse, plateau, "
+      "completed or not converged), for scenes that verify a closed form: "
+      "a run that ends otherwise is reported and exits with status 4. "
+      "Empty: any.");
+    prm.declare_entry(
+      "Expected load range",
+      "",
+      Patterns::Anything(),
+      "Two numbers 'low, high': the run's load (its collapse load where it "
+      "has one, else its last converged load) must lie in [low, high] "
+      "times the analytic load (in load units where there is none), or "
+      "the run is reported and exits with status 4. Empty: not checked.");
     prm.leave_subsection();
   }
 
@@ -497,6 +513,30 @@ namespace thinlayer
                            "expected a finite, non-zero value, got " +
                              std::to_string(analytic_load));
       }
+
+    expected_outcome = Utilities::trim(prm.get("Expected outcome"));
+    if (!expected_outcome.empty() && expected_outcome != "collapse" &&
+        expected_outcome != "plateau" && expected_outcome != "completed" &&
+        expected_outcome != "not converged")
+      throw InputError(file,
+                       "Reference/Expected outcome",
+                       "expected collapse, plateau, completed, not converged "
+                       "or nothing, got '" +
+                         expected_outcome + "'");
+
+    const std::string range = Utilities::trim(prm.get("Expected load range"));
+    if (!range.empty())
+      {
+        const auto ends = Utilities::split_string_list(range, ',');
+        if (ends.size() != 2 || !to_number(ends[0], expected_low) ||
+            !to_number(ends[1], expected_high) ||
+            !(expected_low <= expected_high))
+          throw InputError(file,
+                           "Reference/Expected load range",
+                           "expected two numbers 'low, high' with low <= "
+                           "high, got '" +
+                             range + "'");
+      }
     prm.leave_subsection();
   }
 
@@ -539,6 +579,13 @@ namespace thinlayer
                       Patterns::Bool(),
                       "Print wall time and the timer table on screen "
                       "(timings always go to summary.json).");
+    prm.declare_entry("Print iterations",
+                      "true",
+                      Patterns::Bool(),
+                      "Print each load step's iteration count on screen "
+                      "(history.csv always has it). The tests turn it off "
+                      "where the count is not their truth: it can change by "
+                      "one with the BLAS's rounding.");
     prm.leave_subsection();
   }
 
@@ -554,6 +601,7 @@ namespace thinlayer
     vtu_subdivisions  = prm.get_integer("VTU subdivisions");
     view_slices       = prm.get_integer("3D view slices");
     print_timing      = prm.get_bool("Print timing");
+    print_iterations  = prm.get_bool("Print iterations");
     progress_interval = prm.get_double("Progress interval");
     prm.leave_subsection();
   }

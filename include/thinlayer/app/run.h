@@ -1,8 +1,8 @@
 #ifndef thinlayer_app_run_h
 #define thinlayer_app_run_h
 
-#include <thinlayer/parameters/parameters.h>
 #include <thinlayer/output/run_summary.h>
+#include <thinlayer/parameters/parameters.h>
 
 #include <ostream>
 

@@ -9,6 +9,14 @@
 
 namespace thinlayer
 {
+  /// What the program's exit status is made of: runs that ended in an
+  /// error, and runs that missed the truth their Reference section names.
+  struct SweepResult
+  {
+    unsigned int failed_runs       = 0;
+    unsigned int missed_references = 0;
+  };
+
   /**
    * Run the scene of @p file once for every combination of the value lists
    * in its Sweep section (a cartesian product), each run in run-NNN of the
@@ -23,9 +31,10 @@ namespace thinlayer
    * @param overrides the command line's overrides, applied to every run.
    * @param base      the parameters as read without the sweep.
    * @return how many runs ended in an error (not in non-convergence, which
-   * is a result): the program then exits non-zero.
+   * is a result) and how many missed what the Reference section expects:
+   * the program then exits non-zero.
    */
-  unsigned int
+  SweepResult
   run_sweep(const std::string              &file,
             const std::vector<std::string> &overrides,
             const Parameters               &base,

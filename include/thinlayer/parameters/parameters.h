@@ -6,7 +6,9 @@
 
 #include <thinlayer/base/name_table.h>
 
+#include <cmath>
 #include <iosfwd>
+#include <limits>
 #include <map>
 #include <set>
 #include <string>
@@ -385,11 +387,31 @@ namespace thinlayer
   };
 
 
-  /// "Reference": the analytic value of the load the run is compared with.
+  /**
+   * "Reference": the analytic value of the load the run is compared with,
+   * and what a scene that verifies a closed form expects of its run: the
+   * outcome and the range, as multiples of the analytic load, its load must
+   * end in. A run that misses them is reported and exits non-zero, so a
+   * verification scene fails on its own truth, whatever its screen output.
+   */
   struct ReferenceParameters
   {
     /// Evaluated from the geometry parameters; NaN where none is declared.
     double analytic_load;
+    /// The outcome the run must end in; empty for any.
+    std::string expected_outcome;
+    /// The range, as multiples of analytic_load (in load units where there
+    /// is none), the run's load (its collapse load where it has one, else
+    /// its last converged load) must lie in; NaN for no check.
+    double expected_low  = std::numeric_limits<double>::quiet_NaN();
+    double expected_high = std::numeric_limits<double>::quiet_NaN();
+
+    /// Whether the parameter file expects anything of the run.
+    bool
+    expects_something() const
+    {
+      return !expected_outcome.empty() || std::isfinite(expected_low);
+    }
 
     static void
     declare(ParameterHandler &prm);
@@ -429,6 +451,10 @@ namespace thinlayer
     /// Fourier: slices of the revolved 3D view over the circle; 0 for none.
     unsigned int view_slices;
     bool         print_timing;
+    /// Whether the screen shows iteration counts (history.csv always has
+    /// them): a count can change with rounding, which the tests' compared
+    /// screen output must not depend on.
+    bool print_iterations;
     /// Seconds between a long step's progress lines; 0 for none.
     double progress_interval;
 
