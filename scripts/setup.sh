@@ -90,8 +90,8 @@ else
   # their VTU output, each about 20 s.
   mkdir -p "$build/valgrind"
   for scene in case2_default_thin fourier_cylinder_plastic case2_zero_thickness; do
-    echo "thinlayer setup: valgrind on tests/$scene.prm"
-    if ! valgrind -q --error-exitcode=99 "$build/thinlayer" "$top/tests/$scene.prm" \
+    echo "thinlayer setup: valgrind on tests/scenes/$scene.prm"
+    if ! valgrind -q --error-exitcode=99 "$build/thinlayer" "$top/tests/scenes/$scene.prm" \
          -s "Output/Directory=$build/valgrind/$scene" > "$build/valgrind/$scene.log" 2>&1; then
       grep -E "==[0-9]+==" "$build/valgrind/$scene.log" | head -40
       echo "thinlayer setup: valgrind found errors in $scene; the log is $build/valgrind/$scene.log" >&2

@@ -7,7 +7,11 @@ namespace thinlayer
   AndersonAcceleration::AndersonAcceleration(const unsigned int depth)
     : depth(depth)
     , has_previous(false)
-  {}
+  {
+    AssertThrow(depth > 0,
+                ExcMessage(
+                  "Anderson acceleration needs a depth of at least 1."));
+  }
 
 
   void

@@ -27,6 +27,7 @@ namespace thinlayer
   class AndersonAcceleration
   {
   public:
+    /// @p depth: how many previous iterates are combined, at least 1.
     explicit AndersonAcceleration(const unsigned int depth);
 
     /// Forget the history (at the start of a load step).

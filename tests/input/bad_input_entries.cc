@@ -1,0 +1,217 @@
+// Truth checked: entries that would crash the run, make it meaningless or
+// mean nothing in the scene (an empty load programme, no load at all, a
+// body free to rotate, Fourier entries in plane strain, a point given for
+// a boundary average, a repeated component or parameter, a sweep that
+// names a parameter twice, sweeps itself or has more runs than the cap,
+// expectations of the run that cannot be met or mean nothing)
+// are refused with one clear message naming the file and the entry, a
+// non-zero exit, and the previous run and a file of the user's beside it
+// kept byte for byte.
+#include "../common/bad_input_utilities.h"
+
+using namespace bad_input;
+
+namespace
+{
+  const std::string meshes = std::string(SOURCE_DIR) + "/../../meshes/";
+
+  /// Load programmes and loads that apply nothing.
+  void
+  check_loads()
+  {
+    check("an empty load programme (0*0.1)",
+          {"good.prm", "-s", "Loading/Load increments=0*0.1"});
+    check("a load programme of one step of 0",
+          {"good.prm", "-s", "Loading/Load increments=0"});
+    check("a step of 0 inside a programme",
+          {"good.prm", "-s", "Loading/Load increments=0.5, 0, 0.5"});
+    check("no load at all (a traction of 0)",
+          {"good.prm", "-s", "Boundary 2/Traction=0; 0"});
+    check("a load scale of 0", {"good.prm", "-s", "Monitors/Load scale=0"});
+    check("a displacement scale of 0",
+          {"good.prm", "-s", "Monitors/Displacement scale=0"});
+  }
+
+
+  /// Supports that leave a rigid-body motion free, and interface elements
+  /// too soft to be factorised: each blamed on what is at fault.
+  void
+  check_supports()
+  {
+    // Tangential supports only: x along the bottom, y along the left
+    // side. Both translations are held; the rotation about the corner
+    // (0, 0) is not.
+    write("rotation.prm",
+          "subsection Mesh\n  set File = " + meshes +
+            "block.geo\nend\n"
+            "subsection Material 1\nend\n"
+            "subsection Boundary 1\n  set Constrained components = x\nend\n"
+            "subsection Boundary 4\n  set Constrained components = y\nend\n"
+            "subsection Boundary 3\n  set Traction = 1; -1\nend\n"
+            "subsection Monitors\n  set Displacement boundary id = 3\nend\n"
+            "subsection Output\n  set Directory = results\nend\n");
+    check("a body free to rotate about a corner", {"rotation.prm"});
+    check("a body free to rotate about its lower right corner, shifted",
+          {"rotation.prm",
+           "-s",
+           "Boundary 4/Constrained components=",
+           "-s",
+           "Boundary 2/Constrained components=y",
+           "-s",
+           "Mesh/Geometry parameters=x0=3"});
+
+    write("soft-interface.prm",
+          "subsection Mesh\n  set File = " + meshes +
+            "interface-patch.geo\nend\n"
+            "subsection Material 1\nend\n"
+            "subsection Interface curve 3\n  set Shear stiffness = 1e-20\n"
+            "end\n"
+            "subsection Boundary 1\n  set Constrained components = x, y\nend\n"
+            "subsection Boundary 2\n  set Traction = 1; -1\nend\n"
+            "subsection Monitors\n  set Displacement boundary id = 2\nend\n"
+            "subsection Output\n  set Directory = results\nend\n");
+    check("an interface curve with a shear stiffness of 1e-20 E/h",
+          {"soft-interface.prm"});
+    check("an adhesion on an elastic interface curve",
+          {"soft-interface.prm",
+           "-s",
+           "Interface curve 3/Shear stiffness=1e5",
+           "-s",
+           "Interface curve 3/Adhesion=1"});
+    check("a tensile strength on an elastic interface curve",
+          {"soft-interface.prm",
+           "-s",
+           "Interface curve 3/Shear stiffness=1e5",
+           "-s",
+           "Interface curve 3/Tensile strength=0"});
+  }
+
+
+  /// Entries that mean nothing in the scene, and values given twice.
+  void
+  check_meaningless_entries()
+  {
+    check("Fourier harmonics in plane strain",
+          {"good.prm", "-s", "Kinematics/Harmonics=1"});
+    check("Fourier stations in plane strain",
+          {"good.prm", "-s", "Kinematics/Stations=0, 90, 180"});
+    check("a Fourier axis boundary id in plane strain",
+          {"good.prm", "-s", "Kinematics/Axis boundary id=1"});
+    check("a displacement angle in plane strain",
+          {"good.prm", "-s", "Monitors/Displacement angle=90"});
+    check("a point given where the measure is a boundary average",
+          {"good.prm", "-s", "Monitors/Displacement point=0.5, 0.5"});
+    check("a boundary id given where the measure is a point",
+          {"good.prm",
+           "-s",
+           "Monitors/Displacement measure=point",
+           "-s",
+           "Monitors/Displacement point=0.5, 0.5"});
+    check("a reaction's boundary id where the load measure is the load factor",
+          {"good.prm", "-s", "Monitors/Load boundary id=1"});
+    check("a stress component where the load measure is the load factor",
+          {"good.prm", "-s", "Monitors/Load stress component=yy"});
+    check("a constrained component given twice (y, y)",
+          {"good.prm", "-s", "Boundary 1/Constrained components=x, y, y"});
+    check("a geometry parameter given twice",
+          {"good.prm", "-s", "Mesh/Geometry parameters=height=1, height=2"});
+    check("an analytic load that uses x (only geometry parameters may)",
+          {"good.prm", "-s", "Reference/Analytic load=2*x"});
+  }
+
+
+  /// What a verification scene expects of its run: malformed expectations
+  /// are bad input; a run that misses a well-formed one is written (it is
+  /// a result) and exits with status 4, and one that meets it with 0.
+  void
+  check_reference_expectations()
+  {
+    check("an expected outcome that is none (collapsed)",
+          {"good.prm", "-s", "Reference/Expected outcome=collapsed"});
+    check("an expected load range with low > high",
+          {"good.prm",
+           "-s",
+           "Reference/Analytic load=1",
+           "-s",
+           "Reference/Expected load range=2, 1"});
+    check("an expected load range of one number",
+          {"good.prm",
+           "-s",
+           "Reference/Analytic load=1",
+           "-s",
+           "Reference/Expected load range=1"});
+
+    // The valid scene is elastic: it completes at load factor 1.
+    const auto run = [](const std::string              &what,
+                        const std::vector<std::string> &expectations) {
+      std::vector<std::string> arguments = {"good.prm",
+                                            "-s",
+                                            "Output/Directory=expectations",
+                                            "-s",
+                                            "Reference/Analytic load=1"};
+      for (const std::string &e : expectations)
+        {
+          arguments.push_back("-s");
+          arguments.push_back(e);
+        }
+      std::ostringstream out, err;
+      const int   status = thinlayer::run_command_line(arguments, out, err);
+      std::string check_line;
+      std::istringstream lines(out.str());
+      for (std::string line; std::getline(lines, line);)
+        if (line.find("reference check") != std::string::npos)
+          check_line = line;
+      std::cout << "* " << what << "\n  exit status " << status
+                << ", summary written: "
+                << (std::filesystem::exists("expectations/summary.json") ? "yes"
+                                                                         : "no")
+                << "\n"
+                << check_line << "\n  " << err.str() << '\n';
+      std::filesystem::remove_all("expectations");
+    };
+    run("a run that meets its expectations",
+        {"Reference/Expected outcome=completed",
+         "Reference/Expected load range=0.999999, 1.000001"});
+    run("a run whose outcome misses the expected one",
+        {"Reference/Expected outcome=collapse"});
+    run("a run whose load misses the expected range",
+        {"Reference/Expected load range=1.5, 2"});
+  }
+
+
+  /// Sweeps that cannot mean what they say.
+  void
+  check_sweeps()
+  {
+    check("a sweep that names a parameter twice",
+          {"good.prm", "-s", "Sweep/Values=height = 2, 3; height = 4"});
+    check("a sweep that names an entry twice (spelt with spaces)",
+          {"good.prm",
+           "-s",
+           "Sweep/Values=Solver/Tolerance = 1e-3; Solver / Tolerance = "
+           "1e-4"});
+    check("a sweep over Output/Directory",
+          {"good.prm", "-s", "Sweep/Values=Output/Directory = a, b"});
+    check("a sweep over the sweep itself",
+          {"good.prm", "-s", "Sweep/Values=Sweep/Values = a, b"});
+    std::string many = "Sweep/Values=height = ";
+    for (unsigned int k = 1; k <= 1000; ++k)
+      many += std::to_string(k) + (k < 1000 ? ", " : "");
+    many += "; Solver/Tolerance = ";
+    for (unsigned int k = 1; k <= 50; ++k)
+      many += "1e-" + std::to_string(k % 9 + 2) + (k < 50 ? ", " : "");
+    check("a sweep of 1000 x 50 runs, over the cap", {"good.prm", "-s", many});
+  }
+} // namespace
+
+
+int
+main()
+{
+  write_valid_scene();
+  check_loads();
+  check_supports();
+  check_meaningless_entries();
+  check_sweeps();
+  check_reference_expectations();
+}

@@ -1,0 +1,211 @@
+// Truth checked: results never pass off overflow or failure as an answer.
+// Loads so large that stresses, tractions or their invariants overflow
+// (1e150 to 1e300, in cells of every yield law and in zero-thickness
+// elements) end the run as `not converged` with the reason "not finite",
+// exit status 0, never `completed` and never an internal error; no CSV
+// field of a result is empty (a non-finite number is written nan or inf);
+// a relative error against the analytic load exists only where the run
+// has a collapse load or completed every step; and the row of a sweep's
+// run that ended in an error has as many fields as the header, its message
+// under `error`. Release only (bad_output_numbers.release.output): deal.II's
+// debug library stops at the first non-finite vector norm, before the
+// program can report it, as in outcome_non_finite.
+#include "../common/bad_input_utilities.h"
+
+using namespace bad_input;
+
+namespace
+{
+  /// The fields of a CSV line (quotes as text_format::csv_field writes
+  /// them).
+  std::vector<std::string>
+  fields(const std::string &line)
+  {
+    std::vector<std::string> result(1);
+    bool                     quoted = false;
+    for (const char c : line)
+      if (c == '"')
+        quoted = !quoted;
+      else if (c == ',' && !quoted)
+        result.emplace_back();
+      else
+        result.back() += c;
+    return result;
+  }
+
+  /// The rows of a CSV file as maps from the header's names.
+  std::vector<std::map<std::string, std::string>>
+  rows_of(const std::string &file, unsigned int &empty_fields)
+  {
+    std::istringstream                              in(read_text(file));
+    std::string                                     line;
+    std::vector<std::map<std::string, std::string>> rows;
+    std::getline(in, line);
+    const auto header = fields(line);
+    empty_fields      = 0;
+    while (std::getline(in, line))
+      {
+        const auto values = fields(line);
+        rows.emplace_back();
+        for (unsigned int k = 0; k < values.size() && k < header.size(); ++k)
+          {
+            rows.back()[header[k]] = values[k];
+            empty_fields += values[k].empty() ? 1 : 0;
+          }
+        if (values.size() != header.size())
+          rows.back()["(field count)"] = std::to_string(values.size()) +
+                                         " fields, header " +
+                                         std::to_string(header.size());
+      }
+    return rows;
+  }
+
+  /// Run @p arguments and print how the run ended and what its files say.
+  void
+  overflow(const std::string &what, std::vector<std::string> arguments)
+  {
+    arguments.insert(
+      arguments.end(),
+      {"-s", "Output/Directory=numbers", "-s", "Output/Write VTU=false"});
+    std::ostringstream out, err;
+    const int         status = thinlayer::run_command_line(arguments, out, err);
+    unsigned int      empty  = 0;
+    const auto        rows   = rows_of("numbers/history.csv", empty);
+    const std::string reason = summary_entry("numbers", "reason");
+    std::cout << "* " << what << "\n  exit status " << status << ", outcome "
+              << summary_entry("numbers", "outcome") << ", reason "
+              << reason.substr(0, reason.find(" at ")) << "\"\n  rows "
+              << rows.size() << ", empty fields " << empty
+              << ", last row: non_finite "
+              << (rows.empty() ? "-" : rows.back().at("non_finite"))
+              << ", converged "
+              << (rows.empty() ? "-" : rows.back().at("converged"))
+              << ", max_yield_ratio "
+              << (rows.empty() ? "-" : rows.back().at("max_yield_ratio"))
+              << "\n  " << err.str() << '\n';
+  }
+
+  const std::string meshes = std::string(SOURCE_DIR) + "/../../meshes/";
+
+  void
+  check_overflow()
+  {
+    const std::vector<std::pair<std::string, std::string>> laws = {
+      {"tresca", ""},
+      {"von mises", ""},
+      {"mohr-coulomb", "Material 1/Friction angle=30"}};
+    for (const auto &[law, extra] : laws)
+      for (const char *load : {"1e200", "1e300"})
+        {
+          std::vector<std::string> arguments = {
+            "good.prm",
+            "-s",
+            "Material 1/Yield criterion=" + law,
+            "-s",
+            "Material 1/Cohesion=1",
+            "-s",
+            std::string("Loading/Load increments=") + load};
+          if (!extra.empty())
+            arguments.insert(arguments.end(), {"-s", extra});
+          overflow(std::string("a load of ") + load + " on a " + law +
+                     " material",
+                   arguments);
+        }
+
+    write("interface.prm",
+          "subsection Mesh\n  set File = " + meshes +
+            "interface-patch.geo\nend\n"
+            "subsection Material 1\nend\n"
+            "subsection Interface curve 3\n  set Slip criterion = tresca\n"
+            "  set Adhesion = 1\nend\n"
+            "subsection Boundary 1\n  set Constrained components = x, y\nend\n"
+            "subsection Boundary 2\n  set Traction = 1; -1\nend\n"
+            "subsection Monitors\n  set Displacement boundary id = 2\nend\n"
+            "subsection Solver\n  set Maximum iterations = 40\nend\n"
+            "subsection Loading\n  set Collapse resolution = 0\nend\n"
+            "subsection Output\n  set Directory = results\nend\n");
+    for (const char *load : {"1e10", "1e150", "1e300"})
+      overflow(std::string("a load of ") + load +
+                 " on zero-thickness elements (Tresca)",
+               {"interface.prm",
+                "-s",
+                std::string("Loading/Load increments=") + load});
+  }
+
+
+  /// Relative errors only where there is a value to compare.
+  void
+  check_relative_errors()
+  {
+    for (const auto &[what, arguments] :
+         std::vector<std::pair<std::string, std::vector<std::string>>>{
+           {"an elastic run that completed",
+            {"good.prm", "-s", "Reference/Analytic load=1"}},
+           {"a run that did not converge",
+            {"good.prm",
+             "-s",
+             "Reference/Analytic load=1",
+             "-s",
+             "Material 1/Yield criterion=tresca",
+             "-s",
+             "Material 1/Cohesion=0.01",
+             "-s",
+             "Loading/Collapse resolution=0",
+             "-s",
+             "Solver/Maximum iterations=5"}}})
+      {
+        std::vector<std::string> all = arguments;
+        all.insert(all.end(), {"-s", "Output/Directory=errors"});
+        std::ostringstream out, err;
+        const int          status = thinlayer::run_command_line(all, out, err);
+        std::cout << "* " << what << "\n  exit status " << status
+                  << ", outcome " << summary_entry("errors", "outcome")
+                  << ", relative_error "
+                  << summary_entry("errors", "relative_error") << ", printed: "
+                  << (out.str().find("relative error") != std::string::npos
+                        ? "yes"
+                        : "no")
+                  << "\n\n";
+      }
+  }
+
+
+  /// A sweep whose second run ends in an error (height 0: flat cells).
+  void
+  check_sweep_error_row()
+  {
+    std::ostringstream out, err;
+    const int          status =
+      thinlayer::run_command_line({"good.prm",
+                                   "-s",
+                                   "Sweep/Values=height = 1, 0",
+                                   "-s",
+                                   "Output/Directory=sweep"},
+                                  out,
+                                  err);
+    unsigned int empty = 0;
+    const auto   rows  = rows_of("sweep/sweep.csv", empty);
+    std::cout << "* a sweep whose second run ended in an error\n  exit status "
+              << status << ", rows " << rows.size();
+    for (const auto &row : rows)
+      std::cout << "\n    run " << row.at("run") << ": outcome '"
+                << row.at("outcome") << "', field count "
+                << (row.count("(field count)") ? row.at("(field count)")
+                                               : "as the header's")
+                << ", error '" << row.at("error").substr(0, 60) << "'";
+    std::cout << "\n\n";
+  }
+} // namespace
+
+
+int
+main()
+{
+  // This test's own directories, from a run before, start empty.
+  for (const char *directory : {"numbers", "errors", "sweep"})
+    std::filesystem::remove_all(directory);
+  write_valid_scene();
+  check_overflow();
+  check_relative_errors();
+  check_sweep_error_row();
+}

@@ -1,0 +1,184 @@
+// LoadStepping against a body whose collapse load factor is known: a step
+// converges exactly when its target lies at or below the limit. Truths
+// checked:
+// - automatic stepping brackets the limit between the last accepted load
+//   factor and the last failed target, at most the collapse resolution r
+//   times the target apart, with the limit inside the bracket; and it
+//   halves a failed step (the attempts after a failure at 1 are 0.9 + 0.05,
+//   0.9 + 0.025, ...);
+// - a cut step grows back by doubling after an easy step only, up to the
+//   programme's own;
+// - with r = 0 the programme is run as given and the first failure ends it;
+//   with Solver/Continue after failure it is accepted and the programme
+//   goes on;
+// - a non-finite result ends the run at once, whatever r;
+// - a programme without failures attempts exactly its own load factors.
+#include <thinlayer/stepping/load_stepping.h>
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <vector>
+
+using namespace thinlayer;
+
+namespace
+{
+  int failures = 0;
+
+  void
+  expect(const bool holds, const char *what)
+  {
+    std::cout << "  " << what << ": " << (holds ? "yes" : "NO") << '\n';
+    failures += holds ? 0 : 1;
+  }
+
+
+  StepResult
+  result(const bool converged, const unsigned int iterations)
+  {
+    StepResult r;
+    r.iterations      = iterations;
+    r.converged       = converged;
+    r.max_yield_ratio = 0;
+    r.plastic_points  = 0;
+    return r;
+  }
+
+
+  LoadingParameters
+  programme(const std::vector<double> &increments, const double resolution)
+  {
+    LoadingParameters loading;
+    loading.load_increments     = increments;
+    loading.collapse_resolution = resolution;
+    return loading;
+  }
+
+
+  /// Runs the stepping against a body whose steps converge up to @p limit
+  /// in @p iterations each; prints every attempt. Returns the last accepted
+  /// load factor and the last target (the failed one, or the end).
+  std::pair<double, double>
+  run(LoadStepping      &stepping,
+      const double       limit,
+      const unsigned int iterations,
+      const bool         print = true)
+  {
+    double accepted = 0, target = 0;
+    while (!stepping.finished())
+      {
+        target               = stepping.target();
+        const bool converged = target <= limit * (1 + 1e-14);
+        const auto next      = stepping.report(result(converged, iterations));
+        if (print)
+          std::printf("    attempt at %.6g: %s\n",
+                      target,
+                      next == LoadStepping::Next::accept  ? "accept"
+                      : next == LoadStepping::Next::retry ? "retry"
+                      : next == LoadStepping::Next::accept_failed
+                        ? "accept failed"
+                        : "stop");
+        if (next == LoadStepping::Next::accept ||
+            next == LoadStepping::Next::accept_failed)
+          accepted = target;
+        if (next == LoadStepping::Next::stop)
+          break;
+      }
+    return {accepted, target};
+  }
+} // namespace
+
+
+int
+main()
+{
+  std::cout << "* automatic stepping, limit 0.93, programme 0.5, 5*0.1, "
+               "r = 0.005\n";
+  {
+    LoadStepping stepping(programme({0.5, 0.1, 0.1, 0.1, 0.1, 0.1}, 0.005),
+                          false,
+                          10);
+    const auto [low, high] = run(stepping, 0.93, 3);
+    std::printf("  bracket [%.6g, %.6g]\n", low, high);
+    expect(low <= 0.93 && 0.93 < high, "the limit lies in the bracket");
+    expect(high - low <= 0.005 * high, "the bracket is within r of it");
+  }
+
+  std::cout << "* halving after a failure at 1 from 0.9\n";
+  {
+    LoadStepping stepping(programme({0.9, 0.1}, 0.01), false, 10);
+    stepping.report(result(true, 1));
+    std::vector<double> attempts;
+    for (unsigned int k = 0; k < 4; ++k)
+      {
+        attempts.push_back(stepping.target());
+        stepping.report(result(false, 100));
+      }
+    std::printf("  attempts %.6g, %.6g, %.6g, %.6g\n",
+                attempts[0],
+                attempts[1],
+                attempts[2],
+                attempts[3]);
+    expect(attempts[0] == 1 && std::abs(attempts[1] - 0.95) < 1e-15 &&
+             std::abs(attempts[2] - 0.925) < 1e-15 &&
+             std::abs(attempts[3] - 0.9125) < 1e-15,
+           "each failed step is halved");
+  }
+
+  std::cout << "* growth after a cut: easy steps double, hard ones keep\n";
+  {
+    LoadStepping stepping(programme({1.6}, 0.01), false, 5);
+    stepping.report(result(false, 100)); // 1.6 fails
+    stepping.report(result(false, 100)); // 0.8 fails
+    const double cut = stepping.target();
+    stepping.report(result(true, 20)); // hard
+    const double after_hard = stepping.target();
+    stepping.report(result(true, 2)); // easy
+    const double after_easy = stepping.target();
+    std::printf("  after two cuts %.6g, after a hard step %.6g, after an "
+                "easy one %.6g\n",
+                cut,
+                after_hard,
+                after_easy);
+    expect(cut == 0.4 && after_hard == 0.8 && after_easy == 1.6,
+           "a hard step keeps the cut length, an easy one doubles it");
+  }
+
+  std::cout << "* the programme as given (r = 0)\n";
+  {
+    LoadStepping stepping(programme({0.5, 0.25, 0.25}, 0), false, 10);
+    const auto [low, high] = run(stepping, 0.6, 3);
+    expect(low == 0.5 && high == 0.75, "the first failure ends the run");
+    LoadStepping going_on(programme({0.5, 0.25, 0.25}, 0), true, 10);
+    const auto [last, end] = run(going_on, 0.6, 3);
+    expect(last == 1 && going_on.finished(),
+           "with Continue after failure the programme goes on");
+  }
+
+  std::cout << "* a non-finite result\n";
+  {
+    LoadStepping stepping(programme({0.5, 0.5}, 0.01), false, 10);
+    StepResult   r = result(false, 3);
+    r.non_finite   = true;
+    expect(stepping.report(r) == LoadStepping::Next::stop,
+           "stops the run at once");
+  }
+
+  std::cout << "* a programme without failures\n";
+  {
+    LoadStepping        stepping(programme({0.3, 0.3, 0.1}, 0.01), false, 10);
+    std::vector<double> attempted;
+    while (!stepping.finished())
+      {
+        attempted.push_back(stepping.target());
+        stepping.report(result(true, 1));
+      }
+    expect(attempted.size() == 3 && attempted[0] == 0.3 &&
+             attempted[1] == 0.3 + 0.3 && attempted[2] == 0.3 + 0.3 + 0.1,
+           "attempts exactly the programme's running sums");
+  }
+
+  std::cout << (failures == 0 ? "all truths hold\n" : "SOME TRUTHS FAIL\n");
+  return failures == 0 ? 0 : 1;
+}
