@@ -195,7 +195,7 @@ def main():
         for ratio in ratios:
             directory = os.path.join(OUT, "%s-thin-%d" % (case, ratio))
             summary = run(thin, geometry.format(ar=ratio), "default", directory,
-                          ["Interfaces/Material ids=%d" % material] + common)
+                          ["Layers/Material ids=%d" % material] + common)
             rows.append(measure(case, "thin layer", ratio, summary, directory,
                                 "interface-%d-%%04d.csv" % material))
             print(format_row(rows[-1]), flush=True)

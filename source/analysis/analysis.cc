@@ -5,9 +5,9 @@
 #include <deal.II/lac/full_matrix.h>
 
 #include <thinlayer/analysis/analysis.h>
+#include <thinlayer/analysis/rigid_body_modes.h>
 #include <thinlayer/base/input_error.h>
 #include <thinlayer/discretisation/mode_constraints.h>
-#include <thinlayer/analysis/rigid_body_modes.h>
 #include <thinlayer/discretisation/serendipity_constraints.h>
 
 #include <algorithm>
@@ -141,7 +141,7 @@ namespace thinlayer
     interface_elements.reinit(dof_handler,
                               mapping,
                               kinematics,
-                              parameters.interface_curves,
+                              parameters.interface_elements,
                               parameters.materials,
                               parameters.parameter_file);
     for (unsigned int m = 0; m < kinematics.n_modes(); ++m)
@@ -329,11 +329,11 @@ namespace thinlayer
             // With the supports holding every rigid motion (plane strain
             // checks them), soft interface elements are what is left.
             if (!kinematics.is_fourier() &&
-                !parameters.interface_curves.empty())
+                !parameters.interface_elements.empty())
               {
                 const auto softest = std::min_element(
-                  parameters.interface_curves.begin(),
-                  parameters.interface_curves.end(),
+                  parameters.interface_elements.begin(),
+                  parameters.interface_elements.end(),
                   [](const auto &a, const auto &b) {
                     return std::min(a.second.shear_stiffness,
                                     a.second.normal_stiffness) <
@@ -343,7 +343,7 @@ namespace thinlayer
                 const auto &curve = softest->second;
                 throw InputError(
                   parameters.parameter_file,
-                  InterfaceCurveParameters::section(softest->first) +
+                  InterfaceElementParameters::section(softest->first) +
                     (curve.shear_stiffness <= curve.normal_stiffness
                        ? "/Shear stiffness"
                        : "/Normal stiffness"),

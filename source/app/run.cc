@@ -8,7 +8,7 @@
 #include <thinlayer/output/output_writer.h>
 #include <thinlayer/output/reference_check.h>
 #include <thinlayer/output/results_directory.h>
-#include <thinlayer/postprocess/interface_profile.h>
+#include <thinlayer/postprocess/layer_profile.h>
 #include <thinlayer/postprocess/monitors.h>
 #include <thinlayer/stepping/load_stepping.h>
 #include <thinlayer/stepping/run_outcome.h>
@@ -114,13 +114,13 @@ namespace thinlayer
     class Programme
     {
     public:
-      Programme(const Parameters                    &p,
-                Analysis<2>                         &analysis,
-                const Monitors<2>                   &monitors,
-                const std::vector<InterfaceProfile> &interfaces,
-                OutputWriter                        &writer,
-                TimerOutput                         &timer,
-                std::ostream                        &out)
+      Programme(const Parameters                &p,
+                Analysis<2>                     &analysis,
+                const Monitors<2>               &monitors,
+                const std::vector<LayerProfile> &interfaces,
+                OutputWriter                    &writer,
+                TimerOutput                     &timer,
+                std::ostream                    &out)
         : p(p)
         , analysis(analysis)
         , monitors(monitors)
@@ -174,14 +174,14 @@ namespace thinlayer
       void
       probe_beyond(const Attempt &failed);
 
-      const Parameters                    &p;
-      Analysis<2>                         &analysis;
-      const Monitors<2>                   &monitors;
-      const std::vector<InterfaceProfile> &interfaces;
-      OutputWriter                        &writer;
-      TimerOutput                         &timer;
-      std::ostream                        &out;
-      ProgrammeResult                      result;
+      const Parameters                &p;
+      Analysis<2>                     &analysis;
+      const Monitors<2>               &monitors;
+      const std::vector<LayerProfile> &interfaces;
+      OutputWriter                    &writer;
+      TimerOutput                     &timer;
+      std::ostream                    &out;
+      ProgrammeResult                  result;
     };
 
 
@@ -463,8 +463,10 @@ namespace thinlayer
       Timer       wall_clock;
       TimerOutput timer(out, TimerOutput::never, TimerOutput::wall_times);
 
-      out << "thinlayer: " << file_name(p.parameter_file) << "\n  meshing "
-          << file_name(p.mesh.file) << std::endl;
+      out << "thinlayer: " << file_name(p.parameter_file) << '\n';
+      for (const std::string &warning : p.warnings)
+        out << "  warning: " << warning << '\n';
+      out << "  meshing " << file_name(p.mesh.file) << std::endl;
       const Scene scene = [&]() {
         TimerOutput::Scope scope(timer, "mesh");
         return Scene(p, out);
@@ -478,8 +480,8 @@ namespace thinlayer
         analysis.setup();
       }
       const Monitors<2> monitors(p.monitors, analysis, p.parameter_file);
-      std::vector<InterfaceProfile> interfaces;
-      for (const types::material_id id : p.interfaces.material_ids)
+      std::vector<LayerProfile> interfaces;
+      for (const types::material_id id : p.layers.material_ids)
         interfaces.emplace_back(analysis, id, p.parameter_file);
 
       RunSummary summary;

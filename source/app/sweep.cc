@@ -245,6 +245,8 @@ namespace thinlayer
 
     out << "thinlayer: sweep of " << combinations.size() << " runs into "
         << base.output.directory << '\n';
+    for (const std::string &warning : base.warnings)
+      out << "  warning: " << warning << '\n';
     SweepResult result;
     for (unsigned int r = 0; r < combinations.size(); ++r)
       {

@@ -4,8 +4,8 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include <thinlayer/discretisation/boundary_data.h>
 #include <thinlayer/base/input_error.h>
+#include <thinlayer/discretisation/boundary_data.h>
 
 #include <cmath>
 #include <sstream>

@@ -1,5 +1,5 @@
-#include <thinlayer/elements/interface_values.h>
 #include <thinlayer/base/text_format.h>
+#include <thinlayer/elements/interface_values.h>
 
 #include <cmath>
 #include <iomanip>

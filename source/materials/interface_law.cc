@@ -18,10 +18,10 @@ namespace thinlayer
   } // namespace
 
 
-  InterfaceLaw::InterfaceLaw(const InterfaceCurveParameters &p)
+  InterfaceLaw::InterfaceLaw(const InterfaceElementParameters &p)
     : k_s(p.shear_stiffness)
     , k_n(p.normal_stiffness)
-    , plastic(p.criterion != InterfaceCurveParameters::Criterion::elastic)
+    , plastic(p.criterion != InterfaceElementParameters::Criterion::elastic)
     , adhesion(p.adhesion)
     , tan_phi(std::tan(p.friction_angle * numbers::PI / 180))
     , tan_psi(std::tan(p.dilation_angle * numbers::PI / 180))

@@ -1,7 +1,7 @@
 #include <thinlayer/base/file_utilities.h>
-#include <thinlayer/mesh/gmsh_process.h>
 #include <thinlayer/base/input_error.h>
 #include <thinlayer/base/interruption.h>
+#include <thinlayer/mesh/gmsh_process.h>
 
 #include <chrono>
 #include <filesystem>

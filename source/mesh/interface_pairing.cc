@@ -55,7 +55,7 @@ namespace thinlayer
               return s.curve == id;
             }))
           throw InputError(parameter_file,
-                           InterfaceCurveParameters::section(id),
+                           InterfaceElementParameters::section(id),
                            "a physical curve of the mesh with cells on both "
                            "sides; the mesh has no curve " +
                              std::to_string(id));
@@ -80,7 +80,7 @@ namespace thinlayer
                            "along a curve through the body; the side at ("
                         << sides[i].centre << ") faces none";
                 throw InputError(parameter_file,
-                                 InterfaceCurveParameters::section(
+                                 InterfaceElementParameters::section(
                                    sides[i].curve),
                                  message.str());
               }

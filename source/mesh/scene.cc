@@ -1,8 +1,8 @@
 #include <deal.II/grid/grid_in.h>
 
 #include <thinlayer/base/file_utilities.h>
-#include <thinlayer/mesh/gmsh_process.h>
 #include <thinlayer/base/input_error.h>
+#include <thinlayer/mesh/gmsh_process.h>
 #include <thinlayer/mesh/mesh_splitting.h>
 #include <thinlayer/mesh/scene.h>
 
@@ -277,10 +277,10 @@ namespace thinlayer
                        repeated +
                          ": expected a quadrilateral with four distinct "
                          "corners");
-    if (!p.interface_curves.empty())
+    if (!p.interface_elements.empty())
       {
         std::set<unsigned int> curves;
-        for (const auto &[id, curve] : p.interface_curves)
+        for (const auto &[id, curve] : p.interface_elements)
           curves.insert(id);
         msh = split_along_curves(msh, curves, p.mesh.file);
       }

@@ -1,11 +1,11 @@
 #include <deal.II/numerics/data_out.h>
 
-#include <thinlayer/postprocess/cell_fields.h>
+#include <thinlayer/base/text_format.h>
 #include <thinlayer/materials/elasticity.h>
 #include <thinlayer/output/output_writer.h>
 #include <thinlayer/output/results_directory.h>
 #include <thinlayer/output/revolved_view.h>
-#include <thinlayer/base/text_format.h>
+#include <thinlayer/postprocess/cell_fields.h>
 
 #include <cerrno>
 #include <cmath>
@@ -71,11 +71,11 @@ namespace thinlayer
 
 
   void
-  OutputWriter::write_fields(const unsigned int                   step,
-                             const double                         load_factor,
-                             const Analysis<2>                   &analysis,
-                             const double                         theta,
-                             const std::vector<InterfaceProfile> &interfaces)
+  OutputWriter::write_fields(const unsigned int               step,
+                             const double                     load_factor,
+                             const Analysis<2>               &analysis,
+                             const double                     theta,
+                             const std::vector<LayerProfile> &interfaces)
   {
     constexpr int                  dim         = 2;
     const auto                    &dof_handler = analysis.get_dof_handler();
@@ -140,7 +140,7 @@ namespace thinlayer
               }
             for (unsigned int k = 0; k < layers.size(); ++k)
               data_out.add_data_vector(layers[k],
-                                       InterfaceProfile::cell_field_names[k] +
+                                       LayerProfile::cell_field_names[k] +
                                          suffix);
           }
       }
@@ -164,11 +164,11 @@ namespace thinlayer
 
   void
   OutputWriter::write_interface_profiles(
-    const unsigned int                   step,
-    const double                         load_factor,
-    const Analysis<2>                   &analysis,
-    const std::vector<InterfaceProfile> &interfaces,
-    const bool                           with_vtu)
+    const unsigned int               step,
+    const double                     load_factor,
+    const Analysis<2>               &analysis,
+    const std::vector<LayerProfile> &interfaces,
+    const bool                       with_vtu)
   {
     const Kinematics &kinematics = analysis.get_kinematics();
     // Each profile as NAME-NNNN.csv, and with_vtu as NAME-NNNN.vtu listed
@@ -186,10 +186,10 @@ namespace thinlayer
       DataOutBase::write_pvd_record(pvd, records);
       write_file(base + ".pvd", pvd.str());
     };
-    for (const InterfaceProfile &interface : interfaces)
+    for (const LayerProfile &interface : interfaces)
       write("interface-" + std::to_string(interface.get_material_id()),
             interface.profile(analysis));
-    const ZeroThicknessElements &elements = analysis.get_interface_elements();
+    const InterfaceElements &elements = analysis.get_interface_elements();
     for (const types::boundary_id curve : elements.curve_ids())
       write("interface-curve-" + std::to_string(curve),
             elements.profile(curve,

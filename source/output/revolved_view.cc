@@ -1,7 +1,7 @@
 #include <deal.II/base/data_out_base.h>
 
-#include <thinlayer/postprocess/cell_fields.h>
 #include <thinlayer/output/revolved_view.h>
+#include <thinlayer/postprocess/cell_fields.h>
 
 #include <cmath>
 #include <sstream>

@@ -1,5 +1,5 @@
-#include <thinlayer/output/run_summary.h>
 #include <thinlayer/base/text_format.h>
+#include <thinlayer/output/run_summary.h>
 
 #include <cmath>
 #include <limits>

@@ -8,15 +8,16 @@
 #include <cmath>
 #include <limits>
 
-// The sections that describe interfaces: which thin layers a run profiles,
-// and the zero-thickness elements along physical curves.
+// The sections of the two ways of modelling an interface: the thin layers a
+// run profiles ("Layers"), and the interface elements, of zero thickness,
+// along physical curves ("Interface curve N").
 
 namespace thinlayer
 {
   void
-  InterfaceParameters::declare(ParameterHandler &prm)
+  LayerParameters::declare(ParameterHandler &prm)
   {
-    prm.enter_subsection("Interfaces");
+    prm.enter_subsection("Layers");
     prm.declare_entry(
       "Material ids",
       "",
@@ -30,18 +31,18 @@ namespace thinlayer
 
 
   void
-  InterfaceParameters::parse(ParameterHandler                   &prm,
-                             const std::string                  &file,
-                             const std::set<types::material_id> &materials)
+  LayerParameters::parse(ParameterHandler                   &prm,
+                         const std::string                  &file,
+                         const std::set<types::material_id> &materials)
   {
-    prm.enter_subsection("Interfaces");
+    prm.enter_subsection("Layers");
     material_ids.clear();
     for (const int id : Utilities::string_to_int(
            Utilities::split_string_list(prm.get("Material ids"))))
       {
         if (materials.count(id) == 0)
           throw InputError(file,
-                           "Interfaces/Material ids",
+                           "Layers/Material ids",
                            "expected the id of a material the file describes "
                            "('subsection Material " +
                              std::to_string(id) + "' is missing)");
@@ -53,28 +54,28 @@ namespace thinlayer
   }
 
 
-  const NameTable<InterfaceCurveParameters::Criterion>
-    InterfaceCurveParameters::criterion_names = {
-      {InterfaceCurveParameters::Criterion::elastic, "elastic"},
-      {InterfaceCurveParameters::Criterion::tresca, "tresca"},
-      {InterfaceCurveParameters::Criterion::mohr_coulomb, "mohr-coulomb"}};
+  const NameTable<InterfaceElementParameters::Criterion>
+    InterfaceElementParameters::criterion_names = {
+      {InterfaceElementParameters::Criterion::elastic, "elastic"},
+      {InterfaceElementParameters::Criterion::tresca, "tresca"},
+      {InterfaceElementParameters::Criterion::mohr_coulomb, "mohr-coulomb"}};
 
-  const NameTable<InterfaceCurveParameters::Integration>
-    InterfaceCurveParameters::integration_names = {
-      {InterfaceCurveParameters::Integration::gauss, "gauss"},
-      {InterfaceCurveParameters::Integration::lobatto, "lobatto"}};
+  const NameTable<InterfaceElementParameters::Integration>
+    InterfaceElementParameters::integration_names = {
+      {InterfaceElementParameters::Integration::gauss, "gauss"},
+      {InterfaceElementParameters::Integration::lobatto, "lobatto"}};
 
 
   std::string
-  InterfaceCurveParameters::section(const unsigned int id)
+  InterfaceElementParameters::section(const unsigned int id)
   {
     return "Interface curve " + std::to_string(id);
   }
 
 
   void
-  InterfaceCurveParameters::declare(ParameterHandler  &prm,
-                                    const unsigned int id)
+  InterfaceElementParameters::declare(ParameterHandler  &prm,
+                                      const unsigned int id)
   {
     prm.enter_subsection(section(id));
     prm.declare_entry("Name",
@@ -134,11 +135,11 @@ namespace thinlayer
 
 
   void
-  InterfaceCurveParameters::parse(ParameterHandler  &prm,
-                                  const std::string &file,
-                                  const unsigned int id)
+  InterfaceElementParameters::parse(ParameterHandler  &prm,
+                                    const std::string &file,
+                                    const unsigned int id)
   {
-    const std::string section = InterfaceCurveParameters::section(id);
+    const std::string section = InterfaceElementParameters::section(id);
     prm.enter_subsection(section);
     name             = prm.get("Name");
     normal_stiffness = positive(prm, "Normal stiffness", file, section, 1e30);

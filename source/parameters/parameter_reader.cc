@@ -198,6 +198,58 @@ namespace thinlayer
     }
 
 
+    /// Sections renamed, by their former name: a file that uses one still
+    /// runs for one release, with a warning.
+    const std::map<std::string, std::string> former_section_names = {
+      {"Interfaces", "Layers"}};
+
+
+    /**
+     * The former names of sections in @p lines and @p overrides replaced by
+     * their names; returns a warning for each.
+     */
+    std::vector<std::string>
+    rename_former_sections(std::vector<ParameterLine> &lines,
+                           std::vector<std::string>   &overrides,
+                           const std::string          &file)
+    {
+      std::vector<std::string> warnings;
+      const auto               warn = [&](const std::string &where,
+                            const std::string &former,
+                            const std::string &name) {
+        warnings.push_back(where + ": section '" + former +
+                           "' is now called '" + name +
+                           "'; the former name is accepted until the next "
+                                         "release");
+      };
+      unsigned int depth = 0;
+      for (ParameterLine &line : lines)
+        if (line.kind == ParameterLine::Kind::subsection)
+          {
+            const auto renamed = former_section_names.find(line.name);
+            if (depth == 0 && renamed != former_section_names.end())
+              {
+                warn("'" + file + "', " + position(line, file),
+                     line.name,
+                     renamed->second);
+                line.text = "subsection " + renamed->second;
+                line.name = renamed->second;
+              }
+            ++depth;
+          }
+        else if (line.kind == ParameterLine::Kind::end && depth > 0)
+          --depth;
+      for (std::string &o : overrides)
+        for (const auto &[former, name] : former_section_names)
+          if (o.rfind(former + "/", 0) == 0)
+            {
+              warn("command line '" + o + "'", former, name);
+              o = name + o.substr(former.size());
+            }
+      return warnings;
+    }
+
+
     void
     apply_override(ParameterHandler &prm, const std::string &override_text)
     {
@@ -242,7 +294,7 @@ namespace thinlayer
       MeshParameters::declare(prm);
       KinematicsParameters::declare(prm);
       DiscretisationParameters::declare(prm);
-      InterfaceParameters::declare(prm);
+      LayerParameters::declare(prm);
       LoadingParameters::declare(prm);
       SolverParameters::declare(prm);
       MonitorParameters::declare(prm);
@@ -254,7 +306,7 @@ namespace thinlayer
       for (const auto id : boundary_ids)
         BoundaryParameters::declare(prm, id);
       for (const auto id : curve_ids)
-        InterfaceCurveParameters::declare(prm, id);
+        InterfaceElementParameters::declare(prm, id);
     }
 
 
@@ -283,18 +335,18 @@ namespace thinlayer
           p.materials[id].parse(prm, file, id);
           materials.insert(id);
         }
-      p.interfaces.parse(prm, file, materials);
+      p.layers.parse(prm, file, materials);
       for (const auto id : boundary_ids)
         p.boundaries[id].parse(prm, file, id, p.kinematics, p.mesh);
       for (const auto id : curve_ids)
         {
           if (boundary_ids.count(id) != 0)
             throw InputError(file,
-                             InterfaceCurveParameters::section(id),
+                             InterfaceElementParameters::section(id),
                              "a physical curve either of boundary conditions "
                              "or of interface elements; 'Boundary " +
                                std::to_string(id) + "' names it too");
-          p.interface_curves[id].parse(prm, file, id);
+          p.interface_elements[id].parse(prm, file, id);
         }
       p.loading.parse(prm, file);
       p.solver.parse(prm, file);
@@ -329,9 +381,12 @@ namespace thinlayer
   ParameterReader::read_from_string(
     const std::string              &text,
     const std::string              &file,
-    const std::vector<std::string> &overrides) const
+    const std::vector<std::string> &given_overrides) const
   {
-    const std::vector<ParameterLine> lines = parameter_lines(text, file);
+    std::vector<ParameterLine>     lines     = parameter_lines(text, file);
+    std::vector<std::string>       overrides = given_overrides;
+    const std::vector<std::string> warnings =
+      rename_former_sections(lines, overrides, file);
     check_nothing_given_twice(lines, file);
     const auto material_ids =
       ids_of_sections(lines, file, overrides, "Material");
@@ -372,6 +427,7 @@ namespace thinlayer
     effective << '\n';
     prm.print_parameters(effective, ParameterHandler::ShortPRM);
     parameters.effective_parameters = effective.str();
+    parameters.warnings             = warnings;
     return parameters;
   }
 

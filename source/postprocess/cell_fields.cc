@@ -1,5 +1,5 @@
-#include <thinlayer/postprocess/cell_fields.h>
 #include <thinlayer/materials/elasticity.h>
+#include <thinlayer/postprocess/cell_fields.h>
 
 #include <cmath>
 #include <limits>

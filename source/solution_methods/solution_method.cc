@@ -1,8 +1,8 @@
-#include <thinlayer/solution_methods/solution_method.h>
 #include <thinlayer/solution_methods/accelerated_initial_stress.h>
 #include <thinlayer/solution_methods/initial_stress.h>
 #include <thinlayer/solution_methods/newton.h>
 #include <thinlayer/solution_methods/newton_fallback.h>
+#include <thinlayer/solution_methods/solution_method.h>
 #include <thinlayer/solution_methods/viscoplastic.h>
 
 namespace thinlayer

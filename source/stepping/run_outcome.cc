@@ -1,5 +1,5 @@
-#include <thinlayer/stepping/run_outcome.h>
 #include <thinlayer/base/text_format.h>
+#include <thinlayer/stepping/run_outcome.h>
 
 #include <cmath>
 #include <csignal>

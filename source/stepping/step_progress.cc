@@ -1,5 +1,5 @@
-#include <thinlayer/stepping/step_progress.h>
 #include <thinlayer/base/text_format.h>
+#include <thinlayer/stepping/step_progress.h>
 
 namespace thinlayer
 {

@@ -65,13 +65,13 @@ namespace
     write("interface-id.prm",
           scene("good.geo",
                 "",
-                "subsection Interfaces\n  set Material ids = 7\nend\n"));
+                "subsection Layers\n  set Material ids = 7\nend\n"));
     check("an interface with no Material section", {"interface-id.prm"});
 
     write("interface-thick.prm",
           scene("good.geo",
                 "",
-                "subsection Interfaces\n  set Material ids = 1\nend\n"));
+                "subsection Layers\n  set Material ids = 1\nend\n"));
     check("an interface more than one cell thick", {"interface-thick.prm"});
 
     // Two blocks joined by zero-thickness elements 1e7 times as stiff as

@@ -179,6 +179,37 @@ namespace
   }
 
 
+  /// A section by its former name ("Interfaces", now "Layers"), in the
+  /// file and on the command line: accepted, with a warning naming where.
+  void
+  check_former_names()
+  {
+    write("former.prm",
+          scene() + "subsection Interfaces\n  set Material ids =\nend\n");
+    for (const auto &arguments :
+         {std::vector<std::string>{"former.prm"},
+          std::vector<std::string>{"good.prm",
+                                   "-s",
+                                   "Interfaces/Material ids="}})
+      {
+        std::vector<std::string> all = arguments;
+        all.insert(all.end(), {"-s", "Output/Directory=former"});
+        std::ostringstream out, err;
+        const int          status = thinlayer::run_command_line(all, out, err);
+        std::string        warning;
+        std::istringstream lines(out.str());
+        for (std::string line; std::getline(lines, line);)
+          if (line.find("warning: ") != std::string::npos)
+            warning = line;
+        std::cout << "* the former section name Interfaces, from "
+                  << (arguments.size() == 1 ? "the file" : "the command line")
+                  << "\n  exit status " << status << "\n"
+                  << warning << "\n  " << err.str() << '\n';
+        std::filesystem::remove_all("former");
+      }
+  }
+
+
   /// Sweeps that cannot mean what they say.
   void
   check_sweeps()
@@ -214,4 +245,5 @@ main()
   check_meaningless_entries();
   check_sweeps();
   check_reference_expectations();
+  check_former_names();
 }

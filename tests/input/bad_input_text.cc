@@ -129,7 +129,7 @@ namespace
     check("a section 'Interface curve top'", {"word-id.prm"});
     check("a thin layer of material id 300, which the file does not describe "
           "(ids above 255 are read)",
-          {"good.prm", "-s", "Interfaces/Material ids=300"});
+          {"good.prm", "-s", "Layers/Material ids=300"});
   }
 } // namespace
 

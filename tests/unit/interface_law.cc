@@ -27,13 +27,13 @@ namespace
 {
   thinlayer_tests::PseudoRandom random_numbers(2024);
 
-  InterfaceCurveParameters
-  curve(const InterfaceCurveParameters::Criterion criterion,
-        const double                              phi,
-        const double                              psi,
-        const double                              tension)
+  InterfaceElementParameters
+  curve(const InterfaceElementParameters::Criterion criterion,
+        const double                                phi,
+        const double                                psi,
+        const double                                tension)
   {
-    InterfaceCurveParameters p;
+    InterfaceElementParameters p;
     p.normal_stiffness = 2000;
     p.shear_stiffness  = 700;
     p.criterion        = criterion;
@@ -62,7 +62,7 @@ namespace
   }
 
   void
-  check(const std::string &title, const InterfaceCurveParameters &p)
+  check(const std::string &title, const InterfaceElementParameters &p)
   {
     const InterfaceLaw law(p);
     // Per region: trials met, largest tangent error, largest f, worst
@@ -144,7 +144,7 @@ namespace
 int
 main()
 {
-  using C           = InterfaceCurveParameters::Criterion;
+  using C           = InterfaceElementParameters::Criterion;
   const double none = std::numeric_limits<double>::infinity();
   check("Tresca, c = 1", curve(C::tresca, 0, 0, none));
   check("Tresca, c = 1, tension cut-off 0.5", curve(C::tresca, 0, 0, 0.5));

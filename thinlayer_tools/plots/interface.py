@@ -2,7 +2,7 @@
 """Profiles along a thin-layer interface of one thinlayer run.
 
 Reads OUTPUT_DIR/interface-<id>-NNNN.csv (a thin layer the scene names in
-Interfaces/Material ids) or interface-curve-<id>-NNNN.csv (zero-thickness
+Layers/Material ids) or interface-curve-<id>-NNNN.csv (zero-thickness
 elements on an Interface curve), and history.csv, and writes one chart per
 interface, interface-<id>.png or interface-curve-<id>.png: slip, opening,
 shear and normal traction

@@ -11,16 +11,16 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
+#include <thinlayer/analysis/mode_state.h>
 #include <thinlayer/discretisation/boundary_data.h>
 #include <thinlayer/discretisation/kinematics.h>
-#include <thinlayer/materials/material_law.h>
-#include <thinlayer/analysis/mode_state.h>
-#include <thinlayer/parameters/parameters.h>
-#include <thinlayer/materials/point_history.h>
-#include <thinlayer/elements/point_loop.h>
-#include <thinlayer/solution_methods/solution_method.h>
 #include <thinlayer/discretisation/strain_operator.h>
-#include <thinlayer/elements/zero_thickness_elements.h>
+#include <thinlayer/elements/interface_elements.h>
+#include <thinlayer/elements/point_loop.h>
+#include <thinlayer/materials/material_law.h>
+#include <thinlayer/materials/point_history.h>
+#include <thinlayer/parameters/parameters.h>
+#include <thinlayer/solution_methods/solution_method.h>
 
 #include <map>
 #include <memory>
@@ -204,7 +204,7 @@ namespace thinlayer
 
     /// The zero-thickness interface elements (none unless the scene has
     /// Interface curve sections).
-    const ZeroThicknessElements &
+    const InterfaceElements &
     get_interface_elements() const;
 
     /// Whether the current state is a pending step (solution plus
@@ -332,7 +332,7 @@ namespace thinlayer
                                 history_storage;
     std::vector<PointHistory *> history;
     PointLoop                   point_loop;
-    ZeroThicknessElements       interface_elements;
+    InterfaceElements           interface_elements;
 
     /// The component of every DoF.
     std::vector<unsigned int> dof_component;
@@ -532,7 +532,7 @@ namespace thinlayer
 
 
   template <int dim>
-  inline const ZeroThicknessElements &
+  inline const InterfaceElements &
   Analysis<dim>::get_interface_elements() const
   {
     return interface_elements;

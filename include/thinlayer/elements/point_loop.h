@@ -4,11 +4,11 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/thread_management.h>
 
-#include <thinlayer/discretisation/kinematics.h>
-#include <thinlayer/materials/material_law.h>
 #include <thinlayer/analysis/mode_state.h>
-#include <thinlayer/materials/point_history.h>
+#include <thinlayer/discretisation/kinematics.h>
 #include <thinlayer/discretisation/strain_operator.h>
+#include <thinlayer/materials/material_law.h>
+#include <thinlayer/materials/point_history.h>
 
 #include <memory>
 #include <vector>

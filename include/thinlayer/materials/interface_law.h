@@ -47,7 +47,7 @@ namespace thinlayer
   class InterfaceLaw
   {
   public:
-    explicit InterfaceLaw(const InterfaceCurveParameters &parameters);
+    explicit InterfaceLaw(const InterfaceElementParameters &parameters);
 
     /// K delta.
     Tensor<1, 3>

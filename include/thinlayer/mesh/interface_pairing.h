@@ -36,7 +36,7 @@ namespace thinlayer
   /**
    * Every pair of facing sides on the curves @p curves (boundary faces with
    * those ids), chained into runs through shared ends, each run from its end
-   * nearest the lower left (x before y), as InterfaceProfile orders a thin
+   * nearest the lower left (x before y), as LayerProfile orders a thin
    * layer. Throws InputError (naming @p parameter_file and the curve's
    * "Interface curve <id>" section) for a side that faces none, or a curve
    * the mesh does not have.

@@ -9,7 +9,7 @@ namespace thinlayer
   /**
    * The gmsh mesh @p msh (format 2.2, first-order quadrilaterals and lines)
    * cut along the physical curves @p curves, so that zero-thickness
-   * interface elements can join the two sides (ZeroThicknessElements):
+   * interface elements can join the two sides (InterfaceElements):
    *
    * - around every node of a curve, the curves' edges part the cells into
    *   sectors; each sector but one gets its own copy of the node (a curve's

@@ -4,9 +4,9 @@
 #include <deal.II/base/data_out_base.h>
 
 #include <thinlayer/analysis/analysis.h>
-#include <thinlayer/postprocess/interface_profile.h>
-#include <thinlayer/postprocess/monitors.h>
 #include <thinlayer/parameters/parameters.h>
+#include <thinlayer/postprocess/layer_profile.h>
+#include <thinlayer/postprocess/monitors.h>
 #include <thinlayer/solution_methods/solution_method.h>
 
 #include <fstream>
@@ -64,11 +64,11 @@ namespace thinlayer
      * @p interfaces add their cell fields (zero off the layers).
      */
     void
-    write_fields(const unsigned int                   step,
-                 const double                         load_factor,
-                 const Analysis<2>                   &analysis,
-                 const double                         theta,
-                 const std::vector<InterfaceProfile> &interfaces);
+    write_fields(const unsigned int               step,
+                 const double                     load_factor,
+                 const Analysis<2>               &analysis,
+                 const double                     theta,
+                 const std::vector<LayerProfile> &interfaces);
 
     /**
      * The profile of every one of @p interfaces at load step @p step
@@ -78,11 +78,11 @@ namespace thinlayer
      * interface-<id>.pvd and interface-curve-<id>.pvd.
      */
     void
-    write_interface_profiles(const unsigned int                   step,
-                             const double                         load_factor,
-                             const Analysis<2>                   &analysis,
-                             const std::vector<InterfaceProfile> &interfaces,
-                             const bool                           with_vtu);
+    write_interface_profiles(const unsigned int               step,
+                             const double                     load_factor,
+                             const Analysis<2>               &analysis,
+                             const std::vector<LayerProfile> &interfaces,
+                             const bool                       with_vtu);
 
     /**
      * The body revolved about its axis (revolved_view_vtu(), @p slices

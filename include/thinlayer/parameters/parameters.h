@@ -93,8 +93,9 @@ namespace thinlayer
   };
 
 
-  /// "Interfaces": the thin layers whose profile a run reports.
-  struct InterfaceParameters
+  /// "Layers" (called "Interfaces" before, which is still accepted, with a
+  /// warning): the thin layers whose profile a run reports.
+  struct LayerParameters
   {
     /// Material ids of thin layers (one cell thick).
     std::vector<types::material_id> material_ids;
@@ -153,7 +154,7 @@ namespace thinlayer
    * along the curve when read, and each pair of facing cell sides is
    * coupled by an InterfaceLaw.
    */
-  struct InterfaceCurveParameters
+  struct InterfaceElementParameters
   {
     enum class Criterion
     {
@@ -477,21 +478,24 @@ namespace thinlayer
     /// Every entry as used, overrides applied, in parameter-file format:
     /// the record of what ran.
     std::string effective_parameters;
+    /// What the file asks of that is accepted but should change (a
+    /// section's former name): one line each, shown when the run starts.
+    std::vector<std::string> warnings;
 
     MeshParameters                                   mesh;
     KinematicsParameters                             kinematics;
     DiscretisationParameters                         discretisation;
-    InterfaceParameters                              interfaces;
+    LayerParameters                                  layers;
     std::map<types::material_id, MaterialParameters> materials;
     std::map<types::boundary_id, BoundaryParameters> boundaries;
     /// Physical curves of zero-thickness interface elements.
-    std::map<types::boundary_id, InterfaceCurveParameters> interface_curves;
-    LoadingParameters                                      loading;
-    SolverParameters                                       solver;
-    MonitorParameters                                      monitors;
-    ReferenceParameters                                    reference;
-    SweepParameters                                        sweep;
-    OutputParameters                                       output;
+    std::map<types::boundary_id, InterfaceElementParameters> interface_elements;
+    LoadingParameters                                        loading;
+    SolverParameters                                         solver;
+    MonitorParameters                                        monitors;
+    ReferenceParameters                                      reference;
+    SweepParameters                                          sweep;
+    OutputParameters                                         output;
   };
 
 

@@ -3,8 +3,8 @@
 
 #include <deal.II/lac/vector.h>
 
-#include <thinlayer/solvers/anderson_acceleration.h>
 #include <thinlayer/solution_methods/return_mapping_method.h>
+#include <thinlayer/solvers/anderson_acceleration.h>
 
 namespace thinlayer
 {

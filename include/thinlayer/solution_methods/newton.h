@@ -8,8 +8,8 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
-#include <thinlayer/solvers/factorised_stiffness.h>
 #include <thinlayer/solution_methods/return_mapping_method.h>
+#include <thinlayer/solvers/factorised_stiffness.h>
 
 #include <memory>
 #include <vector>

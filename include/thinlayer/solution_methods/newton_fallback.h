@@ -1,9 +1,9 @@
 #ifndef thinlayer_solution_methods_newton_fallback_h
 #define thinlayer_solution_methods_newton_fallback_h
 
-#include <thinlayer/solution_methods/solution_method.h>
 #include <thinlayer/solution_methods/accelerated_initial_stress.h>
 #include <thinlayer/solution_methods/newton.h>
+#include <thinlayer/solution_methods/solution_method.h>
 
 namespace thinlayer
 {

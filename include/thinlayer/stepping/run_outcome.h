@@ -2,8 +2,8 @@
 #define thinlayer_stepping_run_outcome_h
 
 #include <thinlayer/analysis/analysis.h>
-#include <thinlayer/postprocess/monitors.h>
 #include <thinlayer/output/run_summary.h>
+#include <thinlayer/postprocess/monitors.h>
 
 #include <limits>
 

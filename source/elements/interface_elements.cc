@@ -1,7 +1,7 @@
 #include <deal.II/base/quadrature_lib.h>
 
 #include <thinlayer/base/input_error.h>
-#include <thinlayer/elements/zero_thickness_elements.h>
+#include <thinlayer/elements/interface_elements.h>
 
 #include <algorithm>
 #include <cmath>
@@ -14,12 +14,12 @@ namespace thinlayer
 
 
   void
-  ZeroThicknessElements::reinit(
-    const DoFHandler<2>                                          &dof_handler,
-    const Mapping<2>                                             &mapping,
-    const Kinematics                                             &kinematics,
-    const std::map<types::boundary_id, InterfaceCurveParameters> &curves,
-    const std::map<types::material_id, MaterialParameters>       &materials,
+  InterfaceElements::reinit(
+    const DoFHandler<2>                                            &dof_handler,
+    const Mapping<2>                                               &mapping,
+    const Kinematics                                               &kinematics,
+    const std::map<types::boundary_id, InterfaceElementParameters> &curves,
+    const std::map<types::material_id, MaterialParameters>         &materials,
     const std::string &parameter_file)
   {
     this->kinematics = &kinematics;
@@ -65,9 +65,9 @@ namespace thinlayer
 
 
   void
-  ZeroThicknessElements::check_stiffness(
+  InterfaceElements::check_stiffness(
     const FacingSides                                      &pair,
-    const InterfaceCurveParameters                         &curve,
+    const InterfaceElementParameters                       &curve,
     const std::map<types::material_id, MaterialParameters> &materials,
     const std::string                                      &parameter_file)
   {
@@ -91,18 +91,18 @@ namespace thinlayer
                   << ": a stiffer interface adds no accuracy, and round-off "
                      "takes its tractions";
           throw InputError(parameter_file,
-                           InterfaceCurveParameters::section(pair.curve) + "/" +
-                             entry,
+                           InterfaceElementParameters::section(pair.curve) +
+                             "/" + entry,
                            message.str());
         }
   }
 
 
   void
-  ZeroThicknessElements::add_element(const FacingSides              &pair,
-                                     const InterfaceCurveParameters &curve,
-                                     const DoFHandler<2> &dof_handler,
-                                     const Mapping<2>    &mapping)
+  InterfaceElements::add_element(const FacingSides                &pair,
+                                 const InterfaceElementParameters &curve,
+                                 const DoFHandler<2>              &dof_handler,
+                                 const Mapping<2>                 &mapping)
   {
     const FiniteElement<2>              &fe = dof_handler.get_fe();
     std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
@@ -111,7 +111,7 @@ namespace thinlayer
     const Tensor<1, 2>                   tangent = chord / length;
     const Tensor<1, 2>                   normal({-tangent[1], tangent[0]});
     const Quadrature<1>                  rule =
-      curve.integration == InterfaceCurveParameters::Integration::lobatto
+      curve.integration == InterfaceElementParameters::Integration::lobatto
                          ? Quadrature<1>(QGaussLobatto<1>(3))
                          : Quadrature<1>(QGauss<1>(curve.points));
 
@@ -160,14 +160,14 @@ namespace thinlayer
 
 
   bool
-  ZeroThicknessElements::empty() const
+  InterfaceElements::empty() const
   {
     return elements.empty();
   }
 
 
   Tensor<1, 3>
-  ZeroThicknessElements::local_jump(
+  InterfaceElements::local_jump(
     const IntegrationPoint                        &point,
     const unsigned int                             s,
     const std::vector<std::unique_ptr<ModeState>> &modes,
@@ -192,7 +192,7 @@ namespace thinlayer
 
 
   void
-  ZeroThicknessElements::add_forces(
+  InterfaceElements::add_forces(
     const IntegrationPoint                        &point,
     const unsigned int                             s,
     const Tensor<1, 3>                            &traction,
@@ -220,9 +220,9 @@ namespace thinlayer
 
 
   void
-  ZeroThicknessElements::jump_operator(const IntegrationPoint &point,
-                                       const unsigned int      s,
-                                       FullMatrix<double>     &G) const
+  InterfaceElements::jump_operator(const IntegrationPoint &point,
+                                   const unsigned int      s,
+                                   FullMatrix<double>     &G) const
   {
     const Element     &element = elements[point.element];
     const unsigned int n       = element.dofs.size();
@@ -249,7 +249,7 @@ namespace thinlayer
 
 
   void
-  ZeroThicknessElements::add_sparsity(
+  InterfaceElements::add_sparsity(
     DynamicSparsityPattern          &dsp,
     const AffineConstraints<double> &constraints) const
   {
@@ -261,7 +261,7 @@ namespace thinlayer
 
 
   void
-  ZeroThicknessElements::assemble_elastic(
+  InterfaceElements::assemble_elastic(
     const unsigned int               m,
     SparseMatrix<double>            &stiffness,
     SparseMatrix<double>            &condensed,
@@ -308,7 +308,7 @@ namespace thinlayer
 
   template <typename Rule>
   unsigned int
-  ZeroThicknessElements::for_each_point(
+  InterfaceElements::for_each_point(
     std::vector<std::unique_ptr<ModeState>> &modes,
     const Rule                              &rule)
   {
@@ -328,7 +328,7 @@ namespace thinlayer
 
 
   unsigned int
-  ZeroThicknessElements::viscoplastic_update(
+  InterfaceElements::viscoplastic_update(
     std::vector<std::unique_ptr<ModeState>> &modes)
   {
     // The paper's rule: the traction of the step's jump less its
@@ -368,7 +368,7 @@ namespace thinlayer
 
 
   unsigned int
-  ZeroThicknessElements::return_mapping_update(
+  InterfaceElements::return_mapping_update(
     std::vector<std::unique_ptr<ModeState>> &modes,
     const bool                               with_tangents)
   {
@@ -402,7 +402,7 @@ namespace thinlayer
 
 
   void
-  ZeroThicknessElements::add_internal_forces(
+  InterfaceElements::add_internal_forces(
     std::vector<std::unique_ptr<ModeState>> &modes) const
   {
     const unsigned int n_stations = kinematics->n_stations();
@@ -417,7 +417,7 @@ namespace thinlayer
 
 
   void
-  ZeroThicknessElements::accept()
+  InterfaceElements::accept()
   {
     for (InterfacePointState &state : states)
       {
@@ -431,7 +431,7 @@ namespace thinlayer
 
 
   void
-  ZeroThicknessElements::reject()
+  InterfaceElements::reject()
   {
     for (InterfacePointState &state : states)
       {
@@ -443,7 +443,7 @@ namespace thinlayer
 
 
   double
-  ZeroThicknessElements::max_yield_ratio() const
+  InterfaceElements::max_yield_ratio() const
   {
     double             ratio      = std::numeric_limits<double>::quiet_NaN();
     const unsigned int n_stations = kinematics ? kinematics->n_stations() : 1;
@@ -463,7 +463,7 @@ namespace thinlayer
 
 
   bool
-  ZeroThicknessElements::all_finite() const
+  InterfaceElements::all_finite() const
   {
     const unsigned int n_stations = kinematics ? kinematics->n_stations() : 1;
     for (unsigned int p = 0; p < points.size(); ++p)
@@ -483,7 +483,7 @@ namespace thinlayer
 
 
   bool
-  ZeroThicknessElements::all_associated() const
+  InterfaceElements::all_associated() const
   {
     for (const auto &[id, law] : laws)
       if (!law->is_associated())
@@ -493,7 +493,7 @@ namespace thinlayer
 
 
   void
-  ZeroThicknessElements::add_coupled_sparsity(
+  InterfaceElements::add_coupled_sparsity(
     DynamicSparsityPattern          &dsp,
     const AffineConstraints<double> &coupled_constraints) const
   {
@@ -505,7 +505,7 @@ namespace thinlayer
 
 
   void
-  ZeroThicknessElements::add_coupled_tangent(
+  InterfaceElements::add_coupled_tangent(
     SparseMatrix<double>            &tangent,
     const AffineConstraints<double> &coupled_constraints) const
   {
@@ -537,7 +537,7 @@ namespace thinlayer
 
 
   std::vector<types::boundary_id>
-  ZeroThicknessElements::curve_ids() const
+  InterfaceElements::curve_ids() const
   {
     std::vector<types::boundary_id> ids;
     for (const auto &[id, law] : laws)
@@ -547,7 +547,7 @@ namespace thinlayer
 
 
   Profile
-  ZeroThicknessElements::profile(
+  InterfaceElements::profile(
     const types::boundary_id                       curve,
     const std::vector<std::unique_ptr<ModeState>> &modes,
     const bool                                     pending) const

@@ -1,5 +1,5 @@
-#ifndef thinlayer_postprocess_interface_profile_h
-#define thinlayer_postprocess_interface_profile_h
+#ifndef thinlayer_postprocess_layer_profile_h
+#define thinlayer_postprocess_layer_profile_h
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
@@ -36,18 +36,18 @@ namespace thinlayer
    * as straight, as gmsh makes them. In Fourier scenes the profile is
    * taken at every station.
    */
-  class InterfaceProfile
+  class LayerProfile
   {
   public:
     /**
      * The layer of material id @p material_id in @p analysis. Throws
      * InputError (naming @p parameter_file and the entry
-     * Interfaces/Material ids) if no cell has that id or the layer is more
+     * Layers/Material ids) if no cell has that id or the layer is more
      * than one cell thick.
      */
-    InterfaceProfile(const Analysis<2>       &analysis,
-                     const types::material_id material_id,
-                     const std::string       &parameter_file);
+    LayerProfile(const Analysis<2>       &analysis,
+                 const types::material_id material_id,
+                 const std::string       &parameter_file);
 
     types::material_id
     get_material_id() const;

@@ -1,5 +1,5 @@
-#ifndef thinlayer_elements_zero_thickness_elements_h
-#define thinlayer_elements_zero_thickness_elements_h
+#ifndef thinlayer_elements_interface_elements_h
+#define thinlayer_elements_interface_elements_h
 
 #include <deal.II/base/tensor.h>
 #include <deal.II/dofs/dof_handler.h>
@@ -9,11 +9,11 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
 
+#include <thinlayer/analysis/mode_state.h>
+#include <thinlayer/discretisation/kinematics.h>
+#include <thinlayer/elements/interface_values.h>
 #include <thinlayer/materials/interface_law.h>
 #include <thinlayer/mesh/interface_pairing.h>
-#include <thinlayer/elements/interface_values.h>
-#include <thinlayer/discretisation/kinematics.h>
-#include <thinlayer/analysis/mode_state.h>
 #include <thinlayer/parameters/parameters.h>
 
 #include <map>
@@ -48,7 +48,7 @@ namespace thinlayer
    * an InterfaceLaw of the relative displacement
    *   delta = u(+ side) - u(- side)
    * in the local frame: s along the curve (runs from the lower-left end,
-   * as InterfaceProfile), n = s turned a quarter turn anticlockwise, t out
+   * as LayerProfile), n = s turned a quarter turn anticlockwise, t out
    * of the plane. The integral over the side uses Gauss or Lobatto
    * points, weighted by r in Fourier scenes.
    *
@@ -60,7 +60,7 @@ namespace thinlayer
    * summed at each station (u_r, u_z with T1, u_theta with T2), the
    * tractions projected back with the station weights.
    */
-  class ZeroThicknessElements
+  class InterfaceElements
   {
   public:
     /**
@@ -70,12 +70,13 @@ namespace thinlayer
      * max_stiffness_ratio E / h of the cells beside it (@p materials).
      */
     void
-    reinit(const DoFHandler<2> &dof_handler,
-           const Mapping<2>    &mapping,
-           const Kinematics    &kinematics,
-           const std::map<types::boundary_id, InterfaceCurveParameters> &curves,
-           const std::map<types::material_id, MaterialParameters> &materials,
-           const std::string &parameter_file);
+    reinit(
+      const DoFHandler<2> &dof_handler,
+      const Mapping<2>    &mapping,
+      const Kinematics    &kinematics,
+      const std::map<types::boundary_id, InterfaceElementParameters> &curves,
+      const std::map<types::material_id, MaterialParameters>         &materials,
+      const std::string &parameter_file);
 
     /**
      * The largest interface stiffness accepted, in units of E / h (E the
@@ -229,17 +230,17 @@ namespace thinlayer
     static void
     check_stiffness(
       const FacingSides                                      &pair,
-      const InterfaceCurveParameters                         &curve,
+      const InterfaceElementParameters                       &curve,
       const std::map<types::material_id, MaterialParameters> &materials,
       const std::string                                      &parameter_file);
 
     /// The element of @p pair: its integration points along the side,
     /// each with the jump operator over the two cells' DoFs.
     void
-    add_element(const FacingSides              &pair,
-                const InterfaceCurveParameters &curve,
-                const DoFHandler<2>            &dof_handler,
-                const Mapping<2>               &mapping);
+    add_element(const FacingSides                &pair,
+                const InterfaceElementParameters &curve,
+                const DoFHandler<2>              &dof_handler,
+                const Mapping<2>                 &mapping);
 
     /**
      * Run @p rule(point, station, law, state, jump, point_station) at every

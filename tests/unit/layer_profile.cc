@@ -16,7 +16,7 @@
 // enters, d being vertical.
 // Also: one run along the band, from the left, its arc length increasing
 // through the band's length.
-#include <thinlayer/postprocess/interface_profile.h>
+#include <thinlayer/postprocess/layer_profile.h>
 
 #include <algorithm>
 #include <cmath>
@@ -54,7 +54,7 @@ namespace
            "subsection Boundary 2\n  set Traction = " +
            top_traction +
            "\nend\n"
-           "subsection Interfaces\n  set Material ids = 2\nend\n"
+           "subsection Layers\n  set Material ids = 2\nend\n"
            "subsection Monitors\n  set Displacement boundary id = 2\nend\n";
   }
 
@@ -70,9 +70,9 @@ namespace
       "column.prm",
       [&](const thinlayer::Analysis<2> &analysis,
           const thinlayer::Parameters &) {
-        const thinlayer::InterfaceProfile profile(analysis, 2, "column.prm");
-        const auto   values     = profile.evaluate(analysis, 0);
-        const double a          = 30 * M_PI / 180;
+        const thinlayer::LayerProfile profile(analysis, 2, "column.prm");
+        const auto                    values = profile.evaluate(analysis, 0);
+        const double                  a      = 30 * M_PI / 180;
         const double t_v        = 1 / (10 * std::cos(a) * std::cos(a));
         const double jump[2]    = {0, eps_vertical * t_v};
         const double exact_slip = jump[0] * std::cos(a) + jump[1] * std::sin(a);

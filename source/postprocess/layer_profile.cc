@@ -2,8 +2,8 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <thinlayer/base/input_error.h>
-#include <thinlayer/postprocess/interface_profile.h>
 #include <thinlayer/base/text_format.h>
+#include <thinlayer/postprocess/layer_profile.h>
 
 #include <algorithm>
 #include <array>
@@ -53,23 +53,23 @@ namespace thinlayer
   } // namespace
 
 
-  const std::vector<std::string> InterfaceProfile::cell_field_names = {
+  const std::vector<std::string> LayerProfile::cell_field_names = {
     "interface_slip",
     "interface_opening",
     "interface_shear_traction",
     "interface_normal_traction"};
 
 
-  InterfaceProfile::InterfaceProfile(const Analysis<2>       &analysis,
-                                     const types::material_id material_id,
-                                     const std::string       &parameter_file)
+  LayerProfile::LayerProfile(const Analysis<2>       &analysis,
+                             const types::material_id material_id,
+                             const std::string       &parameter_file)
     : material_id(material_id)
   {
     const auto  &dof_handler = analysis.get_dof_handler();
     const auto  &tria        = dof_handler.get_triangulation();
     const double tolerance =
       1e-9 * GridTools::diameter(static_cast<const Triangulation<2> &>(tria));
-    const std::string entry = "Interfaces/Material ids";
+    const std::string entry = "Layers/Material ids";
     const std::string name  = "material id " + std::to_string(material_id);
 
     // Each layer cell's long direction: the one in which its layer
@@ -159,12 +159,12 @@ namespace thinlayer
 
 
   double
-  InterfaceProfile::add_cell_samples(const Analysis<2>  &analysis,
-                                     const CellIterator &cell,
-                                     const unsigned int  long_direction,
-                                     const unsigned int  entry_face,
-                                     const unsigned int  run,
-                                     const double        start)
+  LayerProfile::add_cell_samples(const Analysis<2>  &analysis,
+                                 const CellIterator &cell,
+                                 const unsigned int  long_direction,
+                                 const unsigned int  entry_face,
+                                 const unsigned int  run,
+                                 const double        start)
   {
     const Mapping<2> &mapping = analysis.get_mapping();
     const auto        mid     = [&](const double along) {
@@ -215,22 +215,22 @@ namespace thinlayer
 
 
   types::material_id
-  InterfaceProfile::get_material_id() const
+  LayerProfile::get_material_id() const
   {
     return material_id;
   }
 
 
   unsigned int
-  InterfaceProfile::n_points() const
+  LayerProfile::n_points() const
   {
     return samples.size();
   }
 
 
   std::vector<InterfaceValues>
-  InterfaceProfile::evaluate(const Analysis<2> &analysis,
-                             const unsigned int station) const
+  LayerProfile::evaluate(const Analysis<2> &analysis,
+                         const unsigned int station) const
   {
     const Kinematics       &kinematics = analysis.get_kinematics();
     const double            theta      = kinematics.station_angle(station);
@@ -296,7 +296,7 @@ namespace thinlayer
 
 
   Profile
-  InterfaceProfile::profile(const Analysis<2> &analysis) const
+  LayerProfile::profile(const Analysis<2> &analysis) const
   {
     Profile result;
     for (const Sample &s : samples)
@@ -310,8 +310,8 @@ namespace thinlayer
 
 
   std::vector<Vector<double>>
-  InterfaceProfile::cell_fields(const Analysis<2> &analysis,
-                                const unsigned int station) const
+  LayerProfile::cell_fields(const Analysis<2> &analysis,
+                            const unsigned int station) const
   {
     const unsigned int n_cells =
       analysis.get_dof_handler().get_triangulation().n_active_cells();
