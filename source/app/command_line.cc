@@ -7,6 +7,7 @@
 #include <thinlayer/base/interruption.h>
 #include <thinlayer/output/reference_check.h>
 #include <thinlayer/output/results_directory.h>
+#include <thinlayer/parameters/parameter_reader.h>
 #include <thinlayer/parameters/parameter_text.h>
 #include <thinlayer/parameters/parameters.h>
 

@@ -2,6 +2,7 @@
 
 #include <thinlayer/base/input_error.h>
 #include <thinlayer/parameters/parameter_checks.h>
+#include <thinlayer/parameters/parameter_reader.h>
 #include <thinlayer/parameters/parameter_text.h>
 #include <thinlayer/parameters/parameters.h>
 

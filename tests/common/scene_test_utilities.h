@@ -6,8 +6,9 @@
 // and the elastic cylinder the Fourier tests use.
 
 #include <thinlayer/analysis/analysis.h>
-#include <thinlayer/parameters/parameters.h>
 #include <thinlayer/mesh/scene.h>
+#include <thinlayer/parameters/parameter_reader.h>
+#include <thinlayer/parameters/parameters.h>
 
 #include <iostream>
 #include <string>

@@ -65,7 +65,8 @@ main()
         for (unsigned int level = 0; level < element.levels; ++level)
           errors.push_back(
             collapse_load(
-              {std::string(SOURCE_DIR) + "/../../prm/circular-footing-rigid.prm",
+              {std::string(SOURCE_DIR) +
+                 "/../../prm/circular-footing-rigid.prm",
                "-s",
                std::string("Discretisation/Element=") + element.name,
                "-s",

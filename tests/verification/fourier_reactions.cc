@@ -13,9 +13,9 @@
 // Equilibrium of the discrete body makes the last two exact on any mesh;
 // each is printed as the ratio to its closed form.
 #include <thinlayer/analysis/analysis.h>
-#include <thinlayer/postprocess/monitors.h>
-#include <thinlayer/parameters/parameters.h>
 #include <thinlayer/mesh/scene.h>
+#include <thinlayer/parameters/parameters.h>
+#include <thinlayer/postprocess/monitors.h>
 
 #include <cstdio>
 

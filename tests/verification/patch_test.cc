@@ -8,9 +8,9 @@
 #include <deal.II/base/symmetric_tensor.h>
 
 #include <thinlayer/analysis/analysis.h>
-#include <thinlayer/postprocess/monitors.h>
-#include <thinlayer/parameters/parameters.h>
 #include <thinlayer/mesh/scene.h>
+#include <thinlayer/parameters/parameters.h>
+#include <thinlayer/postprocess/monitors.h>
 
 #include <cstdio>
 

@@ -14,8 +14,9 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <thinlayer/analysis/analysis.h>
-#include <thinlayer/parameters/parameters.h>
 #include <thinlayer/mesh/scene.h>
+#include <thinlayer/parameters/parameter_reader.h>
+#include <thinlayer/parameters/parameters.h>
 
 #include <cstdio>
 

@@ -18,8 +18,9 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <thinlayer/analysis/analysis.h>
-#include <thinlayer/parameters/parameters.h>
 #include <thinlayer/mesh/scene.h>
+#include <thinlayer/parameters/parameter_reader.h>
+#include <thinlayer/parameters/parameters.h>
 
 #include <iostream>
 

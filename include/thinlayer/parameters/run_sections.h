@@ -1,0 +1,228 @@
+#ifndef thinlayer_parameters_run_sections_h
+#define thinlayer_parameters_run_sections_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/types.h>
+
+#include <thinlayer/base/name_table.h>
+#include <thinlayer/parameters/scene_sections.h>
+
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace thinlayer
+{
+  using namespace dealii;
+
+  // The sections of the run: its load programme, solver, monitors,
+  // reference and output (source/parameters/run_sections.cc).
+
+  /// "Loading": the load programme.
+  struct LoadingParameters
+  {
+    /// Increments of the load factor, one per load step: the programme.
+    std::vector<double> load_increments;
+    /// Automatic stepping: a failed step is halved and retried until the
+    /// collapse load is bracketed to this fraction of the load factor; 0
+    /// runs the programme as given (LoadStepping).
+    double collapse_resolution;
+
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm, const std::string &parameter_file);
+  };
+
+  /// "Solver": how the elasto-plastic equations of a load step are solved.
+  struct SolverParameters
+  {
+    /// The solution methods; each is a class of its own (see
+    /// create_solution_method()).
+    enum class Method
+    {
+      /// The paper's: constant stiffness, viscoplastic strain iterations.
+      viscoplastic,
+      /// Constant stiffness, return mapping, the stress excess as body
+      /// loads.
+      initial_stress,
+      /// Initial stress with Anderson acceleration on the same factor.
+      accelerated_initial_stress,
+      /// Consistent tangent, line search, load-step cut-back.
+      newton,
+      /// Accelerated initial stress; Newton where it fails a step.
+      accelerated_with_newton_fallback
+    };
+
+    /// When the iterations of a load step have converged.
+    enum class ConvergenceCriterion
+    {
+      /// The paper's: no body load, divided by the largest, changed by
+      /// more than the tolerance between two iterations.
+      body_loads,
+      /// The same test on the displacement increment of the step.
+      displacements,
+      /// Return-mapping methods: the out-of-balance force against the
+      /// largest external or internal force (reactions included).
+      residual
+    };
+
+    /// The direct solver of the constant stiffness.
+    enum class LinearSolver
+    {
+      cholmod,
+      umfpack
+    };
+
+    static const NameTable<Method>               method_names;
+    static const NameTable<ConvergenceCriterion> criterion_names;
+    static const NameTable<LinearSolver>         linear_solver_names;
+
+    Method               method;
+    unsigned int         anderson_depth;
+    unsigned int         max_cut_backs;
+    unsigned int         max_newton_iterations;
+    ConvergenceCriterion convergence_criterion;
+    double               tolerance;
+    unsigned int         max_iterations;
+    bool                 continue_after_failure;
+    LinearSolver         linear_solver;
+
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm, const std::string &parameter_file);
+  };
+
+  /// "Monitors": what the load and displacement columns of history.csv
+  /// measure.
+  struct MonitorParameters
+  {
+    enum class LoadMeasure
+    {
+      /// The load factor times a scale (e.g. a traction times an area).
+      load_factor,
+      /// The sum of reactions on a boundary id in one direction.
+      reaction,
+      /// The average of a stress component over a material id.
+      stress_average
+    };
+
+    enum class DisplacementMeasure
+    {
+      /// Length-weighted average over a boundary id.
+      boundary_average,
+      /// The value at a point.
+      point
+    };
+
+    /// The resultant of the reactions that the reaction measure reports.
+    enum class LoadComponent
+    {
+      /// Along x (Fourier: the direction theta = 0, from harmonic 1).
+      x,
+      /// Along y (Fourier: the axis, from harmonic 0).
+      y,
+      /// Plane strain: about the out-of-plane axis through the origin.
+      /// Fourier: about the horizontal axis through the origin normal to
+      /// theta = 0 (overturning, from harmonic 1).
+      moment,
+      /// Fourier: about the axis (torsion, the antisymmetric harmonic 0).
+      torque
+    };
+
+    static const NameTable<LoadMeasure>         load_measure_names;
+    static const NameTable<LoadComponent>       load_component_names;
+    static const NameTable<DisplacementMeasure> displacement_measure_names;
+
+    LoadMeasure        load_measure;
+    double             load_scale;
+    types::boundary_id load_boundary_id;
+    LoadComponent      load_component;
+    types::material_id load_material_id;
+    /// (i, j) of the averaged stress component.
+    std::pair<unsigned int, unsigned int> load_stress_component;
+    DisplacementMeasure                   displacement_measure;
+    /// Fourier: the angle (radians) at which displacements are monitored.
+    double              displacement_angle;
+    std::vector<double> displacement_point;
+    types::boundary_id  displacement_boundary_id;
+    unsigned int        displacement_component;
+    double              displacement_scale;
+
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler           &prm,
+          const std::string          &parameter_file,
+          const KinematicsParameters &kinematics);
+
+  private:
+    /// An InputError for a reaction component the kinematics cannot give.
+    void
+    check_load_component(const std::string          &parameter_file,
+                         const KinematicsParameters &kinematics) const;
+  };
+
+  /**
+   * "Reference": the analytic value of the load the run is compared with,
+   * and what a scene that verifies a closed form expects of its run: the
+   * outcome and the range, as multiples of the analytic load, its load must
+   * end in. A run that misses them is reported and exits non-zero, so a
+   * verification scene fails on its own truth, whatever its screen output.
+   */
+  struct ReferenceParameters
+  {
+    /// Evaluated from the geometry parameters; NaN where none is declared.
+    double analytic_load;
+    /// The outcome the run must end in; empty for any.
+    std::string expected_outcome;
+    /// The range, as multiples of analytic_load (in load units where there
+    /// is none), the run's load (its collapse load where it has one, else
+    /// its last converged load) must lie in; NaN for no check.
+    double expected_low  = std::numeric_limits<double>::quiet_NaN();
+    double expected_high = std::numeric_limits<double>::quiet_NaN();
+
+    /// Whether the parameter file expects anything of the run.
+    bool
+    expects_something() const
+    {
+      return !expected_outcome.empty() || std::isfinite(expected_low);
+    }
+
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler     &prm,
+          const std::string    &parameter_file,
+          const MeshParameters &mesh);
+  };
+
+  /// "Output": where results go and which.
+  struct OutputParameters
+  {
+    std::string  directory;
+    bool         write_vtu;
+    unsigned int vtu_subdivisions;
+    /// Fourier: slices of the revolved 3D view over the circle; 0 for none.
+    unsigned int view_slices;
+    bool         print_timing;
+    /// Whether the screen shows iteration counts (history.csv always has
+    /// them): a count can change with rounding, which the tests' compared
+    /// screen output must not depend on.
+    bool print_iterations;
+    /// Seconds between a long step's progress lines; 0 for none.
+    double progress_interval;
+
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm, const std::string &parameter_file);
+  };
+} // namespace thinlayer
+
+#endif

@@ -1,0 +1,105 @@
+#ifndef thinlayer_stepping_programme_h
+#define thinlayer_stepping_programme_h
+
+#include <deal.II/base/timer.h>
+
+#include <thinlayer/analysis/analysis.h>
+#include <thinlayer/output/output_writer.h>
+#include <thinlayer/parameters/parameters.h>
+#include <thinlayer/postprocess/layer_profile.h>
+#include <thinlayer/postprocess/monitors.h>
+#include <thinlayer/stepping/load_stepping.h>
+#include <thinlayer/stepping/run_outcome.h>
+
+#include <ostream>
+#include <vector>
+
+namespace thinlayer
+{
+  /**
+   * The load programme of a run, attempt by attempt: LoadStepping says
+   * which load factor comes next, the analysis solves it (through its
+   * solution method), and the programme measures the attempt (load,
+   * displacement, secant stiffness), decides whether a converged state is
+   * to count as failed (on the mechanism's knee, or moving against its
+   * load), probes beyond a failed step that shows no mechanism, and writes
+   * each attempt's row and fields as it ends, with one line on screen.
+   * What the end of the programme means (collapse, plateau, not converged)
+   * is judged from its ProgrammeResult by judge_outcome(), with the
+   * thresholds named in run_outcome.h.
+   */
+  class Programme
+  {
+  public:
+    Programme(const Parameters                &p,
+              Analysis<2>                     &analysis,
+              const Monitors<2>               &monitors,
+              const std::vector<LayerProfile> &layers,
+              OutputWriter                    &writer,
+              TimerOutput                     &timer,
+              std::ostream                    &out)
+      : p(p)
+      , analysis(analysis)
+      , monitors(monitors)
+      , layers(layers)
+      , writer(writer)
+      , timer(timer)
+      , out(out)
+    {}
+
+    ProgrammeResult
+    run();
+
+  private:
+    struct Attempt
+    {
+      unsigned int step;
+      double       load_factor;
+      StepResult   result;
+      double       load;
+      /// Analysis::secant_stiffness_ratio() of the attempt's state.
+      double stiffness_ratio;
+      /// A converged attempt on the mechanism (mechanism_knee_ratio):
+      /// never accepted under automatic stepping.
+      bool on_mechanism;
+      /// A converged attempt moving against its load: counted as failed.
+      bool against_load;
+    };
+
+    /// Solve the step to @p load_factor and measure it.
+    Attempt
+    attempt(const unsigned int step, const double load_factor);
+
+    /// Its row in history.csv, its fields unless it is to be retried,
+    /// and its line on screen.
+    void
+    record(const Attempt           &a,
+           const LoadStepping::Next next,
+           const bool               probe = false);
+
+    /// Take a converged attempt's figures and accept its state.
+    void
+    accept(const Attempt &a);
+
+    /**
+     * Automatic stepping ended at a failed step that shows no mechanism:
+     * at the limit load itself a method converges slowly rather than
+     * creeps. Try the same step once more beyond it, from the accepted
+     * state; a mechanism there is the evidence. The probe is never
+     * accepted.
+     */
+    void
+    probe_beyond(const Attempt &failed);
+
+    const Parameters                &p;
+    Analysis<2>                     &analysis;
+    const Monitors<2>               &monitors;
+    const std::vector<LayerProfile> &layers;
+    OutputWriter                    &writer;
+    TimerOutput                     &timer;
+    std::ostream                    &out;
+    ProgrammeResult                  result;
+  };
+} // namespace thinlayer
+
+#endif

@@ -1,0 +1,250 @@
+#include <thinlayer/base/interruption.h>
+#include <thinlayer/base/text_format.h>
+#include <thinlayer/stepping/programme.h>
+#include <thinlayer/stepping/step_progress.h>
+
+#include <cmath>
+
+namespace thinlayer
+{
+  namespace
+  {
+    using text_format::printf;
+
+    /// One line of progress on screen for an attempt, as it ends. A failed
+    /// step's state is no equilibrium, and its numbers depend on rounding:
+    /// they go to history.csv (where the mechanism can be seen), not here.
+    void
+    print_attempt(const unsigned int       step,
+                  const double             load_factor,
+                  const double             load,
+                  const double             displacement,
+                  const StepResult        &result,
+                  const bool               on_mechanism,
+                  const LoadStepping::Next next,
+                  const bool               probe,
+                  const bool               print_iterations,
+                  std::ostream            &out)
+    {
+      out << "  step " << printf("%4.0f", step) << "  load factor "
+          << printf("%10.4g", load_factor);
+      if (on_mechanism)
+        out << "  converged on the mechanism (secant stiffness below "
+            << mechanism_knee_ratio << " of the elastic one): "
+            << (next == LoadStepping::Next::retry ? "cut back"
+                                                  : "not accepted");
+      else if (result.converged)
+        out << "  load " << printf("%12.5e", load) << "  displacement "
+            << printf("%12.5e", displacement)
+            << (print_iterations
+                  ? "  iterations " + printf("%4.0f", result.iterations)
+                  : std::string())
+            << "  converged";
+      else if (next == LoadStepping::Next::retry)
+        out << "  failed: cut back (its state is in history.csv)";
+      else if (result.non_finite)
+        out << "  FAILED: not a finite number";
+      else if (probe)
+        out << "  probe beyond the failed step: FAILED to converge";
+      else
+        out << "  FAILED to converge (its state is in history.csv)";
+      out << std::endl;
+    }
+  } // namespace
+
+
+  ProgrammeResult
+  Programme::run()
+  {
+    // An easy step: at most a quarter of the constant-stiffness
+    // iteration limit (Newton's steps take a few iterations each).
+    LoadStepping stepping(p.loading,
+                          p.solver.continue_after_failure,
+                          p.solver.max_iterations / 4);
+    while (!stepping.finished())
+      {
+        const Attempt a = attempt(stepping.step(), stepping.target());
+        // A signal stopped the step: it is neither a failure nor a
+        // result, so it is not recorded; the accepted steps are the run.
+        if (interrupted())
+          {
+            result.interrupted_by          = interruption_signal();
+            result.interrupted_load_factor = a.load_factor;
+            analysis.reject_step();
+            break;
+          }
+        // A state on the mechanism is cut back like a failed one.
+        StepResult reported           = a.result;
+        reported.converged            = a.result.converged && !a.on_mechanism;
+        const LoadStepping::Next next = stepping.report(reported);
+        record(a, next);
+        if (next == LoadStepping::Next::retry)
+          {
+            analysis.reject_step();
+            continue;
+          }
+        ++result.steps_run;
+        if (reported.converged)
+          {
+            accept(a);
+            continue;
+          }
+        // Non-convergence is a result, not an error.
+        if (result.converged)
+          result.first_failed_load = a.load;
+        result.converged = false;
+        if (next == LoadStepping::Next::accept_failed)
+          {
+            analysis.accept_step();
+            continue;
+          }
+        result.stopped              = true;
+        result.stopped_on_mechanism = a.on_mechanism;
+        result.against_load         = a.against_load;
+        result.non_finite           = a.result.non_finite;
+        result.failed_load_factor   = a.load_factor;
+        result.bracket_resolved =
+          stepping.automatic() &&
+          std::abs(a.load_factor - result.last_converged_load_factor) <=
+            (1 + 1e-9) * p.loading.collapse_resolution *
+              std::max(std::abs(a.load_factor),
+                       std::abs(p.loading.load_increments.front()));
+        result.stiffness_ratio = a.stiffness_ratio;
+        result.growth_ratio    = a.result.growth_ratio;
+        if (stepping.automatic() && !a.result.non_finite && !a.against_load &&
+            analysis.has_external_load() &&
+            !shows_mechanism(a.stiffness_ratio, a.result.growth_ratio))
+          probe_beyond(a);
+        break;
+      }
+    return result;
+  }
+
+
+  Programme::Attempt
+  Programme::attempt(const unsigned int step, const double load_factor)
+  {
+    Attempt a{step, load_factor, {}, 0, 0, false, false};
+    {
+      TimerOutput::Scope scope(timer, "load steps");
+      const StepProgress progress(out,
+                                  step,
+                                  load_factor,
+                                  p.output.progress_interval);
+      a.result            = analysis.solve(load_factor);
+      a.load              = monitors.load();
+      result.displacement = monitors.displacement();
+    }
+    if (!std::isfinite(a.load) || !std::isfinite(result.displacement.mean))
+      {
+        a.result.non_finite = true;
+        a.result.converged  = false;
+      }
+    result.total_iterations += a.result.iterations;
+    ++result.attempts;
+    a.stiffness_ratio = analysis.secant_stiffness_ratio();
+    // A state that does negative work on its load increment is no
+    // response of an elastic-plastic body (Drucker's stability): the
+    // iterations have found a spurious equilibrium (seen with the
+    // default method on Case 3's layer at aspect ratio 10000, at
+    // displacements 1e9 times the elastic ones). It is a failed attempt.
+    if (a.result.converged && analysis.has_external_load() &&
+        a.stiffness_ratio < 0)
+      {
+        a.result.converged = false;
+        a.against_load     = true;
+      }
+    a.on_mechanism = a.result.converged && p.loading.collapse_resolution > 0 &&
+                     analysis.has_external_load() && a.stiffness_ratio >= 0 &&
+                     a.stiffness_ratio < mechanism_knee_ratio;
+    return a;
+  }
+
+
+  void
+  Programme::record(const Attempt           &a,
+                    const LoadStepping::Next next,
+                    const bool               probe)
+  {
+    {
+      TimerOutput::Scope scope(timer, "output");
+      writer.write_history_row(
+        {a.step,
+         result.attempts,
+         a.load_factor,
+         a.load,
+         result.displacement,
+         a.result,
+         !a.on_mechanism && (next == LoadStepping::Next::accept ||
+                             next == LoadStepping::Next::accept_failed),
+         a.stiffness_ratio});
+      if (next != LoadStepping::Next::retry)
+        {
+          if (p.output.write_vtu)
+            writer.write_fields(a.step,
+                                a.load_factor,
+                                analysis,
+                                p.monitors.displacement_angle,
+                                layers);
+          if (p.output.write_vtu && p.output.view_slices > 0)
+            writer.write_revolved_view(a.step,
+                                       a.load_factor,
+                                       analysis,
+                                       p.output.view_slices);
+          writer.write_displacements(analysis, p.monitors.displacement_angle);
+          writer.write_interface_profiles(
+            a.step, a.load_factor, analysis, layers, p.output.write_vtu);
+        }
+    }
+    print_attempt(a.step,
+                  a.load_factor,
+                  a.load,
+                  result.displacement.mean,
+                  a.result,
+                  a.on_mechanism,
+                  next,
+                  probe,
+                  p.output.print_iterations,
+                  out);
+  }
+
+
+  void
+  Programme::accept(const Attempt &a)
+  {
+    const double stiffness =
+      (a.load - result.last_converged_load) /
+      (a.load_factor - result.last_converged_load_factor);
+    if (!result.any_step_converged)
+      result.first_stiffness = stiffness;
+    result.last_stiffness             = stiffness;
+    result.last_converged_load        = a.load;
+    result.last_converged_load_factor = a.load_factor;
+    result.converged_displacement     = result.displacement;
+    result.converged_iterations       = result.total_iterations;
+    result.any_step_converged         = true;
+    if (a.result.max_yield_ratio > 10 * p.solver.tolerance)
+      ++result.steps_with_drift;
+    analysis.accept_step();
+  }
+
+
+  void
+  Programme::probe_beyond(const Attempt &failed)
+  {
+    analysis.reject_step();
+    const double probe_load_factor =
+      failed.load_factor +
+      (failed.load_factor - result.last_converged_load_factor);
+    const Attempt probe = attempt(failed.step + 1, probe_load_factor);
+    record(probe, LoadStepping::Next::stop, true);
+    if ((!probe.result.converged || probe.on_mechanism) &&
+        shows_mechanism(probe.stiffness_ratio, probe.result.growth_ratio))
+      {
+        result.stopped_on_mechanism = probe.on_mechanism;
+        result.probe_load_factor    = probe_load_factor;
+        result.stiffness_ratio      = probe.stiffness_ratio;
+        result.growth_ratio         = probe.result.growth_ratio;
+      }
+  }
+} // namespace thinlayer
