@@ -16,19 +16,13 @@
 #include <iostream>
 #include <string>
 
+#include "../common/truths.h"
+
 using namespace thinlayer;
+using truths::expect;
 
 namespace
 {
-  int failures = 0;
-
-  void
-  expect(const bool holds, const char *what)
-  {
-    std::cout << "  " << what << ": " << (holds ? "yes" : "NO") << '\n';
-    failures += holds ? 0 : 1;
-  }
-
   constexpr unsigned int n = 4;
 
   /// A non-symmetric, diagonally dominant matrix whose Jacobi iteration
@@ -119,6 +113,5 @@ main()
     expect(same, "after reset() the first update is the plain step");
   }
 
-  std::cout << (failures == 0 ? "all truths hold\n" : "SOME TRUTHS FAIL\n");
-  return failures == 0 ? 0 : 1;
+  return truths::conclude();
 }

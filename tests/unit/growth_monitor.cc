@@ -13,20 +13,13 @@
 #include <cstdio>
 #include <iostream>
 
+#include "../common/truths.h"
+
 using namespace thinlayer;
+using truths::expect;
 
 namespace
 {
-  int failures = 0;
-
-  void
-  expect(const bool holds, const char *what)
-  {
-    std::cout << "  " << what << ": " << (holds ? "yes" : "NO") << '\n';
-    failures += holds ? 0 : 1;
-  }
-
-
   std::vector<std::unique_ptr<ModeState>>
   modes(const unsigned int n_modes, const unsigned int size)
   {
@@ -112,6 +105,5 @@ main()
     expect(std::abs(r - 199. / 99.) < 1e-14, "the creeping mode is measured");
   }
 
-  std::cout << (failures == 0 ? "all truths hold\n" : "SOME TRUTHS FAIL\n");
-  return failures == 0 ? 0 : 1;
+  return truths::conclude();
 }

@@ -20,20 +20,13 @@
 #include <iostream>
 #include <vector>
 
+#include "../common/truths.h"
+
 using namespace thinlayer;
+using truths::expect;
 
 namespace
 {
-  int failures = 0;
-
-  void
-  expect(const bool holds, const char *what)
-  {
-    std::cout << "  " << what << ": " << (holds ? "yes" : "NO") << '\n';
-    failures += holds ? 0 : 1;
-  }
-
-
   StepResult
   result(const bool converged, const unsigned int iterations)
   {
@@ -179,6 +172,5 @@ main()
            "attempts exactly the programme's running sums");
   }
 
-  std::cout << (failures == 0 ? "all truths hold\n" : "SOME TRUTHS FAIL\n");
-  return failures == 0 ? 0 : 1;
+  return truths::conclude();
 }
