@@ -1,5 +1,8 @@
 #include <thinlayer/base/interruption.h>
 #include <thinlayer/base/text_format.h>
+#include <thinlayer/output/output_writer.h>
+#include <thinlayer/postprocess/layer_profile.h>
+#include <thinlayer/postprocess/monitors.h>
 #include <thinlayer/stepping/programme.h>
 #include <thinlayer/stepping/step_progress.h>
 

@@ -3,7 +3,7 @@
 
 #include <deal.II/base/tensor.h>
 
-#include <thinlayer/parameters/parameters.h>
+#include <thinlayer/parameters/interface_sections.h>
 
 namespace thinlayer
 {

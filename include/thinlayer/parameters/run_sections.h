@@ -5,7 +5,6 @@
 #include <deal.II/base/types.h>
 
 #include <thinlayer/base/name_table.h>
-#include <thinlayer/parameters/scene_sections.h>
 
 #include <cmath>
 #include <limits>
@@ -18,6 +17,9 @@
 namespace thinlayer
 {
   using namespace dealii;
+
+  struct KinematicsParameters;
+  struct MeshParameters;
 
   // The sections of the run: its load programme, solver, monitors,
   // reference and output (source/parameters/run_sections.cc).

@@ -4,10 +4,7 @@
 #include <deal.II/base/timer.h>
 
 #include <thinlayer/analysis/analysis.h>
-#include <thinlayer/output/output_writer.h>
 #include <thinlayer/parameters/parameters.h>
-#include <thinlayer/postprocess/layer_profile.h>
-#include <thinlayer/postprocess/monitors.h>
 #include <thinlayer/stepping/load_stepping.h>
 #include <thinlayer/stepping/run_outcome.h>
 
@@ -16,6 +13,11 @@
 
 namespace thinlayer
 {
+  class LayerProfile;
+  class OutputWriter;
+  template <int dim>
+  class Monitors;
+
   /**
    * The load programme of a run, attempt by attempt: LoadStepping says
    * which load factor comes next, the analysis solves it (through its
