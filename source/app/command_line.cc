@@ -30,7 +30,11 @@ namespace thinlayer
              "parameters=alpha=30\"\n"
           << "or -s \"Material 2/Young's modulus=1e4\". Results go to the\n"
           << "directory named by Output/Directory: history.csv, summary.json,\n"
-          << "fields.pvd with one VTU per load step.\n";
+          << "fields.pvd with one VTU per load step.\n\n"
+          << "Exit status: 0 a result (non-convergence is one), 1 bad input,\n"
+          << "a failed write or a sweep run that ended in an error, 2 a bad\n"
+          << "command line, 3 an internal error, 4 a run that missed its\n"
+          << "Reference/Expected outcome or load range, 128 + N signal N.\n";
     }
 
 
