@@ -43,7 +43,7 @@ namespace
     check("an element that does not exist", {"element.prm"});
 
     // One row of cells under Fourier kinematics, held only axially: Q8
-    // solves it (tests/fourier_cylinder_plastic.prm), Q9 with 2x2 points
+    // solves it (tests/scenes/fourier_cylinder_plastic.prm), Q9 with 2x2 points
     // is singular.
     write("q9-reduced.prm",
           "subsection Mesh\n  set File = " + std::string(SOURCE_DIR) +
