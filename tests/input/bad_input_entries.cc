@@ -120,6 +120,19 @@ namespace
   }
 
 
+  /// The last line of @p text that contains @p what; empty if none.
+  std::string
+  last_line_with(const std::string &text, const std::string &what)
+  {
+    std::string        found;
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);)
+      if (line.find(what) != std::string::npos)
+        found = line;
+    return found;
+  }
+
+
   /// What a verification scene expects of its run: malformed expectations
   /// are bad input; a run that misses a well-formed one is written (it is
   /// a result) and exits with status 4, and one that meets it with 0.
@@ -155,12 +168,9 @@ namespace
           arguments.push_back(e);
         }
       std::ostringstream out, err;
-      const int   status = thinlayer::run_command_line(arguments, out, err);
-      std::string check_line;
-      std::istringstream lines(out.str());
-      for (std::string line; std::getline(lines, line);)
-        if (line.find("reference check") != std::string::npos)
-          check_line = line;
+      const int status = thinlayer::run_command_line(arguments, out, err);
+      const std::string check_line =
+        last_line_with(out.str(), "reference check");
       std::cout << "* " << what << "\n  exit status " << status
                 << ", summary written: "
                 << (std::filesystem::exists("expectations/summary.json") ? "yes"
@@ -195,12 +205,8 @@ namespace
         std::vector<std::string> all = arguments;
         all.insert(all.end(), {"-s", "Output/Directory=former"});
         std::ostringstream out, err;
-        const int          status = thinlayer::run_command_line(all, out, err);
-        std::string        warning;
-        std::istringstream lines(out.str());
-        for (std::string line; std::getline(lines, line);)
-          if (line.find("warning: ") != std::string::npos)
-            warning = line;
+        const int          status  = thinlayer::run_command_line(all, out, err);
+        const std::string  warning = last_line_with(out.str(), "warning: ");
         std::cout << "* the former section name Interfaces, from "
                   << (arguments.size() == 1 ? "the file" : "the command line")
                   << "\n  exit status " << status << "\n"
