@@ -18,19 +18,6 @@ namespace thinlayer
 {
   namespace
   {
-    /// max_i |v_i| of a vector after condensation onto the free DoFs;
-    /// @p work holds the condensed copy (reused, so nothing is allocated
-    /// in the iterations).
-    double
-    condensed_max(const Vector<double>            &v,
-                  const AffineConstraints<double> &constraints,
-                  Vector<double>                  &work)
-    {
-      work = v;
-      constraints.condense(work);
-      return work.linfty_norm();
-    }
-
     Kinematics
     make_kinematics(const KinematicsParameters &p)
     {
@@ -56,7 +43,6 @@ namespace thinlayer
                     parameters.mesh.geometry_parameters,
                     kinematics,
                     parameters.parameter_file)
-    , time_step(std::numeric_limits<double>::infinity())
     , accepted_lambda(0)
     , current_lambda(0)
     , pending(false)
@@ -84,15 +70,9 @@ namespace thinlayer
                        "motion");
 
     setup_dofs_and_constraints();
-    setup_points();
     setup_mode_vectors();
-    point_loop.reinit(
-      strain_operator, kinematics, quadrature.size(), cell_law, history);
     assemble_stiffness();
     factorise_stiffness();
-
-    method = create_solution_method(parameters.solver, *this);
-    method->initialize();
   }
 
 
@@ -120,64 +100,31 @@ namespace thinlayer
       parameters.solver.linear_solver == SolverParameters::LinearSolver::cholmod
         ? FactorisedStiffness::Method::cholmod
         : FactorisedStiffness::Method::umfpack;
-    modes.clear();
-    DynamicSparsityPattern dsp(dof_handler.n_dofs());
+    systems.clear();
     for (unsigned int m = 0; m < kinematics.n_modes(); ++m)
       {
-        modes.push_back(std::make_unique<ModeState>(linear_solver));
+        systems.push_back(std::make_unique<ModeSystem>(linear_solver));
         make_mode_constraints(dof_handler,
                               kinematics,
                               m,
                               parameters.kinematics.axis_boundary_id,
                               element_constraints,
                               boundary_data,
-                              modes[m]->structural_constraints,
-                              modes[m]->constraints);
-        DoFTools::make_sparsity_pattern(dof_handler,
-                                        dsp,
-                                        modes[m]->constraints,
-                                        /*keep_constrained_dofs=*/true);
+                              systems[m]->structural_constraints,
+                              systems[m]->constraints);
       }
-    interface_elements.reinit(dof_handler,
-                              mapping,
-                              kinematics,
-                              parameters.interface_elements,
-                              parameters.materials,
-                              parameters.parameter_file);
-    for (unsigned int m = 0; m < kinematics.n_modes(); ++m)
-      interface_elements.add_sparsity(dsp, modes[m]->constraints);
+
+    groups = create_element_groups(
+      parameters, dof_handler, mapping, quadrature, kinematics);
+    continuum = dynamic_cast<const ContinuumCells<dim> *>(groups[0].get());
+    Assert(continuum != nullptr,
+           ExcMessage("The first element group must be the continuum."));
+
+    DynamicSparsityPattern dsp(dof_handler.n_dofs());
+    for (const auto &group : groups)
+      for (const auto &system : systems)
+        group->add_sparsity(dsp, system->constraints);
     sparsity.copy_from(dsp);
-  }
-
-
-  template <int dim>
-  void
-  Analysis<dim>::setup_points()
-  {
-    for (const auto &[id, material] : parameters.materials)
-      {
-        laws[id]  = create_material_law(material);
-        time_step = std::min(time_step, laws[id]->viscoplastic_time_step());
-      }
-
-    const unsigned int n_q = quadrature.size();
-    cell_law.resize(tria.n_active_cells());
-    history_storage.initialize(tria.begin_active(), tria.end(), n_q);
-    history.resize(tria.n_active_cells() * n_q);
-    for (const auto &cell : tria.active_cell_iterators())
-      {
-        const unsigned int c = cell->active_cell_index();
-        cell_law[c]          = laws.at(cell->material_id()).get();
-        const auto points    = history_storage.get_data(cell);
-        for (unsigned int q = 0; q < n_q; ++q)
-          {
-            history[c * n_q + q] = points[q].get();
-            history[c * n_q + q]->stations.assign(kinematics.n_stations(),
-                                                  PointState());
-          }
-      }
-
-    strain_operator.reinit(dof_handler, mapping, quadrature, kinematics);
   }
 
 
@@ -188,7 +135,7 @@ namespace thinlayer
     const unsigned int n = dof_handler.n_dofs();
     for (unsigned int m = 0; m < kinematics.n_modes(); ++m)
       {
-        ModeState &mode = *modes[m];
+        ModeSystem &mode = *systems[m];
         mode.stiffness.reinit(sparsity);
         mode.condensed_stiffness.reinit(sparsity);
 
@@ -206,16 +153,11 @@ namespace thinlayer
                                            dof_handler,
                                            m,
                                            mode.unit_load);
-        for (Vector<double> *v : {&mode.unit_rhs,
-                                  &mode.solution,
-                                  &mode.step_increment,
-                                  &mode.internal_forces,
-                                  &mode.body_loads,
-                                  &mode.body_load_change,
-                                  &mode.residual,
-                                  &mode.condensed})
-          v->reinit(n);
+        mode.unit_rhs.reinit(n);
       }
+    for (ModeVectors *vectors :
+         {&solution_vectors, &increment_vectors, &internal_force_vectors})
+      vectors->assign(kinematics.n_modes(), Vector<double>(n));
   }
 
 
@@ -223,51 +165,12 @@ namespace thinlayer
   void
   Analysis<dim>::assemble_stiffness()
   {
-    const unsigned int                   n   = fe.n_dofs_per_cell();
-    const unsigned int                   n_q = quadrature.size();
-    FullMatrix<double>                   cell_matrix(n, n);
-    std::vector<types::global_dof_index> dofs(n);
-    std::vector<SymmetricTensor<2, 3>>   strain(n), stress(n);
-
     for (unsigned int m = 0; m < kinematics.n_modes(); ++m)
-      for (unsigned int c = 0; c < tria.n_active_cells(); ++c)
-        {
-          cell_matrix                    = 0;
-          const SymmetricTensor<4, 3> &D = cell_law[c]->elasticity();
-          for (unsigned int q = 0; q < n_q; ++q)
-            {
-              const unsigned int p = c * n_q + q;
-              // K_m = int (c1 B1^T D B1 + c2 B2^T D B2) dA_r: the exact
-              // integral over the circle, with which the harmonics
-              // decouple.
-              for (unsigned int part = 0; part < strain_operator.n_parts();
-                   ++part)
-                {
-                  const double weight =
-                    (part == 0 ? kinematics.c1(m) : kinematics.c2(m)) *
-                    strain_operator.point_weight(p);
-                  if (weight == 0)
-                    continue;
-                  strain_operator.shape_strains(p, m, part, strain.data());
-                  for (unsigned int i = 0; i < n; ++i)
-                    stress[i] = D * strain[i];
-                  for (unsigned int i = 0; i < n; ++i)
-                    for (unsigned int j = 0; j < n; ++j)
-                      cell_matrix(i, j) += (strain[i] * stress[j]) * weight;
-                }
-            }
-          std::copy(strain_operator.cell_dofs(c),
-                    strain_operator.cell_dofs(c) + n,
-                    dofs.begin());
-          modes[m]->stiffness.add(dofs, cell_matrix);
-          modes[m]->constraints.distribute_local_to_global(
-            cell_matrix, dofs, modes[m]->condensed_stiffness);
-        }
-    for (unsigned int m = 0; m < kinematics.n_modes(); ++m)
-      interface_elements.assemble_elastic(m,
-                                          modes[m]->stiffness,
-                                          modes[m]->condensed_stiffness,
-                                          modes[m]->constraints);
+      for (const auto &group : groups)
+        group->assemble_elastic(m,
+                                systems[m]->stiffness,
+                                systems[m]->condensed_stiffness,
+                                systems[m]->constraints);
   }
 
 
@@ -276,9 +179,9 @@ namespace thinlayer
   Analysis<dim>::check_supports_and_load() const
   {
     bool loaded = false;
-    for (const auto &mode : modes)
-      loaded = loaded || mode->unit_load.linfty_norm() > 0 ||
-               mode->unit_prescribed_displacement.linfty_norm() > 0;
+    for (const auto &system : systems)
+      loaded = loaded || system->unit_load.linfty_norm() > 0 ||
+               system->unit_prescribed_displacement.linfty_norm() > 0;
     if (!loaded)
       throw InputError(parameters.parameter_file,
                        "Boundary <id>",
@@ -293,8 +196,8 @@ namespace thinlayer
     const std::string motion =
       free_rigid_body_motion(points,
                              dof_component,
-                             modes[0]->constraints,
-                             modes[0]->condensed_stiffness);
+                             systems[0]->constraints,
+                             systems[0]->condensed_stiffness);
     if (!motion.empty())
       throw InputError(parameters.parameter_file,
                        "Boundary <id>/Constrained components",
@@ -311,7 +214,7 @@ namespace thinlayer
     check_supports_and_load();
     for (unsigned int m = 0; m < kinematics.n_modes(); ++m)
       {
-        ModeState &mode = *modes[m];
+        ModeSystem &mode = *systems[m];
         mode.stiffness.vmult(mode.unit_rhs, mode.unit_prescribed_displacement);
         mode.unit_rhs.sadd(-1, 1, mode.unit_load);
         try
@@ -320,54 +223,7 @@ namespace thinlayer
           }
         catch (const std::exception &)
           {
-            const std::string matrix =
-              "the stiffness matrix" +
-              (kinematics.is_fourier()
-                 ? " of harmonic " + std::to_string(kinematics.harmonic(m))
-                 : std::string()) +
-              " is singular: ";
-            // With the supports holding every rigid motion (plane strain
-            // checks them), soft interface elements are what is left.
-            if (!kinematics.is_fourier() &&
-                !parameters.interface_elements.empty())
-              {
-                const auto softest = std::min_element(
-                  parameters.interface_elements.begin(),
-                  parameters.interface_elements.end(),
-                  [](const auto &a, const auto &b) {
-                    return std::min(a.second.shear_stiffness,
-                                    a.second.normal_stiffness) <
-                           std::min(b.second.shear_stiffness,
-                                    b.second.normal_stiffness);
-                  });
-                const auto &curve = softest->second;
-                throw InputError(
-                  parameters.parameter_file,
-                  InterfaceElementParameters::section(softest->first) +
-                    (curve.shear_stiffness <= curve.normal_stiffness
-                       ? "/Shear stiffness"
-                       : "/Normal stiffness"),
-                  matrix + "the supports hold every rigid-body motion, but the "
-                           "interface elements are too soft against the cells "
-                           "beside them for round-off; expected a stiffness of "
-                           "at least about 1e-8 E/h (E and h of the cells)");
-              }
-            // Q9 with 2x2 points has zero-energy modes of its own, which
-            // few cells do not suppress: name the element, not the supports.
-            if (!parameters.discretisation.serendipity &&
-                parameters.discretisation.gauss_points_per_direction == 2)
-              throw InputError(parameters.parameter_file,
-                               "Discretisation/Element",
-                               matrix +
-                                 "Q9 with 2x2 Gauss points has spurious "
-                                 "zero-energy modes that this mesh does not "
-                                 "suppress; use Q8, or 3x3 points (or "
-                                 "constrain enough components)");
-            throw InputError(parameters.parameter_file,
-                             "Boundary <id>/Constrained components",
-                             matrix +
-                               "constrain enough displacement components to "
-                               "prevent rigid-body motion");
+            throw_singular(m);
           }
       }
 
@@ -378,11 +234,11 @@ namespace thinlayer
     for (unsigned int k = 0; k < 10; ++k)
       {
         Timer timer;
-        for (auto &mode : modes)
+        for (auto &system : systems)
           {
-            work = mode->unit_rhs;
-            mode->constraints.condense(work);
-            mode->factorisation.solve(work);
+            work = system->unit_rhs;
+            system->constraints.condense(work);
+            system->factorisation.solve(work);
           }
         times.push_back(timer.wall_time());
       }
@@ -392,60 +248,85 @@ namespace thinlayer
 
 
   template <int dim>
-  StepResult
-  Analysis<dim>::solve(const double new_load_factor)
+  void
+  Analysis<dim>::throw_singular(const unsigned int m) const
   {
-    StepResult result = method->solve_step(new_load_factor);
-    current_lambda    = new_load_factor;
-    pending           = true;
+    const std::string matrix =
+      "the stiffness matrix" +
+      (kinematics.is_fourier()
+         ? " of harmonic " + std::to_string(kinematics.harmonic(m))
+         : std::string()) +
+      " is singular: ";
+    // With the supports holding every rigid motion (plane strain
+    // checks them), soft interface elements are what is left.
+    if (!kinematics.is_fourier() && !parameters.interface_elements.empty())
+      {
+        const auto softest =
+          std::min_element(parameters.interface_elements.begin(),
+                           parameters.interface_elements.end(),
+                           [](const auto &a, const auto &b) {
+                             return std::min(a.second.shear_stiffness,
+                                             a.second.normal_stiffness) <
+                                    std::min(b.second.shear_stiffness,
+                                             b.second.normal_stiffness);
+                           });
+        const auto &curve = softest->second;
+        throw InputError(parameters.parameter_file,
+                         InterfaceElementParameters::section(softest->first) +
+                           (curve.shear_stiffness <= curve.normal_stiffness
+                              ? "/Shear stiffness"
+                              : "/Normal stiffness"),
+                         matrix +
+                           "the supports hold every rigid-body motion, but the "
+                           "interface elements are too soft against the cells "
+                           "beside them for round-off; expected a stiffness of "
+                           "at least about 1e-8 E/h (E and h of the cells)");
+      }
+    // Q9 with 2x2 points has zero-energy modes of its own, which
+    // few cells do not suppress: name the element, not the supports.
+    if (!parameters.discretisation.serendipity &&
+        parameters.discretisation.gauss_points_per_direction == 2)
+      throw InputError(parameters.parameter_file,
+                       "Discretisation/Element",
+                       matrix + "Q9 with 2x2 Gauss points has spurious "
+                                "zero-energy modes that this mesh does not "
+                                "suppress; use Q8, or 3x3 points (or "
+                                "constrain enough components)");
+    throw InputError(parameters.parameter_file,
+                     "Boundary <id>/Constrained components",
+                     matrix + "constrain enough displacement components to "
+                              "prevent rigid-body motion");
+  }
 
-    for (const auto &mode : modes)
-      if (!std::isfinite(mode->step_increment.l1_norm()))
-        {
-          result.non_finite = true;
-          result.converged  = false;
-        }
-    // Overflow anywhere is no state: stresses whose invariants overflow
-    // make the yield tests meaningless (NaN compares false, and a point
-    // would count as elastic), so the step fails, never converges.
-    bool finite            = interface_elements.all_finite();
-    result.max_yield_ratio = std::numeric_limits<double>::quiet_NaN();
-    for (unsigned int p = 0; p < history.size(); ++p)
-      {
-        const MaterialLaw &law = *cell_law[p / quadrature.size()];
-        for (const PointState &state : history[p]->stations)
-          {
-            for (unsigned int k = 0;
-                 k < SymmetricTensor<2, 3>::n_independent_components;
-                 ++k)
-              finite =
-                finite && std::isfinite(state.stress.access_raw_entry(k));
-            if (!law.can_yield())
-              continue;
-            const double ratio = law.yield_ratio(state.stress);
-            finite             = finite && std::isfinite(ratio);
-            result.max_yield_ratio =
-              std::isnan(result.max_yield_ratio)
-                ? ratio
-                : std::max(result.max_yield_ratio, ratio);
-          }
-      }
-    const double interface_ratio = interface_elements.max_yield_ratio();
-    if (!std::isnan(interface_ratio))
-      result.max_yield_ratio =
-        std::isnan(result.max_yield_ratio)
-          ? interface_ratio
-          : std::max(result.max_yield_ratio, interface_ratio);
-    point_loop.compute_internal_forces(modes);
-    interface_elements.add_internal_forces(modes);
-    for (const auto &mode : modes)
-      finite = finite && std::isfinite(mode->internal_forces.linfty_norm());
-    if (!finite)
-      {
-        result.non_finite = true;
-        result.converged  = false;
-      }
-    return result;
+
+  template <int dim>
+  StateCheck
+  Analysis<dim>::end_attempt(const double load_factor)
+  {
+    current_lambda = load_factor;
+    pending        = true;
+
+    // Overflow anywhere is no state: the step fails, never converges.
+    StateCheck check;
+    for (const auto &increment : increment_vectors)
+      check.finite = check.finite && std::isfinite(increment.l1_norm());
+    for (const auto &group : groups)
+      group->check_state(check);
+    compute_internal_forces();
+    for (const auto &forces : internal_force_vectors)
+      check.finite = check.finite && std::isfinite(forces.linfty_norm());
+    return check;
+  }
+
+
+  template <int dim>
+  void
+  Analysis<dim>::compute_internal_forces()
+  {
+    for (auto &forces : internal_force_vectors)
+      forces = 0;
+    for (const auto &group : groups)
+      group->add_internal_forces(internal_force_vectors);
   }
 
 
@@ -462,22 +343,13 @@ namespace thinlayer
   void
   Analysis<dim>::accept_step(const double load_factor)
   {
-    for (auto &mode : modes)
-      mode->solution += mode->step_increment;
-    for (PointHistory *point : history)
-      for (PointState &state : point->stations)
-        {
-          state.converged_stress = state.stress;
-          state.plastic_strain +=
-            state.step_plastic_strain - state.pending_plastic_strain;
-          state.step_plastic_strain    = 0;
-          state.pending_plastic_strain = 0;
-        }
-    interface_elements.accept();
+    for (unsigned int m = 0; m < systems.size(); ++m)
+      solution_vectors[m] += increment_vectors[m];
+    for (const auto &group : groups)
+      group->accept();
     accepted_lambda = load_factor;
     current_lambda  = load_factor;
     pending         = false;
-    method->state_accepted();
   }
 
 
@@ -485,21 +357,13 @@ namespace thinlayer
   void
   Analysis<dim>::reject_step()
   {
-    for (auto &mode : modes)
-      mode->step_increment = 0;
-    for (PointHistory *point : history)
-      for (PointState &state : point->stations)
-        {
-          state.stress                 = state.converged_stress;
-          state.step_plastic_strain    = 0;
-          state.pending_plastic_strain = 0;
-        }
-    interface_elements.reject();
+    for (auto &increment : increment_vectors)
+      increment = 0;
+    for (const auto &group : groups)
+      group->reject();
     current_lambda = accepted_lambda;
     pending        = false;
-    point_loop.compute_internal_forces(modes);
-    interface_elements.add_internal_forces(modes);
-    method->state_rejected();
+    compute_internal_forces();
   }
 
 
@@ -511,15 +375,15 @@ namespace thinlayer
     double         elastic_work = 0, work = 0;
     Vector<double> load(dof_handler.n_dofs()),
       elastic_increment(dof_handler.n_dofs());
-    for (const auto &mode : modes)
+    for (unsigned int m = 0; m < systems.size(); ++m)
       {
-        load = mode->unit_rhs;
+        load = systems[m]->unit_rhs;
         load *= dlambda;
-        mode->constraints.condense(load);
+        systems[m]->constraints.condense(load);
         elastic_increment = load;
-        mode->factorisation.solve(elastic_increment);
+        systems[m]->factorisation.solve(elastic_increment);
         elastic_work += load * elastic_increment;
-        work += load * mode->step_increment;
+        work += load * increment_vectors[m];
       }
     if (elastic_work == 0)
       return std::numeric_limits<double>::quiet_NaN();
@@ -529,43 +393,68 @@ namespace thinlayer
 
   template <int dim>
   unsigned int
-  Analysis<dim>::update_viscoplastic_stresses()
+  Analysis<dim>::viscoplastic_update(ModeVectors &body_load_change)
   {
-    return point_loop.viscoplastic_update(time_step, modes) +
-           interface_elements.viscoplastic_update(modes);
+    unsigned int n_yielding = 0;
+    for (const auto &group : groups)
+      n_yielding +=
+        group->viscoplastic_update(increment_vectors, body_load_change);
+    return n_yielding;
   }
 
 
   template <int dim>
-  ResidualNorms
-  Analysis<dim>::evaluate_residual(const double                        target,
-                                   std::vector<SymmetricTensor<4, 3>> *tangents)
+  unsigned int
+  Analysis<dim>::return_mapping_update(const bool   with_tangents,
+                                       ModeVectors &stress_excess)
   {
-    ResidualNorms norms{
-      point_loop.return_mapping_update(modes, tangents) +
-        interface_elements.return_mapping_update(modes, tangents != nullptr),
-      0,
-      0,
-      0,
-      0};
-    for (auto &mode : modes)
+    for (unsigned int m = 0; m < systems.size(); ++m)
       {
-        Vector<double> &r = mode->residual;
-        r                 = mode->unit_load;
-        r *= target;
-        norms.forces = std::max(
-          {norms.forces, r.linfty_norm(), mode->internal_forces.linfty_norm()});
-        r -= mode->internal_forces;
-        mode->constraints.condense(r);
-        norms.max = std::max(norms.max, r.linfty_norm());
-        norms.l2 += r.norm_sqr();
-        norms.body_loads = std::max(norms.body_loads,
-                                    condensed_max(mode->body_loads,
-                                                  mode->constraints,
-                                                  mode->condensed));
+        internal_force_vectors[m] = 0;
+        stress_excess[m]          = 0;
       }
-    norms.l2 = std::sqrt(norms.l2);
-    return norms;
+    unsigned int n_yielding = 0;
+    for (const auto &group : groups)
+      n_yielding += group->return_mapping_update(increment_vectors,
+                                                 with_tangents,
+                                                 internal_force_vectors,
+                                                 stress_excess);
+    return n_yielding;
+  }
+
+
+  template <int dim>
+  void
+  Analysis<dim>::add_coupled_sparsity(
+    DynamicSparsityPattern          &dsp,
+    const AffineConstraints<double> &coupled_constraints)
+  {
+    for (const auto &group : groups)
+      group->add_coupled_sparsity(dsp, coupled_constraints);
+  }
+
+
+  template <int dim>
+  void
+  Analysis<dim>::add_coupled_tangent(
+    SparseMatrix<double>            &tangent,
+    const AffineConstraints<double> &coupled_constraints)
+  {
+    for (const auto &group : groups)
+      group->add_coupled_tangent(tangent, coupled_constraints);
+  }
+
+
+  template <int dim>
+  std::vector<NamedProfile>
+  Analysis<dim>::profiles() const
+  {
+    std::vector<NamedProfile> result;
+    for (const auto &group : groups)
+      for (auto &profile :
+           group->profiles(solution_vectors, increment_vectors, pending))
+        result.push_back(std::move(profile));
+    return result;
   }
 
 
@@ -574,17 +463,17 @@ namespace thinlayer
   Analysis<dim>::displacement_at(const double theta, const bool increment) const
   {
     Vector<double> u(dof_handler.n_dofs());
-    for (unsigned int m = 0; m < modes.size(); ++m)
+    for (unsigned int m = 0; m < systems.size(); ++m)
       {
         const Vector<double> &v =
-          increment ? modes[m]->step_increment : modes[m]->solution;
+          increment ? increment_vectors[m] : solution_vectors[m];
         const double t1 = kinematics.T1_at(m, theta);
         const double t2 = kinematics.T2_at(m, theta);
         // A pending step's state is the accepted one plus its increment.
         const bool add_increment = pending && !increment;
         for (unsigned int i = 0; i < u.size(); ++i)
           u[i] += (dof_component[i] < 2 ? t1 : t2) *
-                  (add_increment ? v[i] + modes[m]->step_increment[i] : v[i]);
+                  (add_increment ? v[i] + increment_vectors[m][i] : v[i]);
       }
     return u;
   }
@@ -594,8 +483,8 @@ namespace thinlayer
   bool
   Analysis<dim>::has_external_load() const
   {
-    for (const auto &mode : modes)
-      if (mode->unit_load.linfty_norm() > 0)
+    for (const auto &system : systems)
+      if (system->unit_load.linfty_norm() > 0)
         return true;
     return false;
   }
@@ -605,9 +494,9 @@ namespace thinlayer
   bool
   Analysis<dim>::all_laws_associated() const
   {
-    bool associated = interface_elements.all_associated();
-    for (const auto &[id, law] : laws)
-      associated = associated && law->is_associated();
+    bool associated = true;
+    for (const auto &group : groups)
+      associated = associated && group->all_associated();
     return associated;
   }
 

@@ -12,6 +12,7 @@
 #include <thinlayer/postprocess/monitors.h>
 #include <thinlayer/stepping/programme.h>
 #include <thinlayer/stepping/run_outcome.h>
+#include <thinlayer/stepping/step_solver.h>
 
 #include <cmath>
 #include <filesystem>
@@ -160,6 +161,13 @@ namespace thinlayer
             << std::endl;
         analysis.setup();
       }
+      // The stepping owns the solution method; Newton's sparsity and its
+      // cells' elastic matrices are set up here.
+      std::unique_ptr<StepSolver<2>> solver;
+      {
+        TimerOutput::Scope scope(timer, "setup and factorisation");
+        solver = std::make_unique<StepSolver<2>>(p.solver, analysis);
+      }
       const Monitors<2> monitors(p.monitors, analysis, p.parameter_file);
       std::vector<LayerProfile> layers;
       for (const types::material_id id : p.layers.material_ids)
@@ -176,7 +184,8 @@ namespace thinlayer
       print_model(p, scene, analysis, summary.warnings, out);
 
       const ProgrammeResult run =
-        Programme(p, analysis, monitors, layers, writer, timer, out).run();
+        Programme(p, analysis, *solver, monitors, layers, writer, timer, out)
+          .run();
 
       judge_outcome(analysis, run, summary);
       summary.converged           = run.converged;

@@ -115,7 +115,7 @@ namespace thinlayer
                          ? Quadrature<1>(QGaussLobatto<1>(3))
                          : Quadrature<1>(QGauss<1>(curve.points));
 
-    Element element{laws.at(pair.curve).get(), {}};
+    Element element{laws.at(pair.curve).get(), {}, {}};
     std::map<types::global_dof_index, unsigned int> local;
     for (unsigned int q = 0; q < rule.size(); ++q)
       {
@@ -167,17 +167,15 @@ namespace thinlayer
 
 
   Tensor<1, 3>
-  InterfaceElements::local_jump(
-    const IntegrationPoint                        &point,
-    const unsigned int                             s,
-    const std::vector<std::unique_ptr<ModeState>> &modes,
-    Vector<double> ModeState::*const vector) const
+  InterfaceElements::local_jump(const IntegrationPoint &point,
+                                const unsigned int      s,
+                                const ModeVectors      &vectors) const
   {
     const Element &element = elements[point.element];
     Tensor<1, 3>   jump; // (x, y, theta) summed over the modes
-    for (unsigned int m = 0; m < modes.size(); ++m)
+    for (unsigned int m = 0; m < vectors.size(); ++m)
       {
-        const Vector<double> &v  = (*modes[m]).*vector;
+        const Vector<double> &v  = vectors[m];
         const double          t1 = kinematics->T1(m, s);
         const double          t2 = kinematics->T2(m, s);
         for (const Entry &e : point.entries)
@@ -192,12 +190,10 @@ namespace thinlayer
 
 
   void
-  InterfaceElements::add_forces(
-    const IntegrationPoint                        &point,
-    const unsigned int                             s,
-    const Tensor<1, 3>                            &traction,
-    const std::vector<std::unique_ptr<ModeState>> &modes,
-    Vector<double> ModeState::*const target) const
+  InterfaceElements::add_forces(const IntegrationPoint &point,
+                                const unsigned int      s,
+                                const Tensor<1, 3>     &traction,
+                                ModeVectors            &target) const
   {
     const Element &element = elements[point.element];
     const double   weight  = kinematics->station_weight(s) * point.weight;
@@ -207,9 +203,9 @@ namespace thinlayer
                               traction[0] * point.tangent[1] +
                                 traction[1] * point.normal[1],
                               traction[2]};
-    for (unsigned int m = 0; m < modes.size(); ++m)
+    for (unsigned int m = 0; m < target.size(); ++m)
       {
-        Vector<double> &v  = (*modes[m]).*target;
+        Vector<double> &v  = target[m];
         const double    t1 = kinematics->T1(m, s);
         const double    t2 = kinematics->T2(m, s);
         for (const Entry &e : point.entries)
@@ -308,74 +304,68 @@ namespace thinlayer
 
   template <typename Rule>
   unsigned int
-  InterfaceElements::for_each_point(
-    std::vector<std::unique_ptr<ModeState>> &modes,
-    const Rule                              &rule)
+  InterfaceElements::for_each_point(const ModeVectors &step_increment,
+                                    const Rule        &rule)
   {
     const unsigned int n_stations = kinematics->n_stations();
     unsigned int       n_yielding = 0;
     for (unsigned int p = 0; p < points.size(); ++p)
       for (unsigned int s = 0; s < n_stations; ++s)
-        n_yielding +=
-          rule(points[p],
-               s,
-               *elements[points[p].element].law,
-               states[p * n_stations + s],
-               local_jump(points[p], s, modes, &ModeState::step_increment),
-               p * n_stations + s);
+        n_yielding += rule(points[p],
+                           s,
+                           *elements[points[p].element].law,
+                           states[p * n_stations + s],
+                           local_jump(points[p], s, step_increment),
+                           p * n_stations + s);
     return n_yielding;
   }
 
 
   unsigned int
-  InterfaceElements::viscoplastic_update(
-    std::vector<std::unique_ptr<ModeState>> &modes)
+  InterfaceElements::viscoplastic_update(const ModeVectors &step_increment,
+                                         ModeVectors       &body_load_change)
   {
     // The paper's rule: the traction of the step's jump less its
     // viscoplastic jump; where F > 0, a viscoplastic jump increment
     // dt F dQ/dt whose K-projection is a body load.
-    return for_each_point(modes,
-                          [&](const IntegrationPoint &point,
-                              const unsigned int      s,
-                              const InterfaceLaw     &law,
-                              InterfacePointState    &state,
-                              const Tensor<1, 3>     &jump,
-                              const unsigned int /*point_station*/) {
-                            state.traction = state.converged_traction +
-                                             law.elastic_traction(
-                                               jump - state.step_plastic_jump);
-                            state.pending_plastic_jump = 0;
-                            state.yielding             = false;
-                            if (!law.can_yield())
-                              return 0u;
-                            const double F = law.yield_function(state.traction);
-                            if (F <= 0)
-                              return 0u;
-                            state.yielding = true;
-                            const Tensor<1, 3> plastic =
-                              (law.viscoplastic_time_step() * F) *
-                              law.flow_direction(state.traction);
-                            state.step_plastic_jump += plastic;
-                            state.pending_plastic_jump = plastic;
-                            add_forces(point,
-                                       s,
-                                       law.elastic_traction(plastic),
-                                       modes,
-                                       &ModeState::body_load_change);
-                            return 1u;
-                          });
+    return for_each_point(
+      step_increment,
+      [&](const IntegrationPoint &point,
+          const unsigned int      s,
+          const InterfaceLaw     &law,
+          InterfacePointState    &state,
+          const Tensor<1, 3>     &jump,
+          const unsigned int /*point_station*/) {
+        state.traction = state.converged_traction +
+                         law.elastic_traction(jump - state.step_plastic_jump);
+        state.pending_plastic_jump = 0;
+        state.yielding             = false;
+        if (!law.can_yield())
+          return 0u;
+        const double F = law.yield_function(state.traction);
+        if (F <= 0)
+          return 0u;
+        state.yielding             = true;
+        const Tensor<1, 3> plastic = (law.viscoplastic_time_step() * F) *
+                                     law.flow_direction(state.traction);
+        state.step_plastic_jump += plastic;
+        state.pending_plastic_jump = plastic;
+        add_forces(point, s, law.elastic_traction(plastic), body_load_change);
+        return 1u;
+      });
   }
 
 
   unsigned int
-  InterfaceElements::return_mapping_update(
-    std::vector<std::unique_ptr<ModeState>> &modes,
-    const bool                               with_tangents)
+  InterfaceElements::return_mapping_update(const ModeVectors &step_increment,
+                                           const bool         with_tangents,
+                                           ModeVectors       &internal_forces,
+                                           ModeVectors       &stress_excess)
   {
     // The trial traction returned to the admissible set: the traction
     // gives the internal forces, the excess a body load.
     return for_each_point(
-      modes,
+      step_increment,
       [&](const IntegrationPoint &point,
           const unsigned int      s,
           const InterfaceLaw     &law,
@@ -392,18 +382,15 @@ namespace thinlayer
           tangents[point_station] = r.tangent;
         state.step_plastic_jump = law.compliance() * (trial - r.traction);
         if (state.yielding)
-          add_forces(
-            point, s, trial - r.traction, modes, &ModeState::body_loads);
-        add_forces(
-          point, s, state.traction, modes, &ModeState::internal_forces);
+          add_forces(point, s, trial - r.traction, stress_excess);
+        add_forces(point, s, state.traction, internal_forces);
         return state.yielding ? 1u : 0u;
       });
   }
 
 
   void
-  InterfaceElements::add_internal_forces(
-    std::vector<std::unique_ptr<ModeState>> &modes) const
+  InterfaceElements::add_internal_forces(ModeVectors &internal_forces) const
   {
     const unsigned int n_stations = kinematics->n_stations();
     for (unsigned int p = 0; p < points.size(); ++p)
@@ -411,8 +398,7 @@ namespace thinlayer
         add_forces(points[p],
                    s,
                    states[p * n_stations + s].traction,
-                   modes,
-                   &ModeState::internal_forces);
+                   internal_forces);
   }
 
 
@@ -442,28 +428,8 @@ namespace thinlayer
   }
 
 
-  double
-  InterfaceElements::max_yield_ratio() const
-  {
-    double             ratio      = std::numeric_limits<double>::quiet_NaN();
-    const unsigned int n_stations = kinematics ? kinematics->n_stations() : 1;
-    for (unsigned int p = 0; p < points.size(); ++p)
-      {
-        const InterfaceLaw &law = *elements[points[p].element].law;
-        if (law.can_yield())
-          for (unsigned int s = 0; s < n_stations; ++s)
-            {
-              const double r =
-                law.yield_ratio(states[p * n_stations + s].traction);
-              ratio = std::isnan(ratio) ? r : std::max(ratio, r);
-            }
-      }
-    return ratio;
-  }
-
-
-  bool
-  InterfaceElements::all_finite() const
+  void
+  InterfaceElements::check_state(StateCheck &check) const
   {
     const unsigned int n_stations = kinematics ? kinematics->n_stations() : 1;
     for (unsigned int p = 0; p < points.size(); ++p)
@@ -472,13 +438,15 @@ namespace thinlayer
         for (unsigned int s = 0; s < n_stations; ++s)
           {
             const Tensor<1, 3> &t = states[p * n_stations + s].traction;
-            if (!std::isfinite(t[0]) || !std::isfinite(t[1]) ||
-                !std::isfinite(t[2]) ||
-                (law.can_yield() && !std::isfinite(law.yield_ratio(t))))
-              return false;
+            check.finite          = check.finite && std::isfinite(t[0]) &&
+                           std::isfinite(t[1]) && std::isfinite(t[2]);
+            if (!law.can_yield())
+              continue;
+            const double ratio = law.yield_ratio(t);
+            check.finite       = check.finite && std::isfinite(ratio);
+            check.add_yield_ratio(ratio);
           }
       }
-    return true;
   }
 
 
@@ -495,7 +463,7 @@ namespace thinlayer
   void
   InterfaceElements::add_coupled_sparsity(
     DynamicSparsityPattern          &dsp,
-    const AffineConstraints<double> &coupled_constraints) const
+    const AffineConstraints<double> &coupled_constraints)
   {
     for (const Element &element : elements)
       coupled_constraints.add_entries_local_to_global(element.coupled_dofs,
@@ -507,7 +475,7 @@ namespace thinlayer
   void
   InterfaceElements::add_coupled_tangent(
     SparseMatrix<double>            &tangent,
-    const AffineConstraints<double> &coupled_constraints) const
+    const AffineConstraints<double> &coupled_constraints)
   {
     const unsigned int n_stations = kinematics->n_stations();
     for (auto &matrix : coupled_matrices)
@@ -536,21 +504,24 @@ namespace thinlayer
   }
 
 
-  std::vector<types::boundary_id>
-  InterfaceElements::curve_ids() const
+  std::vector<NamedProfile>
+  InterfaceElements::profiles(const ModeVectors &solution,
+                              const ModeVectors &step_increment,
+                              const bool         pending) const
   {
-    std::vector<types::boundary_id> ids;
+    std::vector<NamedProfile> result;
     for (const auto &[id, law] : laws)
-      ids.push_back(id);
-    return ids;
+      result.push_back({"interface-curve-" + std::to_string(id),
+                        profile(id, solution, step_increment, pending)});
+    return result;
   }
 
 
   Profile
-  InterfaceElements::profile(
-    const types::boundary_id                       curve,
-    const std::vector<std::unique_ptr<ModeState>> &modes,
-    const bool                                     pending) const
+  InterfaceElements::profile(const types::boundary_id curve,
+                             const ModeVectors       &solution,
+                             const ModeVectors       &step_increment,
+                             const bool               pending) const
   {
     const unsigned int        n_stations = kinematics->n_stations();
     Profile                   result;
@@ -569,12 +540,10 @@ namespace thinlayer
           {
             const InterfaceLaw        &law   = *elements[points[p].element].law;
             const InterfacePointState &state = states[p * n_stations + s];
-            const Tensor<1, 3>         djump =
-              local_jump(points[p], s, modes, &ModeState::step_increment);
+            const Tensor<1, 3> djump = local_jump(points[p], s, step_increment);
             // The state: the accepted solution, plus the pending step.
-            const Tensor<1, 3> jump =
-              local_jump(points[p], s, modes, &ModeState::solution) +
-              (pending ? djump : Tensor<1, 3>());
+            const Tensor<1, 3> jump = local_jump(points[p], s, solution) +
+                                      (pending ? djump : Tensor<1, 3>());
             InterfaceValues v;
             v.slip                        = jump[0];
             v.opening                     = jump[1];

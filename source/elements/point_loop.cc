@@ -132,62 +132,69 @@ namespace thinlayer
 
 
   unsigned int
-  PointLoop::viscoplastic_update(const double time_step,
-                                 std::vector<std::unique_ptr<ModeState>> &modes)
+  PointLoop::viscoplastic_update(const double       time_step,
+                                 const ModeVectors &step_increment,
+                                 ModeVectors       &body_load_change)
   {
-    return update(modes, ViscoplasticRule{time_step});
+    return update(step_increment,
+                  ViscoplasticRule{time_step},
+                  body_load_change,
+                  nullptr);
   }
 
 
   unsigned int
-  PointLoop::return_mapping_update(
-    std::vector<std::unique_ptr<ModeState>> &modes,
-    std::vector<SymmetricTensor<4, 3>>      *tangents)
+  PointLoop::return_mapping_update(const ModeVectors &step_increment,
+                                   std::vector<SymmetricTensor<4, 3>> *tangents,
+                                   ModeVectors &internal_forces,
+                                   ModeVectors &stress_excess)
   {
-    return update(modes, ReturnMappingRule{tangents});
+    return update(step_increment,
+                  ReturnMappingRule{tangents},
+                  stress_excess,
+                  &internal_forces);
   }
 
 
   template <typename PointRule>
   unsigned int
-  PointLoop::update(std::vector<std::unique_ptr<ModeState>> &modes,
-                    const PointRule                         &rule)
+  PointLoop::update(const ModeVectors &step_increment,
+                    const PointRule   &rule,
+                    ModeVectors       &body_loads,
+                    ModeVectors       *internal_forces)
   {
     // The task list keeps its capacity and each chunk has its work space
     // (chunk_scratch); only the task objects themselves are new.
     tasks.clear();
     for (unsigned int k = 0; k < chunks; ++k)
-      tasks.push_back(Threads::new_task([this, k, &modes, &rule]() {
-        return update_cells(
-          chunk_begin(k), chunk_begin(k + 1), modes, rule, chunk_scratch[k]);
+      tasks.push_back(Threads::new_task([this, k, &step_increment, &rule]() {
+        return update_cells(chunk_begin(k),
+                            chunk_begin(k + 1),
+                            step_increment,
+                            rule,
+                            chunk_scratch[k]);
       }));
     unsigned int n_yielding = 0;
     for (auto &task : tasks)
       n_yielding += task.return_value();
 
     // The serial pass, in cell order.
-    const unsigned int n = strain_operator->dofs_per_cell();
-    for (unsigned int m = 0; m < modes.size(); ++m)
+    const unsigned int n       = strain_operator->dofs_per_cell();
+    const unsigned int n_modes = step_increment.size();
+    for (unsigned int m = 0; m < n_modes; ++m)
       {
-        ModeState      &mode   = *modes[m];
-        Vector<double> &target = PointRule::with_internal_forces
-                                   ? mode.body_loads
-                                   : mode.body_load_change;
-        if (PointRule::with_internal_forces)
-          {
-            mode.body_loads      = 0;
-            mode.internal_forces = 0;
-          }
+        Vector<double> &target = body_loads[m];
         for (unsigned int c = 0; c < n_cells; ++c)
           {
             const types::global_dof_index *dofs = strain_operator->cell_dofs(c);
-            const std::size_t slot = (std::size_t(c) * modes.size() + m) * n;
+            const std::size_t slot = (std::size_t(c) * n_modes + m) * n;
             if (cell_has_body_loads[c])
               for (unsigned int i = 0; i < n; ++i)
                 target[dofs[i]] += cell_body_loads[slot + i];
             if (PointRule::with_internal_forces)
               for (unsigned int i = 0; i < n; ++i)
-                mode.internal_forces[dofs[i]] += cell_internal_forces[slot + i];
+                (*internal_forces)[m][dofs[i]] +=
+                  cell_internal_forces[slot + i];
           }
       }
     return n_yielding;
@@ -196,11 +203,11 @@ namespace thinlayer
 
   template <typename PointRule>
   unsigned int
-  PointLoop::update_cells(const unsigned int                             begin,
-                          const unsigned int                             end,
-                          const std::vector<std::unique_ptr<ModeState>> &modes,
-                          const PointRule                               &rule,
-                          ChunkScratch &scratch)
+  PointLoop::update_cells(const unsigned int begin,
+                          const unsigned int end,
+                          const ModeVectors &step_increment,
+                          const PointRule   &rule,
+                          ChunkScratch      &scratch)
   {
     const StrainOperator &B           = *strain_operator;
     const Kinematics     &k           = *kinematics;
@@ -224,7 +231,7 @@ namespace thinlayer
         bool has_body_loads = false;
         for (unsigned int m = 0; m < n_modes; ++m)
           for (unsigned int i = 0; i < n; ++i)
-            du[m * n + i] = modes[m]->step_increment[dofs[i]];
+            du[m * n + i] = step_increment[m][dofs[i]];
         if (cell_forces != nullptr)
           std::fill(cell_forces, cell_forces + n_modes * n, 0.);
 
@@ -288,16 +295,13 @@ namespace thinlayer
 
 
   void
-  PointLoop::compute_internal_forces(
-    std::vector<std::unique_ptr<ModeState>> &modes) const
+  PointLoop::add_internal_forces(ModeVectors &internal_forces) const
   {
     const StrainOperator &B       = *strain_operator;
     const Kinematics     &k       = *kinematics;
     const unsigned int    n       = B.dofs_per_cell();
     const unsigned int    n_modes = k.n_modes();
     std::vector<double>   cell_forces(n_modes * n);
-    for (auto &mode : modes)
-      mode->internal_forces = 0;
     for (unsigned int c = 0; c < n_cells; ++c)
       {
         std::fill(cell_forces.begin(), cell_forces.end(), 0.);
@@ -321,8 +325,7 @@ namespace thinlayer
           }
         for (unsigned int m = 0; m < n_modes; ++m)
           for (unsigned int i = 0; i < n; ++i)
-            modes[m]->internal_forces[B.cell_dofs(c)[i]] +=
-              cell_forces[m * n + i];
+            internal_forces[m][B.cell_dofs(c)[i]] += cell_forces[m * n + i];
       }
   }
 } // namespace thinlayer

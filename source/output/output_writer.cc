@@ -189,12 +189,8 @@ namespace thinlayer
     for (const LayerProfile &interface : interfaces)
       write("interface-" + std::to_string(interface.get_material_id()),
             interface.profile(analysis));
-    const InterfaceElements &elements = analysis.get_interface_elements();
-    for (const types::boundary_id curve : elements.curve_ids())
-      write("interface-curve-" + std::to_string(curve),
-            elements.profile(curve,
-                             analysis.get_modes(),
-                             analysis.is_pending()));
+    for (const NamedProfile &profile : analysis.profiles())
+      write(profile.name, profile.profile);
   }
 
 

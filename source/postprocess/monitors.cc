@@ -93,7 +93,7 @@ namespace thinlayer
   {
     const auto [i, j]           = parameters.load_stress_component;
     const unsigned int n_q      = analysis.n_quadrature_points();
-    const auto        &B        = analysis.get_strain_operator();
+    const auto        &B        = analysis.cells().get_strain_operator();
     double             integral = 0, area = 0;
     for (const auto &cell :
          analysis.get_dof_handler().get_triangulation().active_cell_iterators())
@@ -138,9 +138,8 @@ namespace thinlayer
     unsigned int m = 0;
     while (kinematics.harmonic(m) != harmonic)
       ++m;
-    const ModeState &mode = analysis.mode(m);
-    Vector<double>   f(mode.internal_forces);
-    f.add(-analysis.load_factor(), mode.unit_load);
+    Vector<double> f(analysis.internal_forces()[m]);
+    f.add(-analysis.load_factor(), analysis.mode_system(m).unit_load);
     analysis.get_element_constraints().condense(f);
 
     // Components: 0 x or r, 1 y or z, 2 theta; coordinates 0 x or r,

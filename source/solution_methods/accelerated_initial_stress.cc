@@ -43,14 +43,14 @@ namespace thinlayer
     for (unsigned int m = 0; m < analysis.n_modes(); ++m)
       for (unsigned int i = 0; i < n; ++i)
         {
-          stacked_increment[m * n + i]  = analysis.mode(m).step_increment[i];
+          stacked_increment[m * n + i]  = analysis.step_increment()[m][i];
           stacked_correction[m * n + i] = this->correction[m][i];
         }
     anderson.update(stacked_increment, stacked_correction);
     for (unsigned int m = 0; m < analysis.n_modes(); ++m)
       for (unsigned int i = 0; i < n; ++i)
-        analysis.mode(m).step_increment[i] = stacked_increment[m * n + i];
-    norms = analysis.evaluate_residual(target);
+        analysis.step_increment()[m][i] = stacked_increment[m * n + i];
+    norms = this->evaluate_residual(target);
     return true;
   }
 

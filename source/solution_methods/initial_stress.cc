@@ -11,8 +11,8 @@ namespace thinlayer
     this->elastic_corrections();
     this->remember_increments();
     for (unsigned int m = 0; m < this->analysis.n_modes(); ++m)
-      this->analysis.mode(m).step_increment += this->correction[m];
-    norms = this->analysis.evaluate_residual(target);
+      this->analysis.step_increment()[m] += this->correction[m];
+    norms = this->evaluate_residual(target);
     return true;
   }
 

@@ -28,6 +28,8 @@ namespace thinlayer
   {
     accelerated_parameters.max_iterations =
       std::min(parameters.max_iterations, accelerated_budget);
+    accelerated.report_acceptance_to(*this);
+    newton.report_acceptance_to(*this);
   }
 
 

@@ -23,7 +23,10 @@ namespace thinlayer
     const Vector<double> zero(analysis.get_dof_handler().n_dofs());
     correction.assign(analysis.n_modes(), zero);
     previous_increment.assign(analysis.n_modes(), zero);
+    residual.assign(analysis.n_modes(), zero);
     accepted_increment.assign(analysis.n_modes(), zero);
+    stress_excess.assign(analysis.n_modes(), zero);
+    condensed            = zero;
     accepted_step        = 0;
     accepted_load_factor = analysis.accepted_load_factor();
   }
@@ -33,9 +36,8 @@ namespace thinlayer
   void
   ReturnMappingMethod<dim>::state_accepted()
   {
-    for (unsigned int m = 0; m < analysis.n_modes(); ++m)
-      accepted_increment[m] = analysis.mode(m).step_increment;
-    accepted_step = analysis.accepted_load_factor() - accepted_load_factor;
+    accepted_increment = analysis.step_increment();
+    accepted_step      = analysis.accepted_load_factor() - accepted_load_factor;
     accepted_load_factor = analysis.accepted_load_factor();
   }
 
@@ -44,7 +46,36 @@ namespace thinlayer
   ResidualNorms
   ReturnMappingMethod<dim>::starting_residual(const double target)
   {
-    return analysis.evaluate_residual(target);
+    return evaluate_residual(target);
+  }
+
+
+  template <int dim>
+  ResidualNorms
+  ReturnMappingMethod<dim>::evaluate_residual(const double target,
+                                              const bool   tangents)
+  {
+    ResidualNorms norms{
+      analysis.return_mapping_update(tangents, stress_excess), 0, 0, 0, 0};
+    for (unsigned int m = 0; m < analysis.n_modes(); ++m)
+      {
+        const ModeSystem &mode = analysis.mode_system(m);
+        Vector<double>   &r    = residual[m];
+        r                      = mode.unit_load;
+        r *= target;
+        norms.forces = std::max({norms.forces,
+                                 r.linfty_norm(),
+                                 analysis.internal_forces()[m].linfty_norm()});
+        r -= analysis.internal_forces()[m];
+        mode.constraints.condense(r);
+        norms.max = std::max(norms.max, r.linfty_norm());
+        norms.l2 += r.norm_sqr();
+        condensed = stress_excess[m];
+        mode.constraints.condense(condensed);
+        norms.body_loads = std::max(norms.body_loads, condensed.linfty_norm());
+      }
+    norms.l2 = std::sqrt(norms.l2);
+    return norms;
   }
 
 
@@ -56,17 +87,17 @@ namespace thinlayer
     const double scale   = accepted_step != 0 ? dlambda / accepted_step : 0;
     for (unsigned int m = 0; m < analysis.n_modes(); ++m)
       {
-        ModeState &mode = analysis.mode(m);
+        Vector<double> &increment = analysis.step_increment()[m];
         if (scale > 0)
           {
-            mode.step_increment = accepted_increment[m];
-            mode.step_increment *= scale;
+            increment = accepted_increment[m];
+            increment *= scale;
           }
         else
           {
             // The first step, or a reversal of the load: no predictor.
-            mode.step_increment = mode.unit_prescribed_displacement;
-            mode.step_increment *= dlambda;
+            increment = analysis.mode_system(m).unit_prescribed_displacement;
+            increment *= dlambda;
           }
       }
   }
@@ -117,6 +148,7 @@ namespace thinlayer
               }
             // A converged part of a cut-back step.
             analysis.accept_step(target);
+            this->acceptance_listener->state_accepted();
             size = std::min(size, new_load_factor - target);
             continue;
           }
@@ -149,9 +181,11 @@ namespace thinlayer
         if (converged(norms))
           return true;
         report_iteration(k + 1, "residual", norms.max / norms.forces);
-        growth.iteration_done(k + 1, max_iterations(), analysis.get_modes());
+        growth.iteration_done(k + 1,
+                              max_iterations(),
+                              analysis.step_increment());
       }
-    result.growth_ratio = growth.growth_ratio(analysis.get_modes());
+    result.growth_ratio = growth.growth_ratio(analysis.step_increment());
     return false;
   }
 
@@ -174,10 +208,10 @@ namespace thinlayer
             double change = 0, size = 0;
             for (unsigned int m = 0; m < analysis.n_modes(); ++m)
               {
-                previous_increment[m] -= analysis.mode(m).step_increment;
+                const Vector<double> &increment = analysis.step_increment()[m];
+                previous_increment[m] -= increment;
                 change = std::max(change, previous_increment[m].linfty_norm());
-                size =
-                  std::max(size, analysis.mode(m).step_increment.linfty_norm());
+                size   = std::max(size, increment.linfty_norm());
               }
             return change <= tolerance * size;
           }
@@ -192,10 +226,9 @@ namespace thinlayer
   {
     for (unsigned int m = 0; m < analysis.n_modes(); ++m)
       {
-        ModeState &mode = analysis.mode(m);
-        correction[m]   = mode.residual;
-        mode.factorisation.solve(correction[m]);
-        mode.constraints.distribute(correction[m]);
+        correction[m] = residual[m];
+        analysis.elastic_solve(m, correction[m]);
+        analysis.mode_system(m).constraints.distribute(correction[m]);
       }
   }
 
@@ -204,8 +237,7 @@ namespace thinlayer
   void
   ReturnMappingMethod<dim>::remember_increments()
   {
-    for (unsigned int m = 0; m < analysis.n_modes(); ++m)
-      previous_increment[m] = analysis.mode(m).step_increment;
+    previous_increment = analysis.step_increment();
   }
 
 

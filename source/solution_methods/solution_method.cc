@@ -20,6 +20,14 @@ namespace thinlayer
 
 
   template <int dim>
+  void
+  SolutionMethod<dim>::report_acceptance_to(SolutionMethod<dim> &composite)
+  {
+    acceptance_listener = &composite;
+  }
+
+
+  template <int dim>
   std::unique_ptr<SolutionMethod<dim>>
   create_solution_method(const SolverParameters &parameters,
                          Analysis<dim>          &analysis)

@@ -19,8 +19,10 @@ namespace thinlayer
   void
   ViscoplasticMethod<dim>::initialize()
   {
-    previous_increment.assign(
-      analysis.n_modes(), Vector<double>(analysis.get_dof_handler().n_dofs()));
+    const Vector<double> zero(analysis.get_dof_handler().n_dofs());
+    previous_increment.assign(analysis.n_modes(), zero);
+    body_loads.assign(analysis.n_modes(), zero);
+    body_load_change.assign(analysis.n_modes(), zero);
   }
 
 
@@ -29,12 +31,12 @@ namespace thinlayer
   ViscoplasticMethod<dim>::solve_increment(const unsigned int m,
                                            const double       dlambda)
   {
-    ModeState      &mode      = analysis.mode(m);
-    Vector<double> &increment = mode.step_increment;
-    increment                 = mode.body_loads;
+    const ModeSystem &mode      = analysis.mode_system(m);
+    Vector<double>   &increment = analysis.step_increment()[m];
+    increment                   = body_loads[m];
     increment.add(dlambda, mode.unit_rhs);
     mode.constraints.condense(increment);
-    mode.factorisation.solve(increment);
+    analysis.elastic_solve(m, increment);
     mode.constraints.distribute(increment);
     increment.add(dlambda, mode.unit_prescribed_displacement);
   }
@@ -48,9 +50,9 @@ namespace thinlayer
     const unsigned int n_modes = analysis.n_modes();
     for (unsigned int m = 0; m < n_modes; ++m)
       {
-        analysis.mode(m).body_loads     = 0;
-        analysis.mode(m).step_increment = 0;
-        previous_increment[m]           = 0;
+        body_loads[m]                = 0;
+        analysis.step_increment()[m] = 0;
+        previous_increment[m]        = 0;
       }
 
     const bool body_load_criterion =
@@ -63,33 +65,33 @@ namespace thinlayer
         ++result.iterations;
         for (unsigned int m = 0; m < n_modes; ++m)
           {
-            previous_increment[m] = analysis.mode(m).step_increment;
+            previous_increment[m] = analysis.step_increment()[m];
             solve_increment(m, dlambda);
-            analysis.mode(m).body_load_change = 0;
+            body_load_change[m] = 0;
           }
 
-        result.plastic_points = analysis.update_viscoplastic_stresses();
+        result.plastic_points = analysis.viscoplastic_update(body_load_change);
 
         // The criteria take the largest entry over all modes.
         double change = 0, size = 0;
         for (unsigned int m = 0; m < n_modes; ++m)
           {
-            ModeState &mode = analysis.mode(m);
+            const Vector<double> &increment = analysis.step_increment()[m];
             // The body loads are kept condensed (condensing is linear, and
             // idempotent, so solve_increment() may condense them again):
             // the criterion reads them with no copy.
-            mode.constraints.condense(mode.body_load_change);
-            mode.body_loads += mode.body_load_change;
+            analysis.mode_system(m).constraints.condense(body_load_change[m]);
+            body_loads[m] += body_load_change[m];
             if (body_load_criterion)
               {
-                change = std::max(change, mode.body_load_change.linfty_norm());
-                size   = std::max(size, mode.body_loads.linfty_norm());
+                change = std::max(change, body_load_change[m].linfty_norm());
+                size   = std::max(size, body_loads[m].linfty_norm());
               }
             else
               {
-                previous_increment[m] -= mode.step_increment;
+                previous_increment[m] -= increment;
                 change = std::max(change, previous_increment[m].linfty_norm());
-                size   = std::max(size, mode.step_increment.linfty_norm());
+                size   = std::max(size, increment.linfty_norm());
               }
           }
         if (result.plastic_points == 0)
@@ -98,14 +100,14 @@ namespace thinlayer
           result.converged = (change <= parameters.tolerance * size);
         growth.iteration_done(result.iterations,
                               parameters.max_iterations,
-                              analysis.get_modes());
+                              analysis.step_increment());
         report_iteration(result.iterations,
                          body_load_criterion ? "body-load change"
                                              : "displacement change",
                          size > 0 ? change / size : 0.);
       }
     if (!result.converged)
-      result.growth_ratio = growth.growth_ratio(analysis.get_modes());
+      result.growth_ratio = growth.growth_ratio(analysis.step_increment());
 
     return result;
   }

@@ -6,45 +6,41 @@
 namespace thinlayer
 {
   void
-  GrowthMonitor::start(const std::vector<std::unique_ptr<ModeState>> &modes)
+  GrowthMonitor::start(const ModeVectors &step_increment)
   {
-    first.resize(modes.size());
-    for (unsigned int m = 0; m < modes.size(); ++m)
-      first[m] = modes[m]->step_increment;
+    first          = step_increment;
     change_at_half = 0;
   }
 
 
   void
-  GrowthMonitor::iteration_done(
-    const unsigned int                             iteration,
-    const unsigned int                             limit,
-    const std::vector<std::unique_ptr<ModeState>> &modes)
+  GrowthMonitor::iteration_done(const unsigned int iteration,
+                                const unsigned int limit,
+                                const ModeVectors &step_increment)
   {
     if (iteration == 1)
-      start(modes);
+      start(step_increment);
     else if (iteration == limit / 2)
-      change_at_half = change(modes);
+      change_at_half = change(step_increment);
   }
 
 
   double
-  GrowthMonitor::growth_ratio(
-    const std::vector<std::unique_ptr<ModeState>> &modes)
+  GrowthMonitor::growth_ratio(const ModeVectors &step_increment)
   {
     if (!(change_at_half > 0))
       return std::numeric_limits<double>::quiet_NaN();
-    return change(modes) / change_at_half;
+    return change(step_increment) / change_at_half;
   }
 
 
   double
-  GrowthMonitor::change(const std::vector<std::unique_ptr<ModeState>> &modes)
+  GrowthMonitor::change(const ModeVectors &step_increment)
   {
     double result = 0;
-    for (unsigned int m = 0; m < modes.size(); ++m)
+    for (unsigned int m = 0; m < step_increment.size(); ++m)
       {
-        work = modes[m]->step_increment;
+        work = step_increment[m];
         work -= first[m];
         result = std::max(result, work.linfty_norm());
       }

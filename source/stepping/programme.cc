@@ -73,7 +73,7 @@ namespace thinlayer
           {
             result.interrupted_by          = interruption_signal();
             result.interrupted_load_factor = a.load_factor;
-            analysis.reject_step();
+            solver.reject();
             break;
           }
         // A state on the mechanism is cut back like a failed one.
@@ -83,7 +83,7 @@ namespace thinlayer
         record(a, next);
         if (next == LoadStepping::Next::retry)
           {
-            analysis.reject_step();
+            solver.reject();
             continue;
           }
         ++result.steps_run;
@@ -98,7 +98,7 @@ namespace thinlayer
         result.converged = false;
         if (next == LoadStepping::Next::accept_failed)
           {
-            analysis.accept_step();
+            solver.accept();
             continue;
           }
         result.stopped              = true;
@@ -134,7 +134,7 @@ namespace thinlayer
                                   step,
                                   load_factor,
                                   p.output.progress_interval);
-      a.result            = analysis.solve(load_factor);
+      a.result            = solver.solve(load_factor);
       a.load              = monitors.load();
       result.displacement = monitors.displacement();
     }
@@ -228,14 +228,14 @@ namespace thinlayer
     result.any_step_converged         = true;
     if (a.result.max_yield_ratio > 10 * p.solver.tolerance)
       ++result.steps_with_drift;
-    analysis.accept_step();
+    solver.accept();
   }
 
 
   void
   Programme::probe_beyond(const Attempt &failed)
   {
-    analysis.reject_step();
+    solver.reject();
     const double probe_load_factor =
       failed.load_factor +
       (failed.load_factor - result.last_converged_load_factor);

@@ -9,6 +9,7 @@
 #include <thinlayer/mesh/scene.h>
 #include <thinlayer/parameters/parameter_reader.h>
 #include <thinlayer/parameters/parameters.h>
+#include <thinlayer/stepping/step_solver.h>
 
 #include <iostream>
 #include <string>
@@ -64,8 +65,11 @@ namespace thinlayer_tests
     const thinlayer::Scene scene(p, std::cout);
     thinlayer::Analysis<2> analysis(p, scene.triangulation());
     analysis.setup();
-    analysis.solve(1.0);
-    analysis.accept_step();
+    {
+      thinlayer::StepSolver<2> solver(p.solver, analysis);
+      solver.solve(1.0);
+      solver.accept();
+    }
     inspect(analysis, p);
   }
 } // namespace thinlayer_tests

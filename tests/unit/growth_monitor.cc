@@ -6,7 +6,6 @@
 // (1 - rho^(N-1))/(1 - rho^(N/2-1)), about 1 + rho^(N/2); a step that stops
 // before half its limit gives NaN; and the largest change over several
 // modes is the one measured.
-#include <thinlayer/analysis/mode_state.h>
 #include <thinlayer/stepping/growth_monitor.h>
 
 #include <cmath>
@@ -20,20 +19,6 @@ using truths::expect;
 
 namespace
 {
-  std::vector<std::unique_ptr<ModeState>>
-  modes(const unsigned int n_modes, const unsigned int size)
-  {
-    std::vector<std::unique_ptr<ModeState>> result;
-    for (unsigned int m = 0; m < n_modes; ++m)
-      {
-        result.push_back(
-          std::make_unique<ModeState>(FactorisedStiffness::Method::cholmod));
-        result.back()->step_increment.reinit(size);
-      }
-    return result;
-  }
-
-
   /// The growth ratio after @p iterations of at most @p limit, the
   /// increment of iteration k being @p increment(k) times a fixed vector
   /// in the modes that @p moving names.
@@ -44,14 +29,14 @@ namespace
         const Increment         &increment,
         const std::vector<bool> &moving = {true})
   {
-    auto          m = modes(moving.size(), 3);
+    ModeVectors   m(moving.size(), Vector<double>(3));
     GrowthMonitor monitor;
     for (unsigned int k = 1; k <= iterations; ++k)
       {
         for (unsigned int i = 0; i < moving.size(); ++i)
           if (moving[i])
             for (unsigned int j = 0; j < 3; ++j)
-              m[i]->step_increment[j] = (j + 1.) * increment(k) * (i + 1);
+              m[i][j] = (j + 1.) * increment(k) * (i + 1);
         monitor.iteration_done(k, limit, m);
       }
     return monitor.growth_ratio(m);

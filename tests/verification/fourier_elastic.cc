@@ -33,6 +33,7 @@
 #include <thinlayer/mesh/scene.h>
 #include <thinlayer/parameters/parameter_reader.h>
 #include <thinlayer/parameters/parameters.h>
+#include <thinlayer/stepping/step_solver.h>
 
 #include <cstdio>
 #include <functional>
@@ -140,8 +141,11 @@ namespace
         thinlayer::check_ids(p, tria);
         thinlayer::Analysis<2> analysis(p, tria);
         analysis.setup();
-        analysis.solve(1);
-        analysis.accept_step();
+        {
+          thinlayer::StepSolver<2> solver(p.solver, analysis);
+          solver.solve(1);
+          solver.accept();
+        }
 
         Vector<double>  errors(tria.n_active_cells());
         const QGauss<2> quadrature(5);
@@ -222,8 +226,11 @@ namespace
         thinlayer::check_ids(p, tria);
         thinlayer::Analysis<2> analysis(p, tria);
         analysis.setup();
-        analysis.solve(1);
-        analysis.accept_step();
+        {
+          thinlayer::StepSolver<2> solver(p.solver, analysis);
+          solver.solve(1);
+          solver.accept();
+        }
 
         // Largest nodal error against the exact amplitudes; the largest
         // displacement is k/2 (z^2 + nu r^2) = 0.0215 at r = 1, z = 2.
@@ -268,8 +275,9 @@ namespace
         "subsection Monitors\n  set Displacement boundary id = 3\nend\n"));
       auto a = std::make_unique<thinlayer::Analysis<2>>(*p, *tria);
       a->setup();
-      a->solve(1);
-      a->accept_step();
+      thinlayer::StepSolver<2> solver(p->solver, *a);
+      solver.solve(1);
+      solver.accept();
       return std::make_tuple(std::move(tria), std::move(p), std::move(a));
     };
 
@@ -326,8 +334,11 @@ namespace
     thinlayer::check_ids(p, tria);
     thinlayer::Analysis<2> analysis(p, tria);
     analysis.setup();
-    analysis.solve(1);
-    analysis.accept_step();
+    {
+      thinlayer::StepSolver<2> solver(p.solver, analysis);
+      solver.solve(1);
+      solver.accept();
+    }
 
     const double error =
       largest_nodal_error(analysis,

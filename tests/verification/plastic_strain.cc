@@ -17,6 +17,7 @@
 #include <thinlayer/mesh/scene.h>
 #include <thinlayer/parameters/parameter_reader.h>
 #include <thinlayer/parameters/parameters.h>
+#include <thinlayer/stepping/step_solver.h>
 
 #include <cstdio>
 
@@ -79,11 +80,12 @@ main()
       const thinlayer::Scene scene(p, std::cout);
       thinlayer::Analysis<2> analysis(p, scene.triangulation());
       analysis.setup();
+      thinlayer::StepSolver<2> solver(p.solver, analysis);
 
       for (const double load_factor : {0.5, 0.8, 0.9, 0.95})
         {
-          const thinlayer::StepResult result = analysis.solve(load_factor);
-          analysis.accept_step();
+          const thinlayer::StepResult result = solver.solve(load_factor);
+          solver.accept();
           const auto [worst, largest] = mismatch(analysis);
           std::printf("%s, load factor %.2f: converged %s, yielding points "
                       "%s, max |plastic strain - (eps - C^-1 sigma)| / max "

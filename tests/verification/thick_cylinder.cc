@@ -21,6 +21,7 @@
 #include <thinlayer/mesh/scene.h>
 #include <thinlayer/parameters/parameter_reader.h>
 #include <thinlayer/parameters/parameters.h>
+#include <thinlayer/stepping/step_solver.h>
 
 #include <iostream>
 
@@ -112,8 +113,11 @@ convergence(const std::string &element, const std::string &gauss)
       thinlayer::check_ids(p, tria);
       thinlayer::Analysis<2> analysis(p, tria);
       analysis.setup();
-      analysis.solve(1.0);
-      analysis.accept_step();
+      {
+        thinlayer::StepSolver<2> solver(p.solver, analysis);
+        solver.solve(1.0);
+        solver.accept();
+      }
 
       const LameDisplacement exact;
       Vector<double>         errors(tria.n_active_cells());

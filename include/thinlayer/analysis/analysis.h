@@ -2,7 +2,6 @@
 #define thinlayer_analysis_analysis_h
 
 #include <deal.II/base/quadrature_lib.h>
-#include <deal.II/base/quadrature_point_data.h>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
@@ -11,18 +10,14 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
-#include <thinlayer/analysis/mode_state.h>
+#include <thinlayer/analysis/mode_system.h>
 #include <thinlayer/discretisation/boundary_data.h>
 #include <thinlayer/discretisation/kinematics.h>
-#include <thinlayer/discretisation/strain_operator.h>
-#include <thinlayer/elements/interface_elements.h>
-#include <thinlayer/elements/point_loop.h>
-#include <thinlayer/materials/material_law.h>
-#include <thinlayer/materials/point_history.h>
+#include <thinlayer/discretisation/mode_vectors.h>
+#include <thinlayer/elements/continuum_cells.h>
+#include <thinlayer/elements/element_group.h>
 #include <thinlayer/parameters/parameters.h>
-#include <thinlayer/solution_methods/solution_method.h>
 
-#include <map>
 #include <memory>
 #include <vector>
 
@@ -31,43 +26,24 @@ namespace thinlayer
   using namespace dealii;
 
   /**
-   * The norms of the out-of-balance force that the return-mapping methods
-   * test for convergence (Analysis::evaluate_residual()).
-   */
-  struct ResidualNorms
-  {
-    unsigned int n_yielding;
-    /// max |r| and |r|_2 over the free DoFs of all modes.
-    double max;
-    double l2;
-    /// max |b| of the stress excess, and max |f| of the internal and
-    /// external forces: the scales max |r| is measured against.
-    double body_loads;
-    double forces;
-  };
-
-  /**
    * The body of an elasto-plastic analysis of one scene, for any
    * Kinematics: plane strain (one mode, one station) or an axisymmetric
    * body under non-axisymmetric load (one mode per Fourier harmonic, the
-   * material evaluated at circumferential stations). It holds what every
-   * solution method works on, and nothing of any one method:
+   * material evaluated at circumferential stations). It holds the state
+   * every solution method works on, and nothing of any one method:
    *
-   * - the modes (ModeState): constraints, the elastic stiffness assembled
-   *   and factorised once, loads, displacements;
-   * - the point history (one PointState per Gauss point and station), the
-   *   strain-displacement cache (StrainOperator) and the point loop
-   *   (PointLoop) over them;
-   * - the residual evaluation of the return-mapping methods, and the
-   *   acceptance of a load step's state.
+   * - one ModeSystem per mode: constraints, the elastic stiffness
+   *   assembled and factorised once, the loads at unit load factor;
+   * - the state: per mode the accepted displacements, the current step's
+   *   increment and the internal forces; the load factors;
+   * - the element groups (ElementGroup: the continuum cells, interface
+   *   elements), which hold the point states and laws and do the work at
+   *   the points. The analysis loops over them.
    *
-   * A load step is solved by the SolutionMethod that the Solver section
-   * names (create_solution_method()). Its state, converged or not (a
-   * failed step shows the mechanism), stays pending until the run accepts
-   * it or rejects it to retry a smaller step (LoadStepping); the method is
-   * told either way. For isotropic elasticity the modes decouple,
-   * so a constant-stiffness iteration is one forward/backward substitution
-   * per mode and one pass of the point loop.
+   * A solution method (owned by the stepping, see StepSolver) sets the
+   * step increments and calls the point rules; the stepping then ends the
+   * attempt (end_attempt()), and accepts or rejects its state. Data flows
+   * one way: the analysis knows no method.
    *
    * Discretisation: FE_Q(2) per component, reduced to the 8-node
    * serendipity element by make_serendipity_constraints() (or kept as Q9),
@@ -82,43 +58,141 @@ namespace thinlayer
     /**
      * An analysis of @p tria with the model sections of @p parameters
      * (mesh geometry constants, kinematics, discretisation, materials,
-     * boundaries) and the method and linear solver of its Solver section.
+     * interface elements, boundaries) and the linear solver of its Solver
+     * section.
      */
     Analysis(const Parameters &parameters, const Triangulation<dim> &tria);
 
     ~Analysis();
 
     /**
-     * Distribute DoFs, build constraints, loads and the point cache,
-     * assemble and factorise the stiffness of every mode, and set up the
-     * solution method. Throws InputError if the body is not restrained.
+     * Distribute DoFs, build constraints, loads and the element groups,
+     * and assemble and factorise the stiffness of every mode. Throws
+     * InputError if the body is not restrained.
      */
     void
     setup();
 
-    /**
-     * An attempt at a load step from the accepted state to the total load
-     * factor @p load_factor, with the solution method. Its state (converged
-     * or not: a failed step shows the mechanism) is the current one, and
-     * stays pending until accept_step() or reject_step(). A step whose
-     * displacements are not finite has not converged
-     * (StepResult::non_finite).
-     */
-    StepResult
-    solve(const double load_factor);
+    /// @name The state and the load factors
+    /// @{
 
-    /// Make the pending state of the last solve() the accepted one.
-    void
-    accept_step();
+    unsigned int
+    n_modes() const;
 
-    /// Return to the accepted state: the pending state is dropped.
+    /// The linear system of mode @p m.
+    const ModeSystem &
+    mode_system(const unsigned int m) const;
+
+    /// Solve K_m x = @p rhs in place with mode @p m's elastic factors
+    /// (@p rhs condensed with its constraints).
     void
-    reject_step();
+    elastic_solve(const unsigned int m, Vector<double> &rhs);
+
+    /// The displacements of the last accepted state, per mode.
+    const ModeVectors &
+    solution() const;
+
+    /// The displacement increment of the current step, per mode: what the
+    /// solution methods iterate on.
+    ModeVectors &
+    step_increment();
+
+    const ModeVectors &
+    step_increment() const;
+
+    /// The internal forces int B^T sigma of the current stresses, per mode
+    /// (set by return_mapping_update() and end_attempt()).
+    const ModeVectors &
+    internal_forces() const;
+
+    /// The load factor of the last accepted state.
+    double
+    accepted_load_factor() const;
 
     /// The load factor of the current state: of the last attempt while it
     /// is pending, else the accepted one.
     double
     load_factor() const;
+
+    /// Whether the current state is a pending step (solution plus
+    /// step_increment) rather than the accepted one.
+    bool
+    is_pending() const;
+
+    /// @}
+    /// @name What the solution methods do to the state
+    /// @{
+
+    /**
+     * The paper's viscoplastic point rule of every group for the step
+     * increments; the body loads of the new viscoplastic strains are added
+     * to @p body_load_change. Returns the number of yielding points and
+     * stations.
+     */
+    unsigned int
+    viscoplastic_update(ModeVectors &body_load_change);
+
+    /**
+     * Stresses at every point and station by the return mapping of the
+     * trial stresses of the step increments: sets the internal forces, and
+     * @p stress_excess to the nodal forces of trial less returned stress.
+     * With @p with_tangents, every group keeps its consistent tangents
+     * for add_coupled_tangent(). Returns the number of yielding points
+     * and stations.
+     */
+    unsigned int
+    return_mapping_update(const bool with_tangents, ModeVectors &stress_excess);
+
+    /// Whether every flow rule is associated (a symmetric consistent
+    /// tangent).
+    bool
+    all_laws_associated() const;
+
+    /// Add the couplings of Newton's tangent over all modes (DoF
+    /// m * n_dofs + i of mode m) to @p dsp, every group's.
+    void
+    add_coupled_sparsity(DynamicSparsityPattern          &dsp,
+                         const AffineConstraints<double> &coupled_constraints);
+
+    /// Add every group's tangent of the last return mapping with tangents.
+    void
+    add_coupled_tangent(SparseMatrix<double>            &tangent,
+                        const AffineConstraints<double> &coupled_constraints);
+
+    /// @}
+    /// @name The end of an attempt, and its state accepted or rejected
+    /// @{
+
+    /**
+     * The solution method has left its state of the step to
+     * @p load_factor: it is the current one, pending until accept_step() or
+     * reject_step(). Computes its internal forces, and checks whether it
+     * is finite (increments, stresses, yield ratios) and how far it is
+     * from yield.
+     */
+    StateCheck
+    end_attempt(const double load_factor);
+
+    /// Make the pending state the accepted one.
+    void
+    accept_step();
+
+    /**
+     * Make the current stresses the converged ones, add the step's
+     * increment to the solution and its plastic strain to the total, and
+     * take @p load_factor as the accepted load factor: for a method that
+     * accepts a converged part of a step (cut-back).
+     */
+    void
+    accept_step(const double load_factor);
+
+    /// Return to the accepted state: the pending state is dropped.
+    void
+    reject_step();
+
+    /// @}
+    /// @name Questions about the state
+    /// @{
 
     /**
      * The secant stiffness along the pending step's increment against the
@@ -136,81 +210,41 @@ namespace thinlayer
     bool
     has_external_load() const;
 
-    /// @name What the solution methods work on
-    /// @{
+    /**
+     * The displacement at angle @p theta, summed over the modes, as a DoF
+     * vector: components (x, y) in plane strain, (r, z, theta) for Fourier.
+     * With @p increment, the last load step's increment instead (at a
+     * failed step, the incipient mechanism).
+     */
+    Vector<double>
+    displacement_at(const double theta, const bool increment = false) const;
 
-    /// The load factor of the last accepted state.
-    double
-    accepted_load_factor() const;
+    /// The profiles every element group writes, of the current state.
+    std::vector<NamedProfile>
+    profiles() const;
+
+    /// The continuum cells: the point states and laws of the body.
+    const ContinuumCells<dim> &
+    cells() const;
+
+    /// The state at Gauss point @p q of active cell @p cell and station
+    /// @p station.
+    const PointState &
+    point_state(const unsigned int cell,
+                const unsigned int q,
+                const unsigned int station = 0) const;
+
+    /// Stress (3D, tension positive) at point @p q of active cell @p cell,
+    /// station 0.
+    const SymmetricTensor<2, 3> &
+    stress(const unsigned int cell, const unsigned int q) const;
+
+    /// The material law of active cell @p cell.
+    const MaterialLaw &
+    material_law(const unsigned int cell) const;
 
     unsigned int
-    n_modes() const;
-
-    ModeState &
-    mode(const unsigned int m);
-
-    const ModeState &
-    mode(const unsigned int m) const;
-
-    /// All modes, for the point loop.
-    std::vector<std::unique_ptr<ModeState>> &
-    get_modes();
-
-    const std::vector<std::unique_ptr<ModeState>> &
-    get_modes() const;
-
-    /**
-     * The paper's point rule at every point and station for the modes'
-     * step increments (PointLoop::viscoplastic_update()). Returns the
-     * number of yielding points and stations.
-     */
-    unsigned int
-    update_viscoplastic_stresses();
-
-    /**
-     * Stresses at every point and station by return mapping of the trial
-     * stresses of the modes' step increments (with @p tangents, keeping
-     * the consistent tangents there); then each mode's residual (condensed
-     * onto the free DoFs) at load factor @p target, and the stress excess
-     * in body_loads.
-     */
-    ResidualNorms
-    evaluate_residual(const double                        target,
-                      std::vector<SymmetricTensor<4, 3>> *tangents = nullptr);
-
-    /**
-     * Make the current stresses the converged ones, add the step's
-     * increment to the solution and its plastic strain to the total, and
-     * take @p load_factor as the accepted load factor: for a method that
-     * accepts a converged part of a step (cut-back).
-     */
-    void
-    accept_step(const double load_factor);
-
-    /// The pseudo time step of the viscoplastic iterations.
-    double
-    viscoplastic_time_step() const;
-
-    /// Whether every material's flow rule is associated (a symmetric
-    /// consistent tangent).
-    bool
-    all_laws_associated() const;
-
-    const StrainOperator &
-    get_strain_operator() const;
-
-    PointLoop &
-    get_point_loop();
-
-    /// The zero-thickness interface elements (none unless the scene has
-    /// Interface curve sections).
-    const InterfaceElements &
-    get_interface_elements() const;
-
-    /// Whether the current state is a pending step (solution plus
-    /// step_increment) rather than the accepted one.
-    bool
-    is_pending() const;
+    n_quadrature_points() const;
 
     /// @}
 
@@ -236,34 +270,6 @@ namespace thinlayer
     const Vector<double> &
     get_solution(const unsigned int mode = 0) const;
 
-    /**
-     * The displacement at angle @p theta, summed over the modes, as a DoF
-     * vector: components (x, y) in plane strain, (r, z, theta) for Fourier.
-     * With @p increment, the last load step's increment instead (at a
-     * failed step, the incipient mechanism).
-     */
-    Vector<double>
-    displacement_at(const double theta, const bool increment = false) const;
-
-    /// The state at Gauss point @p q of active cell @p cell and station
-    /// @p station.
-    const PointState &
-    point_state(const unsigned int cell,
-                const unsigned int q,
-                const unsigned int station = 0) const;
-
-    /// Stress (3D, tension positive) at point @p q of active cell @p cell,
-    /// station 0.
-    const SymmetricTensor<2, 3> &
-    stress(const unsigned int cell, const unsigned int q) const;
-
-    /// The material law of active cell @p cell.
-    const MaterialLaw &
-    material_law(const unsigned int cell) const;
-
-    unsigned int
-    n_quadrature_points() const;
-
     /// Displacement DoFs of the element's nodes per mode (for Q8 the
     /// eliminated centre nodes are not counted; prescribed DoFs are).
     types::global_dof_index
@@ -285,11 +291,8 @@ namespace thinlayer
     void
     setup_dofs_and_constraints();
 
-    /// The laws of the materials, the point history and the strain cache.
-    void
-    setup_points();
-
-    /// Prescribed displacements and loads at unit load factor.
+    /// Prescribed displacements and loads at unit load factor, and the
+    /// state vectors.
     void
     setup_mode_vectors();
 
@@ -309,6 +312,15 @@ namespace thinlayer
     void
     factorise_stiffness();
 
+    /// The InputError of a singular stiffness matrix of mode @p m: what
+    /// the scene most likely lacks.
+    [[noreturn]] void
+    throw_singular(const unsigned int m) const;
+
+    /// Set the internal forces from every group's current stresses.
+    void
+    compute_internal_forces();
+
     const Parameters         &parameters;
     const Triangulation<dim> &tria;
     const Kinematics          kinematics;
@@ -318,26 +330,20 @@ namespace thinlayer
     DoFHandler<dim>           dof_handler;
     BoundaryData              boundary_data;
 
-    AffineConstraints<double>               element_constraints;
-    SparsityPattern                         sparsity;
-    std::vector<std::unique_ptr<ModeState>> modes;
+    AffineConstraints<double>                element_constraints;
+    SparsityPattern                          sparsity;
+    std::vector<std::unique_ptr<ModeSystem>> systems;
 
-    std::map<types::material_id, std::unique_ptr<MaterialLaw>> laws;
-    double                                                     time_step;
+    std::vector<std::unique_ptr<ElementGroup>> groups;
+    /// The first group: the continuum.
+    const ContinuumCells<dim> *continuum = nullptr;
 
-    /// The law of every active cell.
-    std::vector<const MaterialLaw *> cell_law;
-    StrainOperator                   strain_operator;
-    CellDataStorage<typename Triangulation<dim>::cell_iterator, PointHistory>
-                                history_storage;
-    std::vector<PointHistory *> history;
-    PointLoop                   point_loop;
-    InterfaceElements           interface_elements;
+    ModeVectors solution_vectors;
+    ModeVectors increment_vectors;
+    ModeVectors internal_force_vectors;
 
     /// The component of every DoF.
     std::vector<unsigned int> dof_component;
-
-    std::unique_ptr<SolutionMethod<dim>> method;
 
     double accepted_lambda;
     /// The load factor of the current state, and whether that state is a
@@ -349,6 +355,62 @@ namespace thinlayer
 
 
   // The accessors, inline: each returns a member or looks one up.
+
+  template <int dim>
+  inline unsigned int
+  Analysis<dim>::n_modes() const
+  {
+    return systems.size();
+  }
+
+
+  template <int dim>
+  inline const ModeSystem &
+  Analysis<dim>::mode_system(const unsigned int m) const
+  {
+    return *systems[m];
+  }
+
+
+  template <int dim>
+  inline void
+  Analysis<dim>::elastic_solve(const unsigned int m, Vector<double> &rhs)
+  {
+    systems[m]->factorisation.solve(rhs);
+  }
+
+
+  template <int dim>
+  inline const ModeVectors &
+  Analysis<dim>::solution() const
+  {
+    return solution_vectors;
+  }
+
+
+  template <int dim>
+  inline ModeVectors &
+  Analysis<dim>::step_increment()
+  {
+    return increment_vectors;
+  }
+
+
+  template <int dim>
+  inline const ModeVectors &
+  Analysis<dim>::step_increment() const
+  {
+    return increment_vectors;
+  }
+
+
+  template <int dim>
+  inline const ModeVectors &
+  Analysis<dim>::internal_forces() const
+  {
+    return internal_force_vectors;
+  }
+
 
   template <int dim>
   inline double
@@ -367,66 +429,52 @@ namespace thinlayer
 
 
   template <int dim>
+  inline bool
+  Analysis<dim>::is_pending() const
+  {
+    return pending;
+  }
+
+
+  template <int dim>
+  inline const ContinuumCells<dim> &
+  Analysis<dim>::cells() const
+  {
+    return *continuum;
+  }
+
+
+  template <int dim>
+  inline const PointState &
+  Analysis<dim>::point_state(const unsigned int cell,
+                             const unsigned int q,
+                             const unsigned int station) const
+  {
+    return continuum->point_state(cell, q, station);
+  }
+
+
+  template <int dim>
+  inline const SymmetricTensor<2, 3> &
+  Analysis<dim>::stress(const unsigned int cell, const unsigned int q) const
+  {
+    return point_state(cell, q).stress;
+  }
+
+
+  template <int dim>
+  inline const MaterialLaw &
+  Analysis<dim>::material_law(const unsigned int cell) const
+  {
+    return continuum->material_law(cell);
+  }
+
+
+  template <int dim>
   inline unsigned int
-  Analysis<dim>::n_modes() const
+  Analysis<dim>::n_quadrature_points() const
   {
-    return modes.size();
-  }
-
-
-  template <int dim>
-  inline ModeState &
-  Analysis<dim>::mode(const unsigned int m)
-  {
-    return *modes[m];
-  }
-
-
-  template <int dim>
-  inline const ModeState &
-  Analysis<dim>::mode(const unsigned int m) const
-  {
-    return *modes[m];
-  }
-
-
-  template <int dim>
-  inline std::vector<std::unique_ptr<ModeState>> &
-  Analysis<dim>::get_modes()
-  {
-    return modes;
-  }
-
-
-  template <int dim>
-  inline const std::vector<std::unique_ptr<ModeState>> &
-  Analysis<dim>::get_modes() const
-  {
-    return modes;
-  }
-
-
-  template <int dim>
-  inline double
-  Analysis<dim>::viscoplastic_time_step() const
-  {
-    return time_step;
-  }
-
-
-  template <int dim>
-  inline const StrainOperator &
-  Analysis<dim>::get_strain_operator() const
-  {
-    return strain_operator;
-  }
-
-
-  template <int dim>
-  inline PointLoop &
-  Analysis<dim>::get_point_loop()
-  {
-    return point_loop;
+    return quadrature.size();
   }
 
 
@@ -466,41 +514,7 @@ namespace thinlayer
   inline const Vector<double> &
   Analysis<dim>::get_solution(const unsigned int mode) const
   {
-    return modes[mode]->solution;
-  }
-
-
-  template <int dim>
-  inline const PointState &
-  Analysis<dim>::point_state(const unsigned int cell,
-                             const unsigned int q,
-                             const unsigned int station) const
-  {
-    return history[cell * quadrature.size() + q]->stations[station];
-  }
-
-
-  template <int dim>
-  inline const SymmetricTensor<2, 3> &
-  Analysis<dim>::stress(const unsigned int cell, const unsigned int q) const
-  {
-    return point_state(cell, q).stress;
-  }
-
-
-  template <int dim>
-  inline const MaterialLaw &
-  Analysis<dim>::material_law(const unsigned int cell) const
-  {
-    return *cell_law[cell];
-  }
-
-
-  template <int dim>
-  inline unsigned int
-  Analysis<dim>::n_quadrature_points() const
-  {
-    return quadrature.size();
+    return solution_vectors[mode];
   }
 
 
@@ -517,8 +531,8 @@ namespace thinlayer
   Analysis<dim>::n_equations() const
   {
     types::global_dof_index n = 0;
-    for (const auto &mode : modes)
-      n += dof_handler.n_dofs() - mode->constraints.n_constraints();
+    for (const auto &system : systems)
+      n += dof_handler.n_dofs() - system->constraints.n_constraints();
     return n;
   }
 
@@ -528,22 +542,6 @@ namespace thinlayer
   Analysis<dim>::substitution_seconds() const
   {
     return substitution_time;
-  }
-
-
-  template <int dim>
-  inline const InterfaceElements &
-  Analysis<dim>::get_interface_elements() const
-  {
-    return interface_elements;
-  }
-
-
-  template <int dim>
-  inline bool
-  Analysis<dim>::is_pending() const
-  {
-    return pending;
   }
 } // namespace thinlayer
 

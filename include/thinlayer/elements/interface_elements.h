@@ -9,8 +9,8 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
 
-#include <thinlayer/analysis/mode_state.h>
 #include <thinlayer/discretisation/kinematics.h>
+#include <thinlayer/elements/element_group.h>
 #include <thinlayer/elements/interface_values.h>
 #include <thinlayer/materials/interface_law.h>
 #include <thinlayer/mesh/interface_pairing.h>
@@ -60,7 +60,7 @@ namespace thinlayer
    * summed at each station (u_r, u_z with T1, u_theta with T2), the
    * tractions projected back with the station weights.
    */
-  class InterfaceElements
+  class InterfaceElements : public ElementGroup
   {
   public:
     /**
@@ -93,86 +93,72 @@ namespace thinlayer
     bool
     empty() const;
 
-    /// Add the couplings of each element's DoFs to @p dsp, with the fill-in
-    /// of @p constraints.
+    /// @name The ElementGroup interface
+    /// @{
     void
     add_sparsity(DynamicSparsityPattern          &dsp,
-                 const AffineConstraints<double> &constraints) const;
-
-    /// Add the elastic stiffness of mode @p m to @p stiffness (raw) and to
-    /// @p condensed (with @p constraints).
-    void
-    assemble_elastic(const unsigned int               m,
-                     SparseMatrix<double>            &stiffness,
-                     SparseMatrix<double>            &condensed,
-                     const AffineConstraints<double> &constraints) const;
-
-    /// The viscoplastic point rule at every point and station; body loads
-    /// into each mode's body_load_change. Returns the yielding count.
-    unsigned int
-    viscoplastic_update(std::vector<std::unique_ptr<ModeState>> &modes);
-
-    /// Return mapping at every point and station; tractions into each
-    /// mode's internal_forces, the excess into its body_loads (both
-    /// added). Keeps the consistent tangents if @p with_tangents.
-    unsigned int
-    return_mapping_update(std::vector<std::unique_ptr<ModeState>> &modes,
-                          const bool with_tangents);
-
-    /// Add the current tractions' nodal forces to each mode's
-    /// internal_forces.
-    void
-    add_internal_forces(std::vector<std::unique_ptr<ModeState>> &modes) const;
+                 const AffineConstraints<double> &constraints) const override;
 
     void
-    accept();
-
-    void
-    reject();
-
-    /// The largest yield ratio over points and stations (NaN if none can
-    /// yield).
-    double
-    max_yield_ratio() const;
-
-    /// Whether every traction, and every yield ratio of a law that can
-    /// yield, is a finite number.
-    bool
-    all_finite() const;
+    assemble_elastic(
+      const unsigned int               m,
+      SparseMatrix<double>            &stiffness,
+      SparseMatrix<double>            &condensed,
+      const AffineConstraints<double> &constraints) const override;
 
     bool
-    all_associated() const;
+    all_associated() const override;
 
-    /// @name Newton's coupled tangent (DoF m * n_dofs + i for mode m)
-    /// @{
+    unsigned int
+    viscoplastic_update(const ModeVectors &step_increment,
+                        ModeVectors       &body_load_change) override;
+
+    unsigned int
+    return_mapping_update(const ModeVectors &step_increment,
+                          const bool         with_tangents,
+                          ModeVectors       &internal_forces,
+                          ModeVectors       &stress_excess) override;
+
+    void
+    add_internal_forces(ModeVectors &internal_forces) const override;
+
+    void
+    accept() override;
+
+    void
+    reject() override;
+
+    /// Every traction, and every yield ratio of a law that can yield.
+    void
+    check_state(StateCheck &check) const override;
+
     void
     add_coupled_sparsity(
       DynamicSparsityPattern          &dsp,
-      const AffineConstraints<double> &coupled_constraints) const;
+      const AffineConstraints<double> &coupled_constraints) override;
 
-    /// With the tangents of the last return_mapping_update(true). Uses
-    /// work space sized in reinit(): it runs at every factorisation.
+    /// With the tangents of the last return_mapping_update() with
+    /// tangents. Uses work space sized in reinit(): it runs at every
+    /// factorisation.
     void
     add_coupled_tangent(
       SparseMatrix<double>            &tangent,
-      const AffineConstraints<double> &coupled_constraints) const;
+      const AffineConstraints<double> &coupled_constraints) override;
+
+    /// One profile per curve, "interface-curve-<id>".
+    std::vector<NamedProfile>
+    profiles(const ModeVectors &solution,
+             const ModeVectors &step_increment,
+             const bool         pending) const override;
     /// @}
 
-    /// @name Output
-    /// @{
-    std::vector<types::boundary_id>
-    curve_ids() const;
-
-    /**
-     * The profile of curve @p curve: with the displacement of every mode
-     * in @p modes (the accepted solution plus the pending increment where
-     * @p pending).
-     */
+    /// The profile of curve @p curve: with the displacements @p solution
+    /// plus, where @p pending, the step's @p step_increment.
     Profile
-    profile(const types::boundary_id                       curve,
-            const std::vector<std::unique_ptr<ModeState>> &modes,
-            const bool                                     pending) const;
-    /// @}
+    profile(const types::boundary_id curve,
+            const ModeVectors       &solution,
+            const ModeVectors       &step_increment,
+            const bool               pending) const;
 
   private:
     /// One term of the jump operator: the side-signed shape value of a
@@ -206,24 +192,22 @@ namespace thinlayer
       std::vector<types::global_dof_index> coupled_dofs;
     };
 
-    /// The jump at station @p s in the local frame, of every mode's
-    /// vector ModeState::*@p vector at the element's DoFs. Allocates
-    /// nothing: it runs in every iteration.
+    /// The jump at station @p s in the local frame, of the modes'
+    /// vectors @p vectors at the element's DoFs. Allocates nothing: it runs
+    /// in every iteration.
     Tensor<1, 3>
-    local_jump(const IntegrationPoint                        &point,
-               const unsigned int                             s,
-               const std::vector<std::unique_ptr<ModeState>> &modes,
-               Vector<double> ModeState::*const vector) const;
+    local_jump(const IntegrationPoint &point,
+               const unsigned int      s,
+               const ModeVectors      &vectors) const;
 
     /// Add the nodal forces of local traction @p traction at point
     /// @p point and station @p s, times the station and point weights, to
-    /// every mode's vector ModeState::*@p target.
+    /// every mode's vector of @p target.
     void
-    add_forces(const IntegrationPoint                        &point,
-               const unsigned int                             s,
-               const Tensor<1, 3>                            &traction,
-               const std::vector<std::unique_ptr<ModeState>> &modes,
-               Vector<double> ModeState::*const target) const;
+    add_forces(const IntegrationPoint &point,
+               const unsigned int      s,
+               const Tensor<1, 3>     &traction,
+               ModeVectors            &target) const;
 
     /// An InputError unless the stiffnesses of @p curve are at most
     /// max_stiffness_ratio E / h for the cells of @p pair.
@@ -249,8 +233,7 @@ namespace thinlayer
      */
     template <typename Rule>
     unsigned int
-    for_each_point(std::vector<std::unique_ptr<ModeState>> &modes,
-                   const Rule                              &rule);
+    for_each_point(const ModeVectors &step_increment, const Rule &rule);
 
     /// The 3 x (modes x element DoFs) map from the element's DoFs of all
     /// modes to the local jump at point @p point and station @p s.

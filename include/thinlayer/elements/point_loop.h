@@ -4,8 +4,8 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/thread_management.h>
 
-#include <thinlayer/analysis/mode_state.h>
 #include <thinlayer/discretisation/kinematics.h>
+#include <thinlayer/discretisation/mode_vectors.h>
 #include <thinlayer/discretisation/strain_operator.h>
 #include <thinlayer/materials/material_law.h>
 #include <thinlayer/materials/point_history.h>
@@ -25,11 +25,10 @@ namespace thinlayer
    * - viscoplastic_update(): the paper's viscoplastic strain increment,
    *   sigma = sigma_0 + D (strain - eps_vp), and where F > 0 the new
    *   viscoplastic strain dt F dQ/dsigma, whose D-projection is added to
-   *   each mode's body_load_change;
+   *   each mode's body-load change;
    * - return_mapping_update(): the return mapping of the elastic trial
-   *   stress sigma_0 + D strain, setting each mode's internal_forces and its
-   *   stress excess in body_loads, optionally keeping the consistent
-   *   tangents.
+   *   stress sigma_0 + D strain, adding to each mode's internal forces and
+   *   stress excess, optionally keeping the consistent tangents.
    *
    * The cells are split into chunks run as parallel tasks. Each cell writes
    * its nodal forces into its own slot, and one serial pass adds the slots
@@ -59,8 +58,9 @@ namespace thinlayer
      * the number of yielding points and stations.
      */
     unsigned int
-    viscoplastic_update(const double                             time_step,
-                        std::vector<std::unique_ptr<ModeState>> &modes);
+    viscoplastic_update(const double       time_step,
+                        const ModeVectors &step_increment,
+                        ModeVectors       &body_load_change);
 
     /**
      * Return mapping at every point and station. With @p tangents (one per
@@ -68,13 +68,14 @@ namespace thinlayer
      * there. Returns the number of yielding points and stations.
      */
     unsigned int
-    return_mapping_update(std::vector<std::unique_ptr<ModeState>> &modes,
-                          std::vector<SymmetricTensor<4, 3>>      *tangents);
+    return_mapping_update(const ModeVectors                  &step_increment,
+                          std::vector<SymmetricTensor<4, 3>> *tangents,
+                          ModeVectors                        &internal_forces,
+                          ModeVectors                        &stress_excess);
 
-    /// The modes' internal forces int B^T sigma of the current stresses.
+    /// Add the internal forces int B^T sigma of the current stresses.
     void
-    compute_internal_forces(
-      std::vector<std::unique_ptr<ModeState>> &modes) const;
+    add_internal_forces(ModeVectors &internal_forces) const;
 
     /// How many chunks the cells are split into.
     unsigned int
@@ -118,21 +119,25 @@ namespace thinlayer
       return k * n_cells / chunks;
     }
 
-    /// Both point rules: the parallel cell loop, then the serial pass.
+    /// Both point rules: the parallel cell loop, then the serial pass
+    /// adding the cells' body loads to @p body_loads and (return mapping)
+    /// their internal forces to @p internal_forces.
     template <typename PointRule>
     unsigned int
-    update(std::vector<std::unique_ptr<ModeState>> &modes,
-           const PointRule                         &rule);
+    update(const ModeVectors &step_increment,
+           const PointRule   &rule,
+           ModeVectors       &body_loads,
+           ModeVectors       *internal_forces);
 
     /// The cells [@p begin, @p end): their slots of cell_body_loads (and
     /// cell_internal_forces), and cell_has_body_loads.
     template <typename PointRule>
     unsigned int
-    update_cells(const unsigned int                             begin,
-                 const unsigned int                             end,
-                 const std::vector<std::unique_ptr<ModeState>> &modes,
-                 const PointRule                               &rule,
-                 ChunkScratch                                  &scratch);
+    update_cells(const unsigned int begin,
+                 const unsigned int end,
+                 const ModeVectors &step_increment,
+                 const PointRule   &rule,
+                 ChunkScratch      &scratch);
 
     const StrainOperator                   *strain_operator = nullptr;
     const Kinematics                       *kinematics      = nullptr;

@@ -7,7 +7,7 @@
 #include <thinlayer/parameters/parameters.h>
 #include <thinlayer/postprocess/layer_profile.h>
 #include <thinlayer/postprocess/monitors.h>
-#include <thinlayer/solution_methods/solution_method.h>
+#include <thinlayer/solution_methods/step_result.h>
 
 #include <fstream>
 #include <map>

@@ -12,11 +12,28 @@
 namespace thinlayer
 {
   /**
+   * The norms of the out-of-balance force that the return-mapping methods
+   * test for convergence (ReturnMappingMethod::evaluate_residual()).
+   */
+  struct ResidualNorms
+  {
+    unsigned int n_yielding;
+    /// max |r| and |r|_2 over the free DoFs of all modes.
+    double max;
+    double l2;
+    /// max |b| of the stress excess, and max |f| of the internal and
+    /// external forces: the scales max |r| is measured against.
+    double body_loads;
+    double forces;
+  };
+
+
+  /**
    * What the return-mapping methods (initial stress, accelerated initial
    * stress, Newton) share: they iterate on the out-of-balance force
    * r = lambda f - int B^T sigma, every point's stress coming from the
    * return mapping of its elastic trial stress sigma_0 + D (strain of the
-   * step) (Analysis::evaluate_residual()). This class runs the attempts at
+   * step) (evaluate_residual()). This class runs the attempts at
    * a load step, cutting it back where the method allows, and tests
    * convergence; a derived class supplies one iteration, the correction of
    * the step's displacement increment.
@@ -82,6 +99,15 @@ namespace thinlayer
     starting_residual(const double target);
 
 
+    /**
+     * Stresses at every point and station by return mapping of the trial
+     * stresses of the step increments (with @p tangents, keeping the
+     * consistent tangents there); then each mode's residual (condensed
+     * onto the free DoFs) at load factor @p target, and its norms.
+     */
+    ResidualNorms
+    evaluate_residual(const double target, const bool tangents = false);
+
     /// Each mode's correction K_m^-1 r_m with its elastic factor.
     void
     elastic_corrections();
@@ -94,8 +120,11 @@ namespace thinlayer
     Analysis<dim>          &analysis;
     /// Per mode: the correction of the step increment, and the step
     /// increment before it.
-    std::vector<Vector<double>> correction;
-    std::vector<Vector<double>> previous_increment;
+    ModeVectors correction;
+    ModeVectors previous_increment;
+    /// Per mode: the out-of-balance force of the last residual evaluation,
+    /// condensed onto the free DoFs.
+    ModeVectors residual;
 
   private:
     GrowthMonitor growth;
@@ -109,9 +138,13 @@ namespace thinlayer
      * increment meets the step's prescribed displacements exactly: they
      * are proportional to the load factor.
      */
-    std::vector<Vector<double>> accepted_increment;
-    double                      accepted_step        = 0;
-    double                      accepted_load_factor = 0;
+    ModeVectors accepted_increment;
+    double      accepted_step        = 0;
+    double      accepted_load_factor = 0;
+    /// Per mode: the nodal forces of the stress excess (trial less
+    /// returned stresses); and a work vector.
+    ModeVectors    stress_excess;
+    Vector<double> condensed;
 
     /// The increment an attempt to @p target starts from.
     void

@@ -2,8 +2,8 @@
 #define thinlayer_solution_methods_solution_method_h
 
 #include <thinlayer/parameters/parameters.h>
+#include <thinlayer/solution_methods/step_result.h>
 
-#include <limits>
 #include <memory>
 
 namespace thinlayer
@@ -12,38 +12,15 @@ namespace thinlayer
   class Analysis;
 
   /**
-   * What one load step reports (history.csv has one row per step).
-   */
-  struct StepResult
-  {
-    unsigned int iterations;
-    bool         converged;
-    /// Max over points (and stations) of F / strength after the step: NaN
-    /// where no material can yield.
-    double max_yield_ratio;
-    /// Points (and stations) with F > 0 at the end of the step.
-    unsigned int plastic_points;
-    /// Newton: how often the step was halved.
-    unsigned int cut_backs = 0;
-    /// Newton: tangent factorisations.
-    unsigned int factorisations = 0;
-    /// Whether the displacements (or stresses) of the step are not finite
-    /// numbers: never converged.
-    bool non_finite = false;
-    /// A step that ran to its iteration limit: the change of its
-    /// displacement at the end against that at half the limit
-    /// (GrowthMonitor; near 2 while it creeps along a mechanism); NaN
-    /// otherwise.
-    double growth_ratio = std::numeric_limits<double>::quiet_NaN();
-  };
-
-  /**
    * A way of solving the elasto-plastic equations of one load step on the
    * body of an Analysis: the paper's viscoplastic iterations, initial
    * stress (plain or Anderson-accelerated) or Newton. Each method is a
    * class of its own in source/solution_methods/, owns the state it needs
-   * (work vectors, acceleration history, tangent system), and works
-   * through the body's modes, point loop and residual evaluation.
+   * (work vectors, acceleration history, tangent system), and works on
+   * the analysis it is given: it sets the step's displacement increments
+   * and calls the analysis's point rules. The stepping owns the method
+   * (StepSolver), ends each attempt in the analysis and tells the method
+   * whether its state was accepted; the analysis never calls a method.
    *
    * To add a method: derive from this class in a new file pair under
    * solution_methods/, add its name to SolverParameters::Method and its
@@ -61,10 +38,12 @@ namespace thinlayer
     initialize() = 0;
 
     /**
-     * Iterate from the body's accepted state (at Analysis::load_factor())
-     * to the load factor @p new_load_factor. The step's state, converged
-     * or not, is left in the body's modes and point history for the body
-     * to accept. StepResult::max_yield_ratio is filled in by the body.
+     * Iterate from the body's accepted state (at
+     * Analysis::accepted_load_factor()) to the load factor
+     * @p new_load_factor. The step's state, converged or not, is left in
+     * the analysis (step increments and point states) for the stepping to
+     * accept or reject. StepResult::max_yield_ratio and
+     * StepResult::non_finite are the stepping's to fill in.
      */
     virtual StepResult
     solve_step(const double new_load_factor) = 0;
@@ -79,6 +58,19 @@ namespace thinlayer
     /// method returns to what it kept of that.
     virtual void
     state_rejected();
+
+    /**
+     * Tell @p composite, rather than this method, when the method accepts
+     * a converged part of a step in the analysis: for a method that is part
+     * of another (NewtonFallbackMethod), whose parts all keep state of the
+     * accepted one.
+     */
+    void
+    report_acceptance_to(SolutionMethod<dim> &composite);
+
+  protected:
+    /// The method to tell of a converged part of a step it accepted.
+    SolutionMethod<dim> *acceptance_listener = this;
   };
 
   /**

@@ -47,8 +47,12 @@ namespace thinlayer
     const SolverParameters &parameters;
     Analysis<dim>          &analysis;
     /// Per mode: the step increment of the previous iteration.
-    std::vector<Vector<double>> previous_increment;
-    GrowthMonitor               growth;
+    ModeVectors previous_increment;
+    /// Per mode: the step's accumulated body loads (kept condensed), and
+    /// those of the last iteration's viscoplastic strains.
+    ModeVectors   body_loads;
+    ModeVectors   body_load_change;
+    GrowthMonitor growth;
   };
 } // namespace thinlayer
 

@@ -3,9 +3,8 @@
 
 #include <deal.II/lac/vector.h>
 
-#include <thinlayer/analysis/mode_state.h>
+#include <thinlayer/discretisation/mode_vectors.h>
 
-#include <memory>
 #include <vector>
 
 namespace thinlayer
@@ -24,30 +23,30 @@ namespace thinlayer
   class GrowthMonitor
   {
   public:
-    /// Keep the modes' step increments after the first iteration.
+    /// Keep the step increments after the first iteration.
     void
-    start(const std::vector<std::unique_ptr<ModeState>> &modes);
+    start(const ModeVectors &step_increment);
 
     /// After iteration @p iteration of at most @p limit: at half the
     /// limit, measure the change.
     void
-    iteration_done(const unsigned int                             iteration,
-                   const unsigned int                             limit,
-                   const std::vector<std::unique_ptr<ModeState>> &modes);
+    iteration_done(const unsigned int iteration,
+                   const unsigned int limit,
+                   const ModeVectors &step_increment);
 
     /// The change at the end of the step against the change at half the
     /// limit; NaN if the step did not get that far.
     double
-    growth_ratio(const std::vector<std::unique_ptr<ModeState>> &modes);
+    growth_ratio(const ModeVectors &step_increment);
 
   private:
     /// max over the modes of max |du - du_first|.
     double
-    change(const std::vector<std::unique_ptr<ModeState>> &modes);
+    change(const ModeVectors &step_increment);
 
-    std::vector<Vector<double>> first;
-    Vector<double>              work;
-    double                      change_at_half = 0;
+    ModeVectors    first;
+    Vector<double> work;
+    double         change_at_half = 0;
   };
 } // namespace thinlayer
 

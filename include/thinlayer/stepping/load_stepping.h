@@ -2,7 +2,7 @@
 #define thinlayer_stepping_load_stepping_h
 
 #include <thinlayer/parameters/parameters.h>
-#include <thinlayer/solution_methods/solution_method.h>
+#include <thinlayer/solution_methods/step_result.h>
 
 #include <vector>
 

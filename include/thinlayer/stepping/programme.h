@@ -7,6 +7,7 @@
 #include <thinlayer/parameters/parameters.h>
 #include <thinlayer/stepping/load_stepping.h>
 #include <thinlayer/stepping/run_outcome.h>
+#include <thinlayer/stepping/step_solver.h>
 
 #include <ostream>
 #include <vector>
@@ -20,8 +21,8 @@ namespace thinlayer
 
   /**
    * The load programme of a run, attempt by attempt: LoadStepping says
-   * which load factor comes next, the analysis solves it (through its
-   * solution method), and the programme measures the attempt (load,
+   * which load factor comes next, the StepSolver solves it with the
+   * solution method, and the programme measures the attempt (load,
    * displacement, secant stiffness), decides whether a converged state is
    * to count as failed (on the mechanism's knee, or moving against its
    * load), probes beyond a failed step that shows no mechanism, and writes
@@ -35,6 +36,7 @@ namespace thinlayer
   public:
     Programme(const Parameters                &p,
               Analysis<2>                     &analysis,
+              StepSolver<2>                   &solver,
               const Monitors<2>               &monitors,
               const std::vector<LayerProfile> &layers,
               OutputWriter                    &writer,
@@ -42,6 +44,7 @@ namespace thinlayer
               std::ostream                    &out)
       : p(p)
       , analysis(analysis)
+      , solver(solver)
       , monitors(monitors)
       , layers(layers)
       , writer(writer)
@@ -95,6 +98,7 @@ namespace thinlayer
 
     const Parameters                &p;
     Analysis<2>                     &analysis;
+    StepSolver<2>                   &solver;
     const Monitors<2>               &monitors;
     const std::vector<LayerProfile> &layers;
     OutputWriter                    &writer;

@@ -1,0 +1,224 @@
+#ifndef thinlayer_elements_continuum_cells_h
+#define thinlayer_elements_continuum_cells_h
+
+#include <deal.II/base/quadrature.h>
+#include <deal.II/base/quadrature_point_data.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/full_matrix.h>
+
+#include <thinlayer/discretisation/kinematics.h>
+#include <thinlayer/discretisation/strain_operator.h>
+#include <thinlayer/elements/element_group.h>
+#include <thinlayer/elements/point_loop.h>
+#include <thinlayer/materials/material_law.h>
+#include <thinlayer/materials/point_history.h>
+#include <thinlayer/parameters/scene_sections.h>
+
+#include <map>
+#include <memory>
+#include <vector>
+
+namespace thinlayer
+{
+  using namespace dealii;
+
+  /**
+   * The continuum: every active cell of the mesh with its material law,
+   * its Gauss points (the strain-displacement cache StrainOperator and one
+   * PointHistory per point, with a PointState per station), and the point
+   * loop over them (PointLoop). As an ElementGroup it assembles the
+   * cells' elastic stiffness, K_m = int (c1 B1^T D B1 + c2 B2^T D B2) dA_r
+   * (the exact integral over the circle, with which the harmonics
+   * decouple), runs the point rules, and assembles Newton's consistent
+   * tangent.
+   *
+   * Newton's tangent: in the Fourier case the stations mix the harmonics,
+   * so the tangent couples them (one matrix over all modes, mode m's DoFs
+   * shifted by m * n_dofs). The cell matrices are computed in parallel
+   * over the point loop's chunks and added in cell order; a cell whose
+   * points are all elastic takes its elastic matrix, computed once.
+   */
+  template <int dim>
+  class ContinuumCells : public ElementGroup
+  {
+  public:
+    /**
+     * The cells of @p dof_handler's triangulation, with @p quadrature's
+     * points, the laws of @p materials by material id, and @p kinematics.
+     * The objects are referenced, not copied.
+     */
+    ContinuumCells(
+      const DoFHandler<dim>                                  &dof_handler,
+      const Mapping<dim>                                     &mapping,
+      const Quadrature<dim>                                  &quadrature,
+      const Kinematics                                       &kinematics,
+      const std::map<types::material_id, MaterialParameters> &materials);
+
+    /// @name The ElementGroup interface
+    /// @{
+    void
+    add_sparsity(DynamicSparsityPattern          &dsp,
+                 const AffineConstraints<double> &constraints) const override;
+
+    void
+    assemble_elastic(
+      const unsigned int               m,
+      SparseMatrix<double>            &stiffness,
+      SparseMatrix<double>            &condensed,
+      const AffineConstraints<double> &constraints) const override;
+
+    bool
+    all_associated() const override;
+
+    /// With the smallest stable pseudo time step of the materials.
+    unsigned int
+    viscoplastic_update(const ModeVectors &step_increment,
+                        ModeVectors       &body_load_change) override;
+
+    unsigned int
+    return_mapping_update(const ModeVectors &step_increment,
+                          const bool         with_tangents,
+                          ModeVectors       &internal_forces,
+                          ModeVectors       &stress_excess) override;
+
+    void
+    add_internal_forces(ModeVectors &internal_forces) const override;
+
+    void
+    accept() override;
+
+    void
+    reject() override;
+
+    /// Every stress component, and every yield ratio of a law that can
+    /// yield.
+    void
+    check_state(StateCheck &check) const override;
+
+    void
+    add_coupled_sparsity(
+      DynamicSparsityPattern          &dsp,
+      const AffineConstraints<double> &coupled_constraints) override;
+
+    void
+    add_coupled_tangent(
+      SparseMatrix<double>            &tangent,
+      const AffineConstraints<double> &coupled_constraints) override;
+    /// @}
+
+    /// The pseudo time step of the viscoplastic iterations: the smallest
+    /// stable one of the materials.
+    double
+    viscoplastic_time_step() const;
+
+    const StrainOperator &
+    get_strain_operator() const;
+
+    unsigned int
+    n_quadrature_points() const;
+
+    /// The state at Gauss point @p q of active cell @p cell and station
+    /// @p station.
+    const PointState &
+    point_state(const unsigned int cell,
+                const unsigned int q,
+                const unsigned int station) const;
+
+    /// The material law of active cell @p cell.
+    const MaterialLaw &
+    material_law(const unsigned int cell) const;
+
+  private:
+    /// Work space of one chunk of Newton's cell matrices.
+    struct TangentScratch
+    {
+      std::vector<SymmetricTensor<2, 3>> strain, stress, part2;
+      std::vector<double>                strain_rows, stress_rows;
+    };
+
+    /// The DoFs of cell @p c of every mode in the coupled numbering.
+    void
+    coupled_cell_dofs(const unsigned int                    c,
+                      std::vector<types::global_dof_index> &dofs) const;
+
+    /// Newton's matrices of the cells [@p begin, @p end) with the kept
+    /// tangents.
+    void
+    compute_cell_tangents(const unsigned int begin,
+                          const unsigned int end,
+                          TangentScratch    &scratch);
+
+    /// Whether every tangent of cell @p c is its elastic one.
+    bool
+    elastic_tangents(const unsigned int c) const;
+
+    const DoFHandler<dim> &dof_handler;
+    const Kinematics      &kinematics;
+    const unsigned int     n_q;
+
+    std::map<types::material_id, std::unique_ptr<MaterialLaw>> laws;
+    double                                                     time_step;
+    /// The law of every active cell.
+    std::vector<const MaterialLaw *> cell_law;
+    StrainOperator                   strain_operator;
+    CellDataStorage<typename Triangulation<dim>::cell_iterator, PointHistory>
+                                history_storage;
+    std::vector<PointHistory *> history;
+    PointLoop                   point_loop;
+
+    /// Newton's state, allocated by add_coupled_sparsity(): the consistent
+    /// tangent at every point and station (point-major), each cell's
+    /// matrix, and its elastic matrix.
+    std::vector<SymmetricTensor<4, 3>> tangents;
+    std::vector<FullMatrix<double>>    cell_matrices;
+    std::vector<FullMatrix<double>>    elastic_cell_matrices;
+    std::vector<unsigned char>         cell_is_elastic;
+    std::vector<TangentScratch>        tangent_scratch;
+  };
+
+
+  template <int dim>
+  inline double
+  ContinuumCells<dim>::viscoplastic_time_step() const
+  {
+    return time_step;
+  }
+
+
+  template <int dim>
+  inline const StrainOperator &
+  ContinuumCells<dim>::get_strain_operator() const
+  {
+    return strain_operator;
+  }
+
+
+  template <int dim>
+  inline unsigned int
+  ContinuumCells<dim>::n_quadrature_points() const
+  {
+    return n_q;
+  }
+
+
+  template <int dim>
+  inline const PointState &
+  ContinuumCells<dim>::point_state(const unsigned int cell,
+                                   const unsigned int q,
+                                   const unsigned int station) const
+  {
+    return history[cell * n_q + q]->stations[station];
+  }
+
+
+  template <int dim>
+  inline const MaterialLaw &
+  ContinuumCells<dim>::material_law(const unsigned int cell) const
+  {
+    return *cell_law[cell];
+  }
+} // namespace thinlayer
+
+#endif

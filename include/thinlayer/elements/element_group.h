@@ -1,0 +1,196 @@
+#ifndef thinlayer_elements_element_group_h
+#define thinlayer_elements_element_group_h
+
+#include <deal.II/base/quadrature.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_matrix.h>
+
+#include <thinlayer/discretisation/kinematics.h>
+#include <thinlayer/discretisation/mode_vectors.h>
+#include <thinlayer/elements/interface_values.h>
+
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace thinlayer
+{
+  using namespace dealii;
+
+  struct Parameters;
+
+  /**
+   * What a check of the current state finds over the points of the
+   * element groups: whether every stress (or traction) and yield ratio is
+   * a finite number, and the largest yield ratio (NaN where no law can
+   * yield).
+   */
+  struct StateCheck
+  {
+    bool   finite          = true;
+    double max_yield_ratio = std::numeric_limits<double>::quiet_NaN();
+
+    /// Take the yield ratio @p ratio of one point into the maximum.
+    void
+    add_yield_ratio(const double ratio)
+    {
+      max_yield_ratio =
+        std::isnan(max_yield_ratio) ? ratio : std::max(max_yield_ratio, ratio);
+    }
+  };
+
+
+  /// A profile along a line of an element group, with the name of its
+  /// output files (e.g. "interface-curve-3").
+  struct NamedProfile
+  {
+    std::string name;
+    Profile     profile;
+  };
+
+
+  /**
+   * A family of elements that takes part in the analysis: the continuum
+   * cells (ContinuumCells), zero-thickness interface elements
+   * (InterfaceElements). The Analysis holds a list of groups and does to
+   * each what it does to the body, in the order of the list: it builds the
+   * sparsity, assembles the elastic stiffness, runs the point rules of the
+   * solution methods, accepts or rejects a step's state, checks it, and
+   * assembles Newton's tangent. What a group adds to a vector it adds to
+   * what is there, so the sums come out in the same order on every run.
+   *
+   * Every group works on the DoFs of the analysis's one DoFHandler, one
+   * copy per mode (ModeVectors), and holds its own point states and laws.
+   *
+   * To add a family: derive from this class in a new file pair under
+   * elements/, and construct it in create_element_groups().
+   */
+  class ElementGroup
+  {
+  public:
+    virtual ~ElementGroup() = default;
+
+    /// @name The elastic system
+    /// @{
+
+    /// Add the couplings of the group's DoFs to @p dsp, with the fill-in
+    /// of @p constraints.
+    virtual void
+    add_sparsity(DynamicSparsityPattern          &dsp,
+                 const AffineConstraints<double> &constraints) const = 0;
+
+    /// Add the elastic stiffness of mode @p m to @p stiffness (raw) and to
+    /// @p condensed (with @p constraints).
+    virtual void
+    assemble_elastic(const unsigned int               m,
+                     SparseMatrix<double>            &stiffness,
+                     SparseMatrix<double>            &condensed,
+                     const AffineConstraints<double> &constraints) const = 0;
+
+    /// Whether every flow rule of the group is associated (its consistent
+    /// tangent symmetric).
+    virtual bool
+    all_associated() const = 0;
+
+    /// @}
+    /// @name The point rules
+    /// @{
+
+    /**
+     * The paper's viscoplastic rule at every point and station for the
+     * step's displacement increments @p step_increment: the stresses of
+     * the increment less the step's viscoplastic strain, and where F > 0 a
+     * new viscoplastic strain, whose body load is added to
+     * @p body_load_change. Returns the number of yielding points and
+     * stations.
+     */
+    virtual unsigned int
+    viscoplastic_update(const ModeVectors &step_increment,
+                        ModeVectors       &body_load_change) = 0;
+
+    /**
+     * The return mapping of the elastic trial stress of @p step_increment
+     * at every point and station; the nodal forces of the stresses are
+     * added to @p internal_forces, those of the stress excess (trial less
+     * returned) to @p stress_excess. With @p with_tangents, the consistent
+     * tangents are kept for add_coupled_tangent(). Returns the number of
+     * yielding points and stations.
+     */
+    virtual unsigned int
+    return_mapping_update(const ModeVectors &step_increment,
+                          const bool         with_tangents,
+                          ModeVectors       &internal_forces,
+                          ModeVectors       &stress_excess) = 0;
+
+    /// Add the nodal forces of the current stresses to @p internal_forces.
+    virtual void
+    add_internal_forces(ModeVectors &internal_forces) const = 0;
+
+    /// Make the current stresses the converged ones, and the step's
+    /// plastic strain part of the total.
+    virtual void
+    accept() = 0;
+
+    /// Return to the converged stresses: the step's state is dropped.
+    virtual void
+    reject() = 0;
+
+    /// Take the current state's finiteness and yield ratios into @p check.
+    virtual void
+    check_state(StateCheck &check) const = 0;
+
+    /// @}
+    /// @name Newton's coupled tangent (DoF m * n_dofs + i for mode m)
+    /// @{
+
+    /// Add the couplings of the group's DoFs of all modes to @p dsp, and
+    /// allocate what add_coupled_tangent() works in.
+    virtual void
+    add_coupled_sparsity(
+      DynamicSparsityPattern          &dsp,
+      const AffineConstraints<double> &coupled_constraints) = 0;
+
+    /// Add the tangent of the last return_mapping_update() with tangents.
+    virtual void
+    add_coupled_tangent(
+      SparseMatrix<double>            &tangent,
+      const AffineConstraints<double> &coupled_constraints) = 0;
+
+    /// @}
+
+    /**
+     * The profiles the group writes along its lines, of the state with
+     * displacements @p solution plus, where @p pending, the step's
+     * @p step_increment. None by default: the cells' fields are written
+     * whole.
+     */
+    virtual std::vector<NamedProfile>
+    profiles(const ModeVectors &solution,
+             const ModeVectors &step_increment,
+             const bool         pending) const;
+  };
+
+
+  /**
+   * The element groups of the scene that @p parameters describe, on the
+   * DoFs of @p dof_handler: the continuum cells first (with @p quadrature),
+   * then the interface elements along the Interface curve sections, if
+   * any. The one place that knows every element family. Throws InputError
+   * (naming the parameter file and its section) where a group cannot be
+   * built as the parameters ask.
+   */
+  template <int dim>
+  std::vector<std::unique_ptr<ElementGroup>>
+  create_element_groups(const Parameters      &parameters,
+                        const DoFHandler<dim> &dof_handler,
+                        const Mapping<dim>    &mapping,
+                        const Quadrature<dim> &quadrature,
+                        const Kinematics      &kinematics);
+} // namespace thinlayer
+
+#endif

@@ -1,0 +1,56 @@
+#ifndef thinlayer_stepping_step_solver_h
+#define thinlayer_stepping_step_solver_h
+
+#include <thinlayer/analysis/analysis.h>
+#include <thinlayer/parameters/run_sections.h>
+#include <thinlayer/solution_methods/solution_method.h>
+#include <thinlayer/solution_methods/step_result.h>
+
+#include <memory>
+
+namespace thinlayer
+{
+  /**
+   * The stepping's hold on the solution method: it owns the method that
+   * the Solver section names, hands it the analysis, and runs one load
+   * step at a time: the method's attempt, the end of the attempt in the
+   * analysis (its state checked: a state that is not finite has not
+   * converged), and the acceptance or rejection of that state in both.
+   * The analysis never calls the method; this is the one place where the
+   * two meet.
+   */
+  template <int dim>
+  class StepSolver
+  {
+  public:
+    /// The method of @p parameters on @p analysis, which must be set up.
+    StepSolver(const SolverParameters &parameters, Analysis<dim> &analysis);
+
+    ~StepSolver();
+
+    /**
+     * An attempt at a load step from the accepted state to the total load
+     * factor @p load_factor. Its state (converged or not: a failed step
+     * shows the mechanism) is the analysis's current one, and stays
+     * pending until accept() or reject(). A step whose displacements,
+     * stresses or forces are not finite has not converged
+     * (StepResult::non_finite).
+     */
+    StepResult
+    solve(const double load_factor);
+
+    /// Make the pending state the accepted one.
+    void
+    accept();
+
+    /// Return to the accepted state.
+    void
+    reject();
+
+  private:
+    Analysis<dim>                       &analysis;
+    std::unique_ptr<SolutionMethod<dim>> method;
+  };
+} // namespace thinlayer
+
+#endif

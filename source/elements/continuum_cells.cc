@@ -1,0 +1,399 @@
+#include <deal.II/dofs/dof_tools.h>
+
+#include <thinlayer/elements/continuum_cells.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace thinlayer
+{
+  template <int dim>
+  ContinuumCells<dim>::ContinuumCells(
+    const DoFHandler<dim>                                  &dof_handler,
+    const Mapping<dim>                                     &mapping,
+    const Quadrature<dim>                                  &quadrature,
+    const Kinematics                                       &kinematics,
+    const std::map<types::material_id, MaterialParameters> &materials)
+    : dof_handler(dof_handler)
+    , kinematics(kinematics)
+    , n_q(quadrature.size())
+    , time_step(std::numeric_limits<double>::infinity())
+  {
+    for (const auto &[id, material] : materials)
+      {
+        laws[id]  = create_material_law(material);
+        time_step = std::min(time_step, laws[id]->viscoplastic_time_step());
+      }
+
+    const Triangulation<dim> &tria = dof_handler.get_triangulation();
+    cell_law.resize(tria.n_active_cells());
+    history_storage.initialize(tria.begin_active(), tria.end(), n_q);
+    history.resize(tria.n_active_cells() * n_q);
+    for (const auto &cell : tria.active_cell_iterators())
+      {
+        const unsigned int c = cell->active_cell_index();
+        cell_law[c]          = laws.at(cell->material_id()).get();
+        const auto points    = history_storage.get_data(cell);
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            history[c * n_q + q] = points[q].get();
+            history[c * n_q + q]->stations.assign(kinematics.n_stations(),
+                                                  PointState());
+          }
+      }
+
+    strain_operator.reinit(dof_handler, mapping, quadrature, kinematics);
+    point_loop.reinit(strain_operator, kinematics, n_q, cell_law, history);
+  }
+
+
+  template <int dim>
+  void
+  ContinuumCells<dim>::add_sparsity(
+    DynamicSparsityPattern          &dsp,
+    const AffineConstraints<double> &constraints) const
+  {
+    DoFTools::make_sparsity_pattern(dof_handler,
+                                    dsp,
+                                    constraints,
+                                    /*keep_constrained_dofs=*/true);
+  }
+
+
+  template <int dim>
+  void
+  ContinuumCells<dim>::assemble_elastic(
+    const unsigned int               m,
+    SparseMatrix<double>            &stiffness,
+    SparseMatrix<double>            &condensed,
+    const AffineConstraints<double> &constraints) const
+  {
+    const unsigned int                   n = strain_operator.dofs_per_cell();
+    FullMatrix<double>                   cell_matrix(n, n);
+    std::vector<types::global_dof_index> dofs(n);
+    std::vector<SymmetricTensor<2, 3>>   strain(n), stress(n);
+
+    for (unsigned int c = 0; c < cell_law.size(); ++c)
+      {
+        cell_matrix                    = 0;
+        const SymmetricTensor<4, 3> &D = cell_law[c]->elasticity();
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            const unsigned int p = c * n_q + q;
+            for (unsigned int part = 0; part < strain_operator.n_parts();
+                 ++part)
+              {
+                const double weight =
+                  (part == 0 ? kinematics.c1(m) : kinematics.c2(m)) *
+                  strain_operator.point_weight(p);
+                if (weight == 0)
+                  continue;
+                strain_operator.shape_strains(p, m, part, strain.data());
+                for (unsigned int i = 0; i < n; ++i)
+                  stress[i] = D * strain[i];
+                for (unsigned int i = 0; i < n; ++i)
+                  for (unsigned int j = 0; j < n; ++j)
+                    cell_matrix(i, j) += (strain[i] * stress[j]) * weight;
+              }
+          }
+        std::copy(strain_operator.cell_dofs(c),
+                  strain_operator.cell_dofs(c) + n,
+                  dofs.begin());
+        stiffness.add(dofs, cell_matrix);
+        constraints.distribute_local_to_global(cell_matrix, dofs, condensed);
+      }
+  }
+
+
+  template <int dim>
+  bool
+  ContinuumCells<dim>::all_associated() const
+  {
+    for (const auto &[id, law] : laws)
+      if (!law->is_associated())
+        return false;
+    return true;
+  }
+
+
+  template <int dim>
+  unsigned int
+  ContinuumCells<dim>::viscoplastic_update(const ModeVectors &step_increment,
+                                           ModeVectors       &body_load_change)
+  {
+    return point_loop.viscoplastic_update(time_step,
+                                          step_increment,
+                                          body_load_change);
+  }
+
+
+  template <int dim>
+  unsigned int
+  ContinuumCells<dim>::return_mapping_update(const ModeVectors &step_increment,
+                                             const bool         with_tangents,
+                                             ModeVectors       &internal_forces,
+                                             ModeVectors       &stress_excess)
+  {
+    Assert(!with_tangents || !tangents.empty(),
+           ExcMessage("Tangents are kept only after add_coupled_sparsity()."));
+    return point_loop.return_mapping_update(step_increment,
+                                            with_tangents ? &tangents : nullptr,
+                                            internal_forces,
+                                            stress_excess);
+  }
+
+
+  template <int dim>
+  void
+  ContinuumCells<dim>::add_internal_forces(ModeVectors &internal_forces) const
+  {
+    point_loop.add_internal_forces(internal_forces);
+  }
+
+
+  template <int dim>
+  void
+  ContinuumCells<dim>::accept()
+  {
+    for (PointHistory *point : history)
+      for (PointState &state : point->stations)
+        {
+          state.converged_stress = state.stress;
+          state.plastic_strain +=
+            state.step_plastic_strain - state.pending_plastic_strain;
+          state.step_plastic_strain    = 0;
+          state.pending_plastic_strain = 0;
+        }
+  }
+
+
+  template <int dim>
+  void
+  ContinuumCells<dim>::reject()
+  {
+    for (PointHistory *point : history)
+      for (PointState &state : point->stations)
+        {
+          state.stress                 = state.converged_stress;
+          state.step_plastic_strain    = 0;
+          state.pending_plastic_strain = 0;
+        }
+  }
+
+
+  template <int dim>
+  void
+  ContinuumCells<dim>::check_state(StateCheck &check) const
+  {
+    // Overflow anywhere is no state: stresses whose invariants overflow
+    // make the yield tests meaningless (NaN compares false, and a point
+    // would count as elastic).
+    for (unsigned int p = 0; p < history.size(); ++p)
+      {
+        const MaterialLaw &law = *cell_law[p / n_q];
+        for (const PointState &state : history[p]->stations)
+          {
+            for (unsigned int k = 0;
+                 k < SymmetricTensor<2, 3>::n_independent_components;
+                 ++k)
+              check.finite =
+                check.finite && std::isfinite(state.stress.access_raw_entry(k));
+            if (!law.can_yield())
+              continue;
+            const double ratio = law.yield_ratio(state.stress);
+            check.finite       = check.finite && std::isfinite(ratio);
+            check.add_yield_ratio(ratio);
+          }
+      }
+  }
+
+
+  template <int dim>
+  void
+  ContinuumCells<dim>::coupled_cell_dofs(
+    const unsigned int                    c,
+    std::vector<types::global_dof_index> &dofs) const
+  {
+    const unsigned int n      = dof_handler.n_dofs();
+    const unsigned int n_cell = strain_operator.dofs_per_cell();
+    for (unsigned int m = 0; m < kinematics.n_modes(); ++m)
+      for (unsigned int i = 0; i < n_cell; ++i)
+        dofs[m * n_cell + i] = m * n + strain_operator.cell_dofs(c)[i];
+  }
+
+
+  template <int dim>
+  void
+  ContinuumCells<dim>::add_coupled_sparsity(
+    DynamicSparsityPattern          &dsp,
+    const AffineConstraints<double> &coupled_constraints)
+  {
+    const unsigned int n_local =
+      kinematics.n_modes() * strain_operator.dofs_per_cell();
+    const unsigned int                   n_cells = cell_law.size();
+    std::vector<types::global_dof_index> dofs(n_local);
+    for (unsigned int c = 0; c < n_cells; ++c)
+      {
+        coupled_cell_dofs(c, dofs);
+        coupled_constraints.add_entries_local_to_global(dofs,
+                                                        dsp,
+                                                        /*keep=*/true);
+      }
+    cell_matrices.assign(n_cells, FullMatrix<double>(n_local, n_local));
+
+    TangentScratch scratch;
+    scratch.strain.resize(n_local);
+    scratch.stress.resize(n_local);
+    scratch.part2.resize(strain_operator.dofs_per_cell());
+    scratch.strain_rows.resize(6 * n_local);
+    scratch.stress_rows.resize(6 * n_local);
+    tangent_scratch.assign(point_loop.n_chunks(), scratch);
+
+    // Each cell's matrix with elastic tangents, once: a cell whose points
+    // are all elastic takes it as it is in every factorisation.
+    const unsigned int n_stations = kinematics.n_stations();
+    tangents.resize(std::size_t(n_cells) * n_q * n_stations);
+    for (unsigned int p = 0; p < n_cells * n_q; ++p)
+      for (unsigned int s = 0; s < n_stations; ++s)
+        tangents[std::size_t(p) * n_stations + s] =
+          cell_law[p / n_q]->elasticity();
+    point_loop.for_each_chunk([this](const unsigned int begin,
+                                     const unsigned int end,
+                                     const unsigned int chunk) {
+      compute_cell_tangents(begin, end, tangent_scratch[chunk]);
+    });
+    elastic_cell_matrices = cell_matrices;
+    cell_is_elastic.assign(n_cells, 1);
+  }
+
+
+  template <int dim>
+  bool
+  ContinuumCells<dim>::elastic_tangents(const unsigned int c) const
+  {
+    const unsigned int           n_stations = kinematics.n_stations();
+    const SymmetricTensor<4, 3> &elasticity = cell_law[c]->elasticity();
+    for (std::size_t k = std::size_t(c) * n_q * n_stations;
+         k < std::size_t(c + 1) * n_q * n_stations;
+         ++k)
+      if (!(tangents[k] == elasticity))
+        return false;
+    return true;
+  }
+
+
+  template <int dim>
+  void
+  ContinuumCells<dim>::compute_cell_tangents(const unsigned int begin,
+                                             const unsigned int end,
+                                             TangentScratch    &scratch)
+  {
+    const StrainOperator &B          = strain_operator;
+    const unsigned int    n_cell     = B.dofs_per_cell();
+    const unsigned int    n_modes    = kinematics.n_modes();
+    const unsigned int    n_stations = kinematics.n_stations();
+    const unsigned int    n_local    = n_modes * n_cell;
+    const bool            two_parts  = (B.n_parts() == 2);
+    // Per mode: the strain of each shape function at a station (T1 B1 +
+    // T2 B2) and the tangent applied to it; then both as 6 rows of raw
+    // components, the strains' shear rows doubled and weighted, so that
+    // the cell matrix takes a rank-6 update with contiguous rows.
+    auto &strain      = scratch.strain;
+    auto &stress      = scratch.stress;
+    auto &part2       = scratch.part2;
+    auto &strain_rows = scratch.strain_rows;
+    auto &stress_rows = scratch.stress_rows;
+
+    for (unsigned int c = begin; c < end; ++c)
+      {
+        FullMatrix<double> &cell_matrix = cell_matrices[c];
+        cell_matrix                     = 0;
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            const unsigned int p = c * n_q + q;
+            for (unsigned int s = 0; s < n_stations; ++s)
+              {
+                const SymmetricTensor<4, 3> &C =
+                  tangents[std::size_t(p) * n_stations + s];
+                const double weight =
+                  kinematics.station_weight(s) * B.point_weight(p);
+                for (unsigned int m = 0; m < n_modes; ++m)
+                  {
+                    SymmetricTensor<2, 3> *e = &strain[m * n_cell];
+                    B.shape_strains(p, m, 0, e);
+                    if (two_parts)
+                      B.shape_strains(p, m, 1, part2.data());
+                    for (unsigned int i = 0; i < n_cell; ++i)
+                      {
+                        e[i] *= kinematics.T1(m, s);
+                        if (two_parts)
+                          e[i] += kinematics.T2(m, s) * part2[i];
+                        stress[m * n_cell + i] = C * e[i];
+                      }
+                  }
+                // Every pair of modes: the station sum of
+                // (T1 B1 + T2 B2)_m^T C_t (T1 B1 + T2 B2)_m'.
+                for (unsigned int k = 0; k < 6; ++k)
+                  for (unsigned int i = 0; i < n_local; ++i)
+                    {
+                      strain_rows[k * n_local + i] =
+                        (k < 3 ? weight : 2 * weight) *
+                        strain[i].access_raw_entry(k);
+                      stress_rows[k * n_local + i] =
+                        stress[i].access_raw_entry(k);
+                    }
+                for (unsigned int i = 0; i < n_local; ++i)
+                  {
+                    double *row = &cell_matrix(i, 0);
+                    for (unsigned int k = 0; k < 6; ++k)
+                      {
+                        const double  a = strain_rows[k * n_local + i];
+                        const double *b = &stress_rows[k * n_local];
+                        if (a != 0)
+                          for (unsigned int j = 0; j < n_local; ++j)
+                            row[j] += a * b[j];
+                      }
+                  }
+              }
+          }
+      }
+  }
+
+
+  template <int dim>
+  void
+  ContinuumCells<dim>::add_coupled_tangent(
+    SparseMatrix<double>            &tangent,
+    const AffineConstraints<double> &coupled_constraints)
+  {
+    // The matrices of the cells with a plastic point in parallel (the
+    // return mappings give the elastic tangent itself at an elastic point,
+    // so the test is exact), then all added in cell order (the same sums on
+    // any number of threads).
+    point_loop.for_each_chunk([this](const unsigned int begin,
+                                     const unsigned int end,
+                                     const unsigned int chunk) {
+      for (unsigned int c = begin; c < end; ++c)
+        {
+          cell_is_elastic[c] = elastic_tangents(c);
+          if (!cell_is_elastic[c])
+            compute_cell_tangents(c, c + 1, tangent_scratch[chunk]);
+        }
+    });
+
+    std::vector<types::global_dof_index> dofs(kinematics.n_modes() *
+                                              strain_operator.dofs_per_cell());
+    for (unsigned int c = 0; c < cell_matrices.size(); ++c)
+      {
+        coupled_cell_dofs(c, dofs);
+        coupled_constraints.distribute_local_to_global(
+          cell_is_elastic[c] ? elastic_cell_matrices[c] : cell_matrices[c],
+          dofs,
+          tangent);
+      }
+  }
+
+
+  template class ContinuumCells<2>;
+} // namespace thinlayer

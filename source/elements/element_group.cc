@@ -1,0 +1,49 @@
+#include <thinlayer/elements/continuum_cells.h>
+#include <thinlayer/elements/element_group.h>
+#include <thinlayer/elements/interface_elements.h>
+#include <thinlayer/parameters/parameters.h>
+
+namespace thinlayer
+{
+  std::vector<NamedProfile>
+  ElementGroup::profiles(const ModeVectors & /*solution*/,
+                         const ModeVectors & /*step_increment*/,
+                         const bool /*pending*/) const
+  {
+    return {};
+  }
+
+
+  template <int dim>
+  std::vector<std::unique_ptr<ElementGroup>>
+  create_element_groups(const Parameters      &parameters,
+                        const DoFHandler<dim> &dof_handler,
+                        const Mapping<dim>    &mapping,
+                        const Quadrature<dim> &quadrature,
+                        const Kinematics      &kinematics)
+  {
+    std::vector<std::unique_ptr<ElementGroup>> groups;
+    groups.push_back(std::make_unique<ContinuumCells<dim>>(
+      dof_handler, mapping, quadrature, kinematics, parameters.materials));
+    if (!parameters.interface_elements.empty())
+      {
+        auto elements = std::make_unique<InterfaceElements>();
+        elements->reinit(dof_handler,
+                         mapping,
+                         kinematics,
+                         parameters.interface_elements,
+                         parameters.materials,
+                         parameters.parameter_file);
+        groups.push_back(std::move(elements));
+      }
+    return groups;
+  }
+
+
+  template std::vector<std::unique_ptr<ElementGroup>>
+  create_element_groups(const Parameters &,
+                        const DoFHandler<2> &,
+                        const Mapping<2> &,
+                        const Quadrature<2> &,
+                        const Kinematics &);
+} // namespace thinlayer

@@ -1,0 +1,56 @@
+#include <thinlayer/stepping/step_solver.h>
+
+namespace thinlayer
+{
+  template <int dim>
+  StepSolver<dim>::StepSolver(const SolverParameters &parameters,
+                              Analysis<dim>          &analysis)
+    : analysis(analysis)
+    , method(create_solution_method(parameters, analysis))
+  {
+    method->initialize();
+  }
+
+
+  template <int dim>
+  StepSolver<dim>::~StepSolver() = default;
+
+
+  template <int dim>
+  StepResult
+  StepSolver<dim>::solve(const double load_factor)
+  {
+    StepResult       result = method->solve_step(load_factor);
+    const StateCheck check  = analysis.end_attempt(load_factor);
+    result.max_yield_ratio  = check.max_yield_ratio;
+    if (!check.finite)
+      {
+        result.non_finite = true;
+        result.converged  = false;
+      }
+    return result;
+  }
+
+
+  template <int dim>
+  void
+  StepSolver<dim>::accept()
+  {
+    Assert(analysis.is_pending(),
+           ExcMessage("There is no pending step to accept."));
+    analysis.accept_step();
+    method->state_accepted();
+  }
+
+
+  template <int dim>
+  void
+  StepSolver<dim>::reject()
+  {
+    analysis.reject_step();
+    method->state_rejected();
+  }
+
+
+  template class StepSolver<2>;
+} // namespace thinlayer
