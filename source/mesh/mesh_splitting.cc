@@ -13,14 +13,6 @@ namespace thinlayer
 {
   namespace
   {
-    struct MshElement
-    {
-      long              id;
-      int               type;
-      std::vector<long> tags;
-      std::vector<long> nodes;
-    };
-
     using Edge = std::pair<long, long>;
 
     Edge
@@ -39,27 +31,9 @@ namespace thinlayer
                edge(n[3], n[0])}};
     }
 
-    /// The text between @p open and @p close in @p msh, and where it lies.
-    std::string
-    section(const std::string &msh,
-            const std::string &open,
-            const std::string &close,
-            std::size_t       &begin,
-            std::size_t       &end)
-    {
-      begin = msh.find(open);
-      end   = msh.find(close, begin);
-      if (begin == std::string::npos || end == std::string::npos)
-        return "";
-      const std::size_t start = begin + open.size();
-      end += close.size();
-      return msh.substr(start, end - close.size() - start);
-    }
-
-    /// A gmsh 2.2 mesh: its nodes and elements, and the text around them.
+    /// A gmsh 2.2 mesh being split: its nodes by number, and its elements.
     struct Msh
     {
-      std::string before_nodes, between, after_elements;
       std::map<long, std::array<double, 2>> position;
       /// The text after each node's id, copied as it is.
       std::map<long, std::string> coordinates;
@@ -76,90 +50,54 @@ namespace thinlayer
     }
 
 
+    /// The nodes and elements of @p file, which must be in format 2.2
+    /// with first-order quadrilaterals, lines and points only.
     Msh
-    read_msh2(const std::string &msh, const std::string &mesh_file)
+    read_msh2(const MshFile &file)
     {
-      if (msh.find("$MeshFormat\n2.2") == std::string::npos)
-        fail(mesh_file,
+      if (!file.is_version_2())
+        fail(file.file,
              "a gmsh mesh in format 2.2 for interface curves (gmsh -format "
              "msh22); .geo files are meshed so");
-      Msh                mesh;
-      std::size_t        nodes_begin, nodes_end, elements_begin, elements_end;
-      std::istringstream node_text(
-        section(msh, "$Nodes\n", "$EndNodes", nodes_begin, nodes_end));
-      std::istringstream element_text(section(
-        msh, "$Elements\n", "$EndElements", elements_begin, elements_end));
-      mesh.before_nodes   = msh.substr(0, nodes_begin);
-      mesh.between        = msh.substr(nodes_end, elements_begin - nodes_end);
-      mesh.after_elements = msh.substr(elements_end);
-
-      std::size_t n_nodes = 0;
-      node_text >> n_nodes;
-      for (std::size_t i = 0; i < n_nodes; ++i)
+      Msh mesh;
+      for (std::size_t k = 0; k < file.node_ids.size(); ++k)
         {
-          long        id;
-          double      x, y;
-          std::string rest;
-          node_text >> id;
-          std::getline(node_text, rest);
-          std::istringstream(rest) >> x >> y;
-          mesh.position[id]    = {{x, y}};
-          mesh.coordinates[id] = rest;
+          const long id        = file.node_ids[k];
+          mesh.position[id]    = {{file.positions[k][0], file.positions[k][1]}};
+          mesh.coordinates[id] = file.node_text[k];
           mesh.max_node        = std::max(mesh.max_node, id);
         }
-
-      std::size_t n_elements = 0;
-      element_text >> n_elements;
-      for (std::size_t i = 0; i < n_elements; ++i)
+      for (const MshElement &e : file.elements)
         {
-          MshElement e;
-          int        n_tags;
-          element_text >> e.id >> e.type >> n_tags;
-          e.tags.resize(n_tags);
-          for (auto &t : e.tags)
-            element_text >> t;
-          const int n = e.type == 1    ? 2
-                        : e.type == 3  ? 4
-                        : e.type == 15 ? 1
-                                       : -1;
-          if (n < 0)
-            fail(mesh_file,
+          if (e.type != 1 && e.type != 3 && e.type != 15)
+            fail(file.file,
                  "first-order quadrilaterals and lines for interface curves "
                  "(gmsh element types 1, 3 and 15); element " +
                    std::to_string(e.id) + " is of type " +
                    std::to_string(e.type));
-          e.nodes.resize(n);
-          for (auto &v : e.nodes)
-            element_text >> v;
           mesh.max_element = std::max(mesh.max_element, e.id);
           mesh.elements.push_back(e);
         }
-      if (!element_text)
-        fail(mesh_file, "a readable $Elements section");
       return mesh;
     }
 
 
-    std::string
-    write_msh2(const Msh &mesh)
+    /// @p file with the nodes and elements of @p mesh.
+    MshFile
+    with_nodes_and_elements(MshFile file, const Msh &mesh)
     {
-      std::ostringstream out;
-      out << mesh.before_nodes << "$Nodes\n" << mesh.coordinates.size() << '\n';
+      file.node_ids.clear();
+      file.positions.clear();
+      file.node_text.clear();
       for (const auto &[id, text] : mesh.coordinates)
-        out << id << text << '\n';
-      out << "$EndNodes" << mesh.between << "$Elements\n"
-          << mesh.elements.size() << '\n';
-      for (const MshElement &e : mesh.elements)
         {
-          out << e.id << ' ' << e.type << ' ' << e.tags.size();
-          for (const long t : e.tags)
-            out << ' ' << t;
-          for (const long v : e.nodes)
-            out << ' ' << v;
-          out << '\n';
+          const auto &x = mesh.position.at(id);
+          file.node_ids.push_back(id);
+          file.positions.push_back({{x[0], x[1], 0.}});
+          file.node_text.push_back(text);
         }
-      out << "$EndElements" << mesh.after_elements;
-      return out.str();
+      file.elements = mesh.elements;
+      return file;
     }
 
 
@@ -325,15 +263,14 @@ namespace thinlayer
   } // namespace
 
 
-  std::string
-  split_along_curves(const std::string            &msh,
-                     const std::set<unsigned int> &curves,
-                     const std::string            &mesh_file)
+  MshFile
+  split_along_curves(const MshFile &msh, const std::set<unsigned int> &curves)
   {
     if (curves.empty())
       return msh;
-    Msh                           mesh     = read_msh2(msh, mesh_file);
-    const std::vector<MshElement> original = mesh.elements;
+    const std::string            &mesh_file = msh.file;
+    Msh                           mesh      = read_msh2(msh);
+    const std::vector<MshElement> original  = mesh.elements;
     const Adjacency               adjacency(original);
     const auto                    is_curve_line = [&](const MshElement &e) {
       return e.type == 1 && !e.tags.empty() &&
@@ -350,6 +287,6 @@ namespace thinlayer
     for (const long v : curve_nodes)
       copy_node_per_sector(mesh, original, adjacency, curve_edge, v);
     relabel_lines(mesh, original, adjacency, is_curve_line);
-    return write_msh2(mesh);
+    return with_nodes_and_elements(msh, mesh);
   }
 } // namespace thinlayer

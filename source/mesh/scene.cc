@@ -1,9 +1,8 @@
-#include <deal.II/grid/grid_in.h>
-
 #include <thinlayer/base/file_utilities.h>
 #include <thinlayer/base/input_error.h>
 #include <thinlayer/mesh/gmsh_process.h>
 #include <thinlayer/mesh/mesh_splitting.h>
+#include <thinlayer/mesh/msh_file.h>
 #include <thinlayer/mesh/scene.h>
 
 #include <algorithm>
@@ -91,76 +90,6 @@ namespace thinlayer
                        p.parameter_file},
                       progress);
     }
-
-    /**
-     * A quadrilateral of the gmsh text @p msh (format 2 or 4) that names
-     * the same node twice among its corners: deal.II cannot build such a
-     * cell (its debug library stops on it, its release library goes on
-     * with a cell of zero area), so it is found here first. Returns a
-     * description of the first, or an empty string.
-     */
-    std::string
-    repeated_corner(const std::string &msh)
-    {
-      std::istringstream in(msh);
-      std::string        line;
-      double             version = 2;
-      while (std::getline(in, line) && line.rfind("$Elements", 0) != 0)
-        if (line.rfind("$MeshFormat", 0) == 0)
-          in >> version;
-      // gmsh element types of quadrilaterals: 4, 9 and 8 nodes.
-      const auto is_quad = [](const int type) {
-        return type == 3 || type == 10 || type == 16;
-      };
-      // The first repeated corner among the next n element lines; their
-      // type from the line (format 2: "id type n_tags tags... nodes") or,
-      // given, for the whole block (format 4: "id nodes").
-      const auto scan = [&](const long n, const int block_type) {
-        for (long k = 0; k < n && std::getline(in, line); ++k)
-          {
-            std::istringstream fields(line);
-            int                element, type = block_type, n_tags = 0, tag;
-            fields >> element;
-            if (block_type < 0)
-              fields >> type >> n_tags;
-            for (int t = 0; t < n_tags; ++t)
-              fields >> tag;
-            if (!is_quad(type))
-              continue;
-            std::vector<long> corners(4);
-            for (auto &c : corners)
-              fields >> c;
-            for (unsigned int i = 0; i < 4; ++i)
-              for (unsigned int j = i + 1; j < 4; ++j)
-                if (corners[i] == corners[j])
-                  return "element " + std::to_string(element) +
-                         " (gmsh's numbering) names node " +
-                         std::to_string(corners[i]) +
-                         " twice among its corners";
-          }
-        return std::string();
-      };
-      if (version < 4)
-        {
-          long n = 0;
-          in >> n;
-          std::getline(in, line);
-          return scan(n, -1);
-        }
-      long n_blocks = 0, n_elements, min_tag, max_tag;
-      in >> n_blocks >> n_elements >> min_tag >> max_tag;
-      for (long b = 0; b < n_blocks; ++b)
-        {
-          int  entity_dim, entity, type;
-          long n = 0;
-          in >> entity_dim >> entity >> type >> n;
-          std::getline(in, line);
-          if (const std::string found = scan(n, type); !found.empty())
-            return found;
-        }
-      return "";
-    }
-
 
     /**
      * Every cell a convex quadrilateral of a size the arithmetic can carry.
@@ -271,7 +200,10 @@ namespace thinlayer
                        "expected a .geo or .msh file, got '" + p.mesh.file +
                          "'");
 
-    if (const std::string repeated = repeated_corner(msh); !repeated.empty())
+    // The mesh is read once: the checks, the splitting and the
+    // triangulation all work on what was read.
+    MshFile mesh(msh, p.mesh.file);
+    if (const std::string repeated = repeated_corner(mesh); !repeated.empty())
       throw InputError(p.mesh.file,
                        "",
                        repeated +
@@ -282,33 +214,10 @@ namespace thinlayer
         std::set<unsigned int> curves;
         for (const auto &[id, curve] : p.interface_elements)
           curves.insert(id);
-        msh = split_along_curves(msh, curves, p.mesh.file);
+        mesh = split_along_curves(mesh, curves);
+        msh  = mesh.text();
       }
-    try
-      {
-        GridIn<2> grid_in;
-        grid_in.attach_triangulation(tria);
-        std::istringstream in(msh);
-        grid_in.read_msh(in);
-      }
-    catch (const ExceptionBase &e)
-      {
-        std::ostringstream message;
-        e.print_info(message);
-        throw InputError(p.mesh.file,
-                         "",
-                         "cannot read the mesh: " + message.str());
-      }
-    if (tria.n_active_cells() == 0)
-      throw InputError(p.mesh.file,
-                       "",
-                       "the mesh has no 2D cells: are all surfaces in a "
-                       "physical group?");
-    if (!tria.all_reference_cells_are_hyper_cube())
-      throw InputError(p.mesh.file,
-                       "",
-                       "expected quadrilateral cells only (use Recombine "
-                       "Surface or Mesh.RecombineAll in the .geo)");
+    create_triangulation(mesh, tria);
     if (tria.n_active_cells() > p.mesh.max_cells)
       throw InputError(p.parameter_file,
                        "Mesh/Maximum cells",

@@ -1,6 +1,8 @@
 #ifndef thinlayer_mesh_mesh_splitting_h
 #define thinlayer_mesh_mesh_splitting_h
 
+#include <thinlayer/mesh/msh_file.h>
+
 #include <set>
 #include <string>
 
@@ -19,13 +21,12 @@ namespace thinlayer
    *   side, so that deal.II sees both sides as boundary faces with the
    *   curve's id; other lines take their cell's nodes.
    *
-   * Throws InputError (naming @p mesh_file) for another format, or a
-   * curve line without a cell on each side.
+   * The nodes of the result are sorted by number, new nodes and lines
+   * numbered on from the largest. Throws InputError (naming the mesh file)
+   * for another format, or a curve line without a cell on each side.
    */
-  std::string
-  split_along_curves(const std::string            &msh,
-                     const std::set<unsigned int> &curves,
-                     const std::string            &mesh_file);
+  MshFile
+  split_along_curves(const MshFile &msh, const std::set<unsigned int> &curves);
 } // namespace thinlayer
 
 #endif
