@@ -184,7 +184,7 @@ namespace thinlayer
       print_model(p, scene, analysis, summary.warnings, out);
 
       const ProgrammeResult run =
-        Programme(p, analysis, *solver, monitors, layers, writer, timer, out)
+        Programme<2>(p, analysis, *solver, monitors, layers, writer, timer, out)
           .run();
 
       judge_outcome(analysis, run, summary);

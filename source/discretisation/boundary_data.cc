@@ -27,7 +27,7 @@ namespace thinlayer
     std::unique_ptr<FunctionParser<3>>
     make_function(const std::string                   &expressions,
                   const unsigned int                   n_components,
-                  const bool                           fourier,
+                  const std::string                   &variables,
                   const std::map<std::string, double> &geometry_parameters)
     {
       auto parts = Utilities::split_string_list(expressions, ';');
@@ -36,7 +36,7 @@ namespace thinlayer
       auto constants  = geometry_parameters;
       constants["pi"] = numbers::PI;
       auto f          = std::make_unique<FunctionParser<3>>(n_components);
-      f->initialize(fourier ? "r,z,theta" : "x,y,unused_z", parts, constants);
+      f->initialize(variables, parts, constants);
       return f;
     }
 
@@ -53,26 +53,38 @@ namespace thinlayer
      * The amplitudes of a mode of the prescribed displacement, as a
      * function on the mesh (for interpolate_boundary_values).
      */
-    class ModeAmplitude : public Function<2>
+    template <int dim>
+    class ModeAmplitude : public Function<dim>
     {
     public:
       /// As many components as the element has (2 in plane strain, 3 for
-      /// Fourier): deal.II writes that many values per point.
+      /// Fourier and 3D): deal.II writes that many values per point.
       ModeAmplitude(const unsigned int n_components,
-                    const std::function<Tensor<1, 3>(const Point<2> &)> &f)
-        : Function<2>(n_components)
+                    const std::function<Tensor<1, 3>(const Point<dim> &)> &f)
+        : Function<dim>(n_components)
         , f(f)
       {}
 
       double
-      value(const Point<2> &x, const unsigned int c) const override
+      value(const Point<dim> &x, const unsigned int c) const override
       {
         return f(x)[c];
       }
 
     private:
-      std::function<Tensor<1, 3>(const Point<2> &)> f;
+      std::function<Tensor<1, 3>(const Point<dim> &)> f;
     };
+
+
+    /// The point the parsed functions take: (x, y, z) of a 3D mesh, and
+    /// (x, y) or (r, z) of a 2D mesh with the angle @p theta third.
+    template <int dim>
+    Point<3>
+    parser_point(const Point<dim> &x, const double theta)
+    {
+      return dim == 3 ? Point<3>(x[0], x[1], x[dim - 1])
+                      : Point<3>(x[0], x[1], theta);
+    }
   } // namespace
 
 
@@ -84,26 +96,30 @@ namespace thinlayer
     : kinematics(kinematics)
     , parameter_file(parameter_file)
   {
-    const unsigned int n       = kinematics.n_components();
-    const bool         fourier = kinematics.is_fourier();
+    const unsigned int n         = kinematics.n_components();
+    const std::string  variables = kinematics.is_fourier() ? "r,z,theta"
+                                   : kinematics.mesh_dimension() == 3
+                                     ? "x,y,z"
+                                     : "x,y,unused_z";
     for (const auto &[id, b] : boundaries)
       {
         Condition        &c = conditions[id];
         std::vector<bool> mask(b.constrained_components);
         mask.resize(n, false);
         c.constrained  = ComponentMask(mask);
-        c.displacement = make_function(b.displacement, n, fourier, constants);
-        c.traction     = make_function(b.traction, n, fourier, constants);
-        c.pressure     = make_function(b.pressure, 1, fourier, constants);
+        c.displacement = make_function(b.displacement, n, variables, constants);
+        c.traction     = make_function(b.traction, n, variables, constants);
+        c.pressure     = make_function(b.pressure, 1, variables, constants);
         c.loaded       = !(is_zero(b.traction) && is_zero(b.pressure));
         c.section      = BoundaryParameters::section(id);
       }
   }
 
 
+  template <int dim>
   void
   BoundaryData::check_finite(const Vector<double> &v,
-                             const Point<2>       &x,
+                             const Point<dim>     &x,
                              const double          theta,
                              const std::string    &entry) const
   {
@@ -116,7 +132,8 @@ namespace thinlayer
             where << "r = " << x[0] << ", z = " << x[1]
                   << ", theta = " << theta;
           else
-            where << "x = " << x[0] << ", y = " << x[1];
+            where << "x = " << x[0] << ", y = " << x[1]
+                  << (dim == 3 ? ", z = " + std::to_string(x[dim - 1]) : "");
           throw InputError(parameter_file,
                            entry,
                            std::string("gives ") +
@@ -129,26 +146,28 @@ namespace thinlayer
   }
 
 
+  template <int dim>
   double
-  BoundaryData::pressure(const Condition &c,
-                         const Point<2>  &x,
-                         const double     theta) const
+  BoundaryData::pressure(const Condition  &c,
+                         const Point<dim> &x,
+                         const double      theta) const
   {
     Vector<double> v(1);
-    v[0] = c.pressure->value(Point<3>(x[0], x[1], theta));
+    v[0] = c.pressure->value(parser_point(x, theta));
     check_finite(v, x, theta, c.section + "/Pressure");
     return v[0];
   }
 
 
+  template <int dim>
   Tensor<1, 3>
   BoundaryData::evaluate(const FunctionParser<3> &f,
-                         const Point<2>          &x,
+                         const Point<dim>        &x,
                          const double             theta,
                          const std::string       &entry) const
   {
     Vector<double> v(f.n_components);
-    f.vector_value(Point<3>(x[0], x[1], theta), v);
+    f.vector_value(parser_point(x, theta), v);
     check_finite(v, x, theta, entry);
     Tensor<1, 3> result;
     if (!kinematics.is_fourier())
@@ -166,9 +185,10 @@ namespace thinlayer
   }
 
 
+  template <int dim>
   void
   BoundaryData::make_zero_constraints(
-    const DoFHandler<2>       &dof_handler,
+    const DoFHandler<dim>     &dof_handler,
     AffineConstraints<double> &constraints) const
   {
     const unsigned int n = kinematics.n_components();
@@ -176,16 +196,18 @@ namespace thinlayer
       if (c.constrained.n_selected_components(n) > 0)
         VectorTools::interpolate_boundary_values(dof_handler,
                                                  id,
-                                                 Functions::ZeroFunction<2>(n),
+                                                 Functions::ZeroFunction<dim>(
+                                                   n),
                                                  constraints,
                                                  c.constrained);
   }
 
 
+  template <int dim>
   std::map<types::global_dof_index, double>
-  BoundaryData::prescribed_values(const Mapping<2>    &mapping,
-                                  const DoFHandler<2> &dof_handler,
-                                  const unsigned int   m) const
+  BoundaryData::prescribed_values(const Mapping<dim>    &mapping,
+                                  const DoFHandler<dim> &dof_handler,
+                                  const unsigned int     m) const
   {
     const unsigned int n = kinematics.n_components();
     // Later ids overwrite earlier ones at shared nodes: going from the
@@ -198,9 +220,9 @@ namespace thinlayer
           continue;
         std::map<types::global_dof_index, double> own;
         const FunctionParser<3>                  &u = *c->second.displacement;
-        const std::string   entry = c->second.section + "/Displacement";
-        const ModeAmplitude amplitude(
-          kinematics.n_components(), [&](const Point<2> &x) {
+        const std::string        entry = c->second.section + "/Displacement";
+        const ModeAmplitude<dim> amplitude(
+          kinematics.n_components(), [&](const Point<dim> &x) {
             if (!kinematics.is_fourier())
               return evaluate(u, x, 0, entry);
             Tensor<1, 3> a;
@@ -240,20 +262,21 @@ namespace thinlayer
   }
 
 
+  template <int dim>
   void
-  BoundaryData::assemble_load_vector(const Mapping<2>    &mapping,
-                                     const DoFHandler<2> &dof_handler,
-                                     const unsigned int   m,
-                                     Vector<double>      &load) const
+  BoundaryData::assemble_load_vector(const Mapping<dim>    &mapping,
+                                     const DoFHandler<dim> &dof_handler,
+                                     const unsigned int     m,
+                                     Vector<double>        &load) const
   {
     load                                    = 0;
-    const FiniteElement<2>              &fe = dof_handler.get_fe();
-    const QGauss<1>                      quadrature(fe.degree + 2);
-    FEFaceValues<2>                      fe_face(mapping,
-                            fe,
-                            quadrature,
-                            update_values | update_normal_vectors |
-                              update_quadrature_points | update_JxW_values);
+    const FiniteElement<dim>            &fe = dof_handler.get_fe();
+    const QGauss<dim - 1>                quadrature(fe.degree + 2);
+    FEFaceValues<dim>                    fe_face(mapping,
+                              fe,
+                              quadrature,
+                              update_values | update_normal_vectors |
+                                update_quadrature_points | update_JxW_values);
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     Vector<double>                       cell_load(fe.n_dofs_per_cell());
 
@@ -280,8 +303,8 @@ namespace thinlayer
           cell_load = 0;
           for (const unsigned int q : fe_face.quadrature_point_indices())
             {
-              const Point<2> &x  = fe_face.quadrature_point(q);
-              const double    dA = kinematics.area_factor(x) * fe_face.JxW(q);
+              const Point<dim> &x  = fe_face.quadrature_point(q);
+              const double      dA = kinematics.area_factor(x) * fe_face.JxW(q);
               // The mode's share of the traction, component by component.
               Tensor<1, 3> t;
               for (unsigned int j = 0; j < thetas.size(); ++j)
@@ -291,7 +314,7 @@ namespace thinlayer
                                             thetas[j],
                                             c->second.section + "/Traction");
                   const double p = pressure(c->second, x, thetas[j]);
-                  for (unsigned int d = 0; d < 2; ++d)
+                  for (unsigned int d = 0; d < dim; ++d)
                     g[d] -= p * fe_face.normal_vector(q)[d];
                   t[0] += g[0] * kinematics.T1_at(m, thetas[j]) * weights[j];
                   t[1] += g[1] * kinematics.T1_at(m, thetas[j]) * weights[j];
@@ -310,9 +333,10 @@ namespace thinlayer
   }
 
 
+  template <int dim>
   void
-  BoundaryData::note_conflict(const Mapping<2>             &mapping,
-                              const DoFHandler<2>          &dof_handler,
+  BoundaryData::note_conflict(const Mapping<dim>           &mapping,
+                              const DoFHandler<dim>        &dof_handler,
                               const types::global_dof_index dof,
                               const types::boundary_id      winner,
                               const types::boundary_id      loser) const
@@ -324,10 +348,11 @@ namespace thinlayer
     for (const auto &w : warnings)
       if (w.find(ids) != std::string::npos)
         return;
-    std::vector<Point<2>> points(dof_handler.n_dofs());
+    std::vector<Point<dim>> points(dof_handler.n_dofs());
     DoFTools::map_dofs_to_support_points(mapping, dof_handler, points);
     std::ostringstream where;
-    where << points[dof][0] << ", " << points[dof][1];
+    for (unsigned int d = 0; d < dim; ++d)
+      where << (d > 0 ? ", " : "") << points[dof][d];
     warnings.push_back("warning: " + ids +
                        " prescribe different displacements at the node (" +
                        where.str() + "); the lower id's value is used");
@@ -349,4 +374,20 @@ namespace thinlayer
         return true;
     return false;
   }
+
+  // The members for the mesh's dimension.
+#define THINLAYER_INSTANTIATE(dim)                                          \
+  template void BoundaryData::make_zero_constraints(                        \
+    const DoFHandler<dim> &, AffineConstraints<double> &) const;            \
+  template std::map<types::global_dof_index, double>                        \
+                BoundaryData::prescribed_values(const Mapping<dim> &,       \
+                                  const DoFHandler<dim> &,    \
+                                  const unsigned int) const;  \
+  template void BoundaryData::assemble_load_vector(const Mapping<dim> &,    \
+                                                   const DoFHandler<dim> &, \
+                                                   const unsigned int,      \
+                                                   Vector<double> &) const;
+  THINLAYER_INSTANTIATE(2)
+  THINLAYER_INSTANTIATE(3)
+#undef THINLAYER_INSTANTIATE
 } // namespace thinlayer

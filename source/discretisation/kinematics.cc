@@ -22,6 +22,15 @@ namespace thinlayer
 
 
   Kinematics
+  Kinematics::make_solid()
+  {
+    Kinematics k = make_plane_strain();
+    k.dimension  = 3;
+    return k;
+  }
+
+
+  Kinematics
   Kinematics::make_fourier(const std::vector<unsigned int> &harmonics,
                            const std::vector<double>       &station_angles,
                            const bool                       antisymmetric)
@@ -71,9 +80,16 @@ namespace thinlayer
 
 
   unsigned int
+  Kinematics::mesh_dimension() const
+  {
+    return dimension;
+  }
+
+
+  unsigned int
   Kinematics::n_components() const
   {
-    return fourier ? 3 : 2;
+    return fourier ? 3 : dimension;
   }
 
 
@@ -150,22 +166,26 @@ namespace thinlayer
   }
 
 
+  template <int dim>
   void
   Kinematics::shape_strain(const unsigned int     m,
                            const unsigned int     component,
                            const double           N,
-                           const Tensor<1, 2>    &gradient,
+                           const Tensor<1, dim>  &gradient,
                            const double           r,
                            SymmetricTensor<2, 3> &part1,
                            SymmetricTensor<2, 3> &part2) const
   {
+    Assert(dim == dimension,
+           ExcMessage("The mesh's dimension is not the kinematics'."));
     part1 = 0;
     part2 = 0;
     if (!fourier)
       {
-        // Plane strain: sym(e_c (x) grad N).
-        part1[component][component] = gradient[component];
-        part1[0][1]                 = 0.5 * gradient[1 - component];
+        // Plane strain and 3D: sym(e_c (x) grad N).
+        for (unsigned int d = 0; d < dim; ++d)
+          part1[component][d] =
+            d == component ? gradient[d] : 0.5 * gradient[d];
         return;
       }
     // (r, z, theta) with N_r = gradient[0], N_z = gradient[1]; the
@@ -193,9 +213,32 @@ namespace thinlayer
   }
 
 
+  template <int dim>
   double
-  Kinematics::area_factor(const Point<2> &x) const
+  Kinematics::area_factor(const Point<dim> &x) const
   {
     return fourier ? x[0] : 1.;
   }
+
+
+  template void
+  Kinematics::shape_strain(const unsigned int,
+                           const unsigned int,
+                           const double,
+                           const Tensor<1, 2> &,
+                           const double,
+                           SymmetricTensor<2, 3> &,
+                           SymmetricTensor<2, 3> &) const;
+  template void
+  Kinematics::shape_strain(const unsigned int,
+                           const unsigned int,
+                           const double,
+                           const Tensor<1, 3> &,
+                           const double,
+                           SymmetricTensor<2, 3> &,
+                           SymmetricTensor<2, 3> &) const;
+  template double
+  Kinematics::area_factor(const Point<2> &) const;
+  template double
+  Kinematics::area_factor(const Point<3> &) const;
 } // namespace thinlayer

@@ -103,4 +103,13 @@ namespace thinlayer
                         const BoundaryData &,
                         AffineConstraints<double> &,
                         AffineConstraints<double> &);
+  template void
+  make_mode_constraints(const DoFHandler<3> &,
+                        const Kinematics &,
+                        const unsigned int,
+                        const int,
+                        const AffineConstraints<double> &,
+                        const BoundaryData &,
+                        AffineConstraints<double> &,
+                        AffineConstraints<double> &);
 } // namespace thinlayer

@@ -127,4 +127,9 @@ namespace thinlayer
                          const Mapping<2> &,
                          const Quadrature<2> &,
                          const Kinematics &);
+  template void
+  StrainOperator::reinit(const DoFHandler<3> &,
+                         const Mapping<3> &,
+                         const Quadrature<3> &,
+                         const Kinematics &);
 } // namespace thinlayer

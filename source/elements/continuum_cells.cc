@@ -396,4 +396,5 @@ namespace thinlayer
 
 
   template class ContinuumCells<2>;
+  template class ContinuumCells<3>;
 } // namespace thinlayer

@@ -1,3 +1,4 @@
+#include <thinlayer/base/input_error.h>
 #include <thinlayer/elements/continuum_cells.h>
 #include <thinlayer/elements/element_group.h>
 #include <thinlayer/elements/interface_elements.h>
@@ -27,14 +28,27 @@ namespace thinlayer
       dof_handler, mapping, quadrature, kinematics, parameters.materials));
     if (!parameters.interface_elements.empty())
       {
-        auto elements = std::make_unique<InterfaceElements>();
-        elements->reinit(dof_handler,
-                         mapping,
-                         kinematics,
-                         parameters.interface_elements,
-                         parameters.materials,
-                         parameters.parameter_file);
-        groups.push_back(std::move(elements));
+        // The interface elements join the sides of quadrilaterals: a family
+        // of 2D meshes (on a 3D mesh they would join faces, a family of its
+        // own).
+        if constexpr (dim == 2)
+          {
+            auto elements = std::make_unique<InterfaceElements>();
+            elements->reinit(dof_handler,
+                             mapping,
+                             kinematics,
+                             parameters.interface_elements,
+                             parameters.materials,
+                             parameters.parameter_file);
+            groups.push_back(std::move(elements));
+          }
+        else
+          throw InputError(
+            parameters.parameter_file,
+            InterfaceElementParameters::section(
+              parameters.interface_elements.begin()->first),
+            "interface elements along curves of a 2D mesh; this mesh is " +
+              std::to_string(dim) + "D");
       }
     return groups;
   }
@@ -45,5 +59,11 @@ namespace thinlayer
                         const DoFHandler<2> &,
                         const Mapping<2> &,
                         const Quadrature<2> &,
+                        const Kinematics &);
+  template std::vector<std::unique_ptr<ElementGroup>>
+  create_element_groups(const Parameters &,
+                        const DoFHandler<3> &,
+                        const Mapping<3> &,
+                        const Quadrature<3> &,
                         const Kinematics &);
 } // namespace thinlayer

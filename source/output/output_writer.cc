@@ -70,14 +70,14 @@ namespace thinlayer
   }
 
 
+  template <int dim>
   void
   OutputWriter::write_fields(const unsigned int               step,
                              const double                     load_factor,
-                             const Analysis<2>               &analysis,
+                             const Analysis<dim>             &analysis,
                              const double                     theta,
                              const std::vector<LayerProfile> &interfaces)
   {
-    constexpr int                  dim         = 2;
     const auto                    &dof_handler = analysis.get_dof_handler();
     const Kinematics              &kinematics  = analysis.get_kinematics();
     const bool                     fourier     = kinematics.is_fourier();
@@ -92,7 +92,9 @@ namespace thinlayer
               : std::vector<std::string>{"stress_xx",
                                          "stress_yy",
                                          "stress_zz",
-                                         "stress_xy"};
+                                         "stress_xy",
+                                         "stress_xz",
+                                         "stress_yz"};
 
     DataOut<dim> data_out;
     data_out.attach_dof_handler(dof_handler);
@@ -162,11 +164,12 @@ namespace thinlayer
   }
 
 
+  template <int dim>
   void
   OutputWriter::write_interface_profiles(
     const unsigned int               step,
     const double                     load_factor,
-    const Analysis<2>               &analysis,
+    const Analysis<dim>             &analysis,
     const std::vector<LayerProfile> &interfaces,
     const bool                       with_vtu)
   {
@@ -267,4 +270,16 @@ namespace thinlayer
 
   template void
   OutputWriter::write_displacements(const Analysis<2> &, const double) const;
+  template void
+  OutputWriter::write_fields(const unsigned int,
+                             const double,
+                             const Analysis<2> &,
+                             const double,
+                             const std::vector<LayerProfile> &);
+  template void
+  OutputWriter::write_interface_profiles(const unsigned int,
+                                         const double,
+                                         const Analysis<2> &,
+                                         const std::vector<LayerProfile> &,
+                                         const bool);
 } // namespace thinlayer

@@ -13,7 +13,7 @@ namespace thinlayer
     const unsigned int n_q     = analysis.n_quadrature_points();
     const unsigned int n_cells = tria.n_active_cells();
     const unsigned int n_s     = analysis.get_kinematics().n_stations();
-    n_components               = analysis.get_kinematics().is_fourier() ? 6 : 4;
+    n_components = analysis.get_kinematics().n_components() == 3 ? 6 : 4;
     stress.assign(n_s,
                   std::vector<Vector<double>>(n_components,
                                               Vector<double>(n_cells)));

@@ -56,8 +56,9 @@ namespace thinlayer
   } // namespace
 
 
+  template <int dim>
   ProgrammeResult
-  Programme::run()
+  Programme<dim>::run()
   {
     // An easy step: at most a quarter of the constant-stiffness
     // iteration limit (Newton's steps take a few iterations each).
@@ -124,8 +125,9 @@ namespace thinlayer
   }
 
 
-  Programme::Attempt
-  Programme::attempt(const unsigned int step, const double load_factor)
+  template <int dim>
+  typename Programme<dim>::Attempt
+  Programme<dim>::attempt(const unsigned int step, const double load_factor)
   {
     Attempt a{step, load_factor, {}, 0, 0, false, false};
     {
@@ -164,10 +166,11 @@ namespace thinlayer
   }
 
 
+  template <int dim>
   void
-  Programme::record(const Attempt           &a,
-                    const LoadStepping::Next next,
-                    const bool               probe)
+  Programme<dim>::record(const Attempt           &a,
+                         const LoadStepping::Next next,
+                         const bool               probe)
   {
     {
       TimerOutput::Scope scope(timer, "output");
@@ -212,8 +215,9 @@ namespace thinlayer
   }
 
 
+  template <int dim>
   void
-  Programme::accept(const Attempt &a)
+  Programme<dim>::accept(const Attempt &a)
   {
     const double stiffness =
       (a.load - result.last_converged_load) /
@@ -232,8 +236,9 @@ namespace thinlayer
   }
 
 
+  template <int dim>
   void
-  Programme::probe_beyond(const Attempt &failed)
+  Programme<dim>::probe_beyond(const Attempt &failed)
   {
     solver.reject();
     const double probe_load_factor =
@@ -250,4 +255,6 @@ namespace thinlayer
         result.growth_ratio         = probe.result.growth_ratio;
       }
   }
+
+  template class Programme<2>;
 } // namespace thinlayer

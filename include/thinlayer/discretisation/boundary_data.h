@@ -24,10 +24,11 @@ namespace thinlayer
    * linear in the load factor, so the analysis builds the load vectors and
    * the prescribed-displacement vectors once and scales them.
    *
-   * With Fourier kinematics the expressions are functions of (r, z, theta)
-   * giving Cartesian components; each mode gets its share by integration
-   * over theta, int f . T(n theta) r dtheta for loads, and the amplitude
-   * (1/c) int u T(n theta) dtheta for prescribed displacements.
+   * The expressions are functions of (x, y) in plane strain, of (x, y, z)
+   * on a 3D mesh. With Fourier kinematics they are functions of
+   * (r, z, theta) giving Cartesian components; each mode gets its share by
+   * integration over theta, int f . T(n theta) r dtheta for loads, and the
+   * amplitude (1/c) int u T(n theta) dtheta for prescribed displacements.
    */
   class BoundaryData
   {
@@ -49,8 +50,9 @@ namespace thinlayer
      * Add homogeneous constraints for every constrained component (the
      * same for every mode).
      */
+    template <int dim>
     void
-    make_zero_constraints(const DoFHandler<2>       &dof_handler,
+    make_zero_constraints(const DoFHandler<dim>     &dof_handler,
                           AffineConstraints<double> &constraints) const;
 
     /**
@@ -58,20 +60,22 @@ namespace thinlayer
      * by DoF. Where boundary ids share a node (a corner), the lowest id's
      * value wins.
      */
+    template <int dim>
     std::map<types::global_dof_index, double>
-    prescribed_values(const Mapping<2>    &mapping,
-                      const DoFHandler<2> &dof_handler,
-                      const unsigned int   mode) const;
+    prescribed_values(const Mapping<dim>    &mapping,
+                      const DoFHandler<dim> &dof_handler,
+                      const unsigned int     mode) const;
 
     /**
      * The external load vector of mode @p mode, tractions and pressures at
      * unit load factor (unconstrained).
      */
+    template <int dim>
     void
-    assemble_load_vector(const Mapping<2>    &mapping,
-                         const DoFHandler<2> &dof_handler,
-                         const unsigned int   mode,
-                         Vector<double>      &load) const;
+    assemble_load_vector(const Mapping<dim>    &mapping,
+                         const DoFHandler<dim> &dof_handler,
+                         const unsigned int     mode,
+                         Vector<double>        &load) const;
 
     /// Whether any boundary prescribes a displacement component.
     bool
@@ -102,28 +106,32 @@ namespace thinlayer
      * cylindrical components (r, z, theta) at (r, z, theta) for Fourier;
      * @p entry ("Boundary 2/Traction") names @p f in an error.
      */
+    template <int dim>
     Tensor<1, 3>
     evaluate(const FunctionParser<3> &f,
-             const Point<2>          &x,
+             const Point<dim>        &x,
              const double             theta,
              const std::string       &entry) const;
 
     /// The pressure of @p c at (x, y) (and theta), checked like evaluate().
+    template <int dim>
     double
-    pressure(const Condition &c, const Point<2> &x, const double theta) const;
+    pressure(const Condition &c, const Point<dim> &x, const double theta) const;
 
     /// An InputError unless every value of @p v is a finite number.
+    template <int dim>
     void
     check_finite(const Vector<double> &v,
-                 const Point<2>       &x,
+                 const Point<dim>     &x,
                  const double          theta,
                  const std::string    &entry) const;
 
     /// Add a warning for @p dof, where @p winner's value replaced
     /// @p loser's.
+    template <int dim>
     void
-    note_conflict(const Mapping<2>             &mapping,
-                  const DoFHandler<2>          &dof_handler,
+    note_conflict(const Mapping<dim>           &mapping,
+                  const DoFHandler<dim>        &dof_handler,
                   const types::global_dof_index dof,
                   const types::boundary_id      winner,
                   const types::boundary_id      loser) const;

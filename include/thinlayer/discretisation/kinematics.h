@@ -29,11 +29,14 @@ namespace thinlayer
   }
 
   /**
-   * How the displacement unknowns on the 2D mesh make a 3D field:
+   * How the displacement unknowns on the mesh make a 3D field:
    * displacement = sum over modes m of u_m(x) T_m(theta), with the material
    * evaluated at a few stations (circumferential angles).
    *
-   * - Plane strain: one mode, one station, components (u_x, u_y).
+   * - Plane strain (a 2D mesh): one mode, one station, components (u_x,
+   *   u_y).
+   * - Solid (a 3D mesh): one mode, one station, components (u_x, u_y,
+   *   u_z).
    * - Fourier (an axisymmetric body, the mesh being its r-z plane, under
    *   non-axisymmetric load): a mode per harmonic n, components
    *   (u_r, u_z, u_theta). In the symmetric series u_r, u_z go with cos(n
@@ -44,7 +47,8 @@ namespace thinlayer
    *   B1 T1(m, s) + B2 T2(m, s):
    * B1 holds the normal and r-z shear parts (cos n theta in the symmetric
    * series), B2 the r-theta and z-theta shears (sin n theta). Tensor
-   * indices are (x, y, z) in plane strain and (r, z, theta) for Fourier.
+   * indices are (x, y, z) in plane strain and 3D, (r, z, theta) for
+   * Fourier.
    *
    * For isotropic elasticity the harmonics decouple: the stiffness of mode
    * m is int (c1 B1^T D B1 + c2 B2^T D B2) dA_r, with c1 = int T1^2 dtheta,
@@ -60,6 +64,10 @@ namespace thinlayer
     static Kinematics
     make_plane_strain();
 
+    /// One mode and one station on a 3D mesh, components (u_x, u_y, u_z).
+    static Kinematics
+    make_solid();
+
     /**
      * Fourier harmonics @p harmonics (n >= 0), material stations at
      * @p station_angles (radians, in [0, pi], increasing, the first 0 and
@@ -72,6 +80,10 @@ namespace thinlayer
 
     bool
     is_fourier() const;
+
+    /// The dimension of the mesh: 3 for a solid, else 2.
+    unsigned int
+    mesh_dimension() const;
 
     unsigned int
     n_components() const;
@@ -147,19 +159,23 @@ namespace thinlayer
      * The two strain parts of a vector shape function whose only non-zero
      * component is @p component, with value @p value and gradient
      * @p gradient at a point with radius @p r (x in plane strain, unused).
+     * In plane strain and 3D the first part is sym(e_c (x) grad N) and the
+     * second 0; @p dim is the mesh's dimension (mesh_dimension()).
      */
+    template <int dim>
     void
     shape_strain(const unsigned int     m,
                  const unsigned int     component,
                  const double           value,
-                 const Tensor<1, 2>    &gradient,
+                 const Tensor<1, dim>  &gradient,
                  const double           r,
                  SymmetricTensor<2, 3> &part1,
                  SymmetricTensor<2, 3> &part2) const;
 
-    /// The factor of the area element (r for Fourier, 1 in plane strain).
+    /// The factor of the area (or volume) element: r for Fourier, else 1.
+    template <int dim>
     double
-    area_factor(const Point<2> &x) const;
+    area_factor(const Point<dim> &x) const;
 
   private:
     /// Fills t1_at_stations and t2_at_stations.
@@ -168,6 +184,7 @@ namespace thinlayer
 
     bool                      fourier;
     bool                      antisymmetric;
+    unsigned int              dimension = 2;
     std::vector<unsigned int> harmonics;
     std::vector<double>       angles;
     std::vector<double>       weights;

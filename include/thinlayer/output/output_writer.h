@@ -63,10 +63,11 @@ namespace thinlayer
      * is the one in the cut at angle @p theta. The profiles of
      * @p interfaces add their cell fields (zero off the layers).
      */
+    template <int dim>
     void
     write_fields(const unsigned int               step,
                  const double                     load_factor,
-                 const Analysis<2>               &analysis,
+                 const Analysis<dim>             &analysis,
                  const double                     theta,
                  const std::vector<LayerProfile> &interfaces);
 
@@ -77,10 +78,11 @@ namespace thinlayer
      * @p with_vtu, also each as a VTU polyline, listed in
      * interface-<id>.pvd and interface-curve-<id>.pvd.
      */
+    template <int dim>
     void
     write_interface_profiles(const unsigned int               step,
                              const double                     load_factor,
-                             const Analysis<2>               &analysis,
+                             const Analysis<dim>             &analysis,
                              const std::vector<LayerProfile> &interfaces,
                              const bool                       with_vtu);
 

@@ -26,7 +26,8 @@ namespace thinlayer
     explicit CellFields(const Analysis<dim> &analysis);
 
     /// (i, j) of the stress components written: plane strain the first
-    /// four (xx, yy, zz, xy), Fourier all six (rr, zz, tt, rz, rt, zt).
+    /// four (xx, yy, zz, xy), Fourier and 3D all six (rr, zz, tt, rz, rt,
+    /// zt; xx, yy, zz, xy, xz, yz).
     static constexpr unsigned int components[6][2] =
       {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
     unsigned int n_components;

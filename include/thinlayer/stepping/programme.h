@@ -31,13 +31,14 @@ namespace thinlayer
    * is judged from its ProgrammeResult by judge_outcome(), with the
    * thresholds named in run_outcome.h.
    */
+  template <int dim>
   class Programme
   {
   public:
     Programme(const Parameters                &p,
-              Analysis<2>                     &analysis,
-              StepSolver<2>                   &solver,
-              const Monitors<2>               &monitors,
+              Analysis<dim>                   &analysis,
+              StepSolver<dim>                 &solver,
+              const Monitors<dim>             &monitors,
               const std::vector<LayerProfile> &layers,
               OutputWriter                    &writer,
               TimerOutput                     &timer,
@@ -97,9 +98,9 @@ namespace thinlayer
     probe_beyond(const Attempt &failed);
 
     const Parameters                &p;
-    Analysis<2>                     &analysis;
-    StepSolver<2>                   &solver;
-    const Monitors<2>               &monitors;
+    Analysis<dim>                   &analysis;
+    StepSolver<dim>                 &solver;
+    const Monitors<dim>             &monitors;
     const std::vector<LayerProfile> &layers;
     OutputWriter                    &writer;
     TimerOutput                     &timer;
