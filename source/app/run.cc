@@ -187,7 +187,7 @@ namespace thinlayer
         Programme<2>(p, analysis, *solver, monitors, layers, writer, timer, out)
           .run();
 
-      judge_outcome(analysis, run, summary);
+      judge_outcome(analysis.has_external_load(), run, summary);
       summary.converged           = run.converged;
       summary.last_converged_load = run.last_converged_load;
       summary.first_failed_load   = run.first_failed_load;

@@ -1,6 +1,7 @@
 #include <thinlayer/base/interruption.h>
 #include <thinlayer/solution_methods/return_mapping_method.h>
 #include <thinlayer/stepping/step_progress.h>
+#include <thinlayer/stepping/sub_stepping.h>
 
 #include <algorithm>
 #include <cmath>
@@ -129,34 +130,29 @@ namespace thinlayer
   StepResult
   ReturnMappingMethod<dim>::solve_step(const double new_load_factor)
   {
-    StepResult   result{0, false, 0, 0};
-    const double total = new_load_factor - analysis.accepted_load_factor();
-
-    double size = total;
+    StepResult  result{0, false, 0, 0};
+    SubStepping parts(analysis.accepted_load_factor(),
+                      new_load_factor,
+                      max_cut_backs());
     while (true)
       {
-        const double start = analysis.accepted_load_factor();
-        const bool   last =
-          std::abs(start + size - new_load_factor) <= 1e-12 * std::abs(total);
-        const double target = last ? new_load_factor : start + size;
-        if (attempt(target, result))
+        const double            target = parts.target();
+        const SubStepping::Next next   = parts.report(attempt(target, result));
+        result.cut_backs               = parts.cut_backs();
+        if (next == SubStepping::Next::done)
           {
-            if (last)
-              {
-                result.converged = true;
-                break;
-              }
-            // A converged part of a cut-back step.
+            result.converged = true;
+            break;
+          }
+        if (next == SubStepping::Next::failed)
+          break; // the last attempt's state is kept
+        if (next == SubStepping::Next::next_part)
+          {
             analysis.accept_step(target);
             this->acceptance_listener->state_accepted();
-            size = std::min(size, new_load_factor - target);
-            continue;
           }
-        if (result.cut_backs == max_cut_backs())
-          break; // failed: the last attempt's state is kept
-        ++result.cut_backs;
-        size /= 2;
-        this->state_rejected();
+        else
+          this->state_rejected();
       }
     return result;
   }

@@ -50,7 +50,7 @@ namespace thinlayer
 
 
   void
-  judge_outcome(const Analysis<2>     &analysis,
+  judge_outcome(const bool             under_load,
                 const ProgrammeResult &run,
                 RunSummary            &s)
   {
@@ -74,7 +74,7 @@ namespace thinlayer
                       ? "every load step converged"
                       : "steps that failed were accepted (Solver/Continue "
                         "after failure)";
-        if (!analysis.has_external_load() && run.converged &&
+        if (!under_load && run.converged &&
             std::abs(run.last_stiffness) <=
               plateau_stiffness_ratio * std::abs(run.first_stiffness))
           {
@@ -96,7 +96,7 @@ namespace thinlayer
                  printf("%.2g", run.stiffness_ratio) +
                  " of the elastic one): a spurious equilibrium, no response "
                  "of the body and no mechanism";
-    else if (!analysis.has_external_load())
+    else if (!under_load)
       s.reason = "the step failed" + at(run.failed_load_factor) +
                  " under prescribed displacement, where a failed step is "
                  "no collapse";

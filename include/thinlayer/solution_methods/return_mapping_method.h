@@ -58,9 +58,10 @@ namespace thinlayer
     initialize() override;
 
     /**
-     * Attempts at the step: a converged attempt short of the target (after
-     * a cut-back) is accepted in the body and the rest of the step tried
-     * again; a failed one is halved up to max_cut_backs() times.
+     * Attempts at the step in the parts SubStepping gives: a converged
+     * attempt short of the target (after a cut-back) is accepted in the
+     * body and the rest of the step tried again; a failed one is halved up
+     * to max_cut_backs() times.
      */
     StepResult
     solve_step(const double new_load_factor) override;

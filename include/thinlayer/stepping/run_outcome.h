@@ -1,7 +1,6 @@
 #ifndef thinlayer_stepping_run_outcome_h
 #define thinlayer_stepping_run_outcome_h
 
-#include <thinlayer/analysis/analysis.h>
 #include <thinlayer/output/run_summary.h>
 #include <thinlayer/postprocess/monitors.h>
 
@@ -99,11 +98,14 @@ namespace thinlayer
   shows_mechanism(const double stiffness_ratio, const double growth_ratio);
 
   /**
-   * How the run ended (RunSummary::outcome), the reason, and the
-   * collapse load where there is one.
+   * How the run @p run ended (RunSummary::outcome), the reason, and the
+   * collapse load where there is one; @p under_load: whether the scene
+   * applies tractions or pressures (Analysis::has_external_load()), else
+   * it is driven by prescribed displacements, where a failed step is no
+   * collapse and the load may reach a plateau.
    */
   void
-  judge_outcome(const Analysis<2>     &analysis,
+  judge_outcome(const bool             under_load,
                 const ProgrammeResult &run,
                 RunSummary            &summary);
 } // namespace thinlayer

@@ -1,0 +1,145 @@
+// Truths checked for the judgement of how a run ended (judge_outcome()),
+// on programme results made up to sit on either side of each threshold of
+// run_outcome.h:
+// 1. A signal gives "interrupted" and no collapse load.
+// 2. A programme that ran through is "completed"; under prescribed
+//    displacement its last load is a plateau (a collapse load) when the
+//    last step's stiffness is at most plateau_stiffness_ratio of the
+//    first's, and not at twice that.
+// 3. A failed step is a collapse only under load, with a finite state,
+//    after a converged step (or a resolved bracket), and with a mechanism
+//    as evidence: secant stiffness below mechanism_stiffness_ratio (not at
+//    it), or growth at least mechanism_growth_ratio (not just below). The
+//    collapse load is then the last converged load, and the reason names
+//    the bracket (the probe's load factor where a probe showed it).
+#include <thinlayer/stepping/run_outcome.h>
+
+#include <cmath>
+#include <csignal>
+#include <iostream>
+#include <string>
+
+#include "../common/truths.h"
+
+using namespace thinlayer;
+using truths::expect;
+
+namespace
+{
+  /// A run under load that converged up to load factor 1.2 (load 2.4)
+  /// and stopped at 1.25 with the given evidence.
+  ProgrammeResult
+  stopped(const double stiffness_ratio, const double growth_ratio)
+  {
+    ProgrammeResult run;
+    run.converged                  = false;
+    run.any_step_converged         = true;
+    run.last_converged_load        = 2.4;
+    run.last_converged_load_factor = 1.2;
+    run.stopped                    = true;
+    run.bracket_resolved           = true;
+    run.failed_load_factor         = 1.25;
+    run.stiffness_ratio            = stiffness_ratio;
+    run.growth_ratio               = growth_ratio;
+    return run;
+  }
+
+
+  RunSummary
+  judge(const bool under_load, const ProgrammeResult &run)
+  {
+    RunSummary summary;
+    summary.collapse_load = std::numeric_limits<double>::quiet_NaN();
+    judge_outcome(under_load, run, summary);
+    std::cout << "  " << summary.outcome << ": " << summary.reason << '\n';
+    return summary;
+  }
+
+
+  bool
+  is(const RunSummary &s, const std::string &outcome, const double load)
+  {
+    return s.outcome == outcome &&
+           (std::isnan(load) ? std::isnan(s.collapse_load)
+                             : s.collapse_load == load);
+  }
+
+  const double none = std::numeric_limits<double>::quiet_NaN();
+} // namespace
+
+
+int
+main()
+{
+  std::cout << "1. Interrupted\n";
+  {
+    ProgrammeResult run;
+    run.interrupted_by          = SIGINT;
+    run.interrupted_load_factor = 0.5;
+    const RunSummary s          = judge(true, run);
+    expect(is(s, "interrupted", none) &&
+             s.reason.find("SIGINT") != std::string::npos,
+           "interrupted by SIGINT, no collapse load");
+  }
+
+  std::cout << "2. Ran through\n";
+  {
+    ProgrammeResult run;
+    run.last_converged_load = 3.0;
+    run.first_stiffness     = 100;
+    run.last_stiffness      = plateau_stiffness_ratio * 100;
+    expect(is(judge(true, run), "completed", none), "under load: completed");
+    expect(is(judge(false, run), "completed", 3.0),
+           "displacement-driven, last stiffness at the plateau ratio: the "
+           "plateau 3 is the collapse load");
+    run.last_stiffness = 2 * plateau_stiffness_ratio * 100;
+    expect(is(judge(false, run), "completed", none),
+           "at twice the ratio: no plateau");
+  }
+
+  std::cout << "3. A failed step\n";
+  {
+    const double below = 0.5 * mechanism_stiffness_ratio;
+    expect(is(judge(true, stopped(below, none)), "collapse", 2.4),
+           "stiffness below the mechanism ratio: collapse at 2.4");
+    expect(is(judge(true, stopped(mechanism_stiffness_ratio, none)),
+              "not converged",
+              none),
+           "stiffness at the ratio: no mechanism");
+    expect(is(judge(true, stopped(0.5, mechanism_growth_ratio)),
+              "collapse",
+              2.4),
+           "growth at the growth ratio: collapse");
+    expect(is(judge(true, stopped(0.5, 0.99 * mechanism_growth_ratio)),
+              "not converged",
+              none),
+           "growth just below it: no mechanism");
+    expect(is(judge(false, stopped(below, none)), "not converged", none),
+           "under prescribed displacement: never a collapse");
+
+    ProgrammeResult run = stopped(below, none);
+    run.non_finite      = true;
+    expect(is(judge(true, run), "not converged", none),
+           "not finite: never a collapse");
+    run              = stopped(below, none);
+    run.against_load = true;
+    expect(is(judge(true, run), "not converged", none),
+           "against its load: never a collapse");
+    run                    = stopped(below, none);
+    run.any_step_converged = false;
+    run.bracket_resolved   = false;
+    expect(is(judge(true, run), "not converged", none),
+           "the first step failed, no bracket: no collapse load");
+    run.bracket_resolved = true;
+    expect(is(judge(true, run), "collapse", 2.4),
+           "the first step failed within a resolved bracket: collapse");
+
+    run                   = stopped(below, none);
+    run.probe_load_factor = 1.3;
+    const RunSummary s    = judge(true, run);
+    expect(is(s, "collapse", 2.4) &&
+             s.reason.find("between 1.2 and 1.3") != std::string::npos,
+           "shown by a probe: the bracket reaches the probe");
+  }
+  return truths::conclude();
+}
