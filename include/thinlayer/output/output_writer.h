@@ -5,8 +5,8 @@
 
 #include <thinlayer/analysis/analysis.h>
 #include <thinlayer/parameters/parameters.h>
+#include <thinlayer/postprocess/displacement_measure.h>
 #include <thinlayer/postprocess/layer_profile.h>
-#include <thinlayer/postprocess/monitors.h>
 #include <thinlayer/solution_methods/step_result.h>
 
 #include <fstream>

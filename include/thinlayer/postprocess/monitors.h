@@ -5,23 +5,13 @@
 
 #include <thinlayer/analysis/analysis.h>
 #include <thinlayer/parameters/parameters.h>
+#include <thinlayer/postprocess/displacement_measure.h>
 
 #include <utility>
 
 namespace thinlayer
 {
   using namespace dealii;
-
-  /**
-   * A displacement component over a boundary: length-weighted mean, and the
-   * extremes over its nodes (their spread shows how uniform it is).
-   */
-  struct DisplacementMeasure
-  {
-    double mean;
-    double min;
-    double max;
-  };
 
   /**
    * What the "load" and "displacement" columns of history.csv measure on an

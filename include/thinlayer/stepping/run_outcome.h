@@ -2,7 +2,7 @@
 #define thinlayer_stepping_run_outcome_h
 
 #include <thinlayer/output/run_summary.h>
-#include <thinlayer/postprocess/monitors.h>
+#include <thinlayer/postprocess/displacement_measure.h>
 
 #include <limits>
 
