@@ -52,11 +52,12 @@ namespace thinlayer
    * of the plane. The integral over the side uses Gauss or Lobatto
    * points, weighted by r in Fourier scenes.
    *
-   * The elements take part in everything the cells do, through the
-   * Analysis: the elastic stiffness of every mode, the viscoplastic point
-   * rule, the return mapping with internal forces and stress excess, the
-   * acceptance and rejection of a step, and Newton's tangent. Station by
-   * station as the point loop: the relative displacement of the harmonics
+   * As an ElementGroup the elements take part in everything the cells do:
+   * the elastic stiffness of every mode, the viscoplastic point rule, the
+   * return mapping with internal forces and stress excess, the acceptance
+   * and rejection of a step, Newton's tangent, and a profile per curve.
+   * The elements join the sides of quadrilaterals: a family of 2D meshes.
+   * Station by station as the point loop: the relative displacement of the harmonics
    * summed at each station (u_r, u_z with T1, u_theta with T2), the
    * tractions projected back with the station weights.
    */
