@@ -43,7 +43,10 @@ namespace thinlayer
    * A solution method (owned by the stepping, see StepSolver) sets the
    * step increments and calls the point rules; the stepping then ends the
    * attempt (end_attempt()), and accepts or rejects its state. Data flows
-   * one way: the analysis knows no method.
+   * one way: the analysis knows no method. For isotropic elasticity the
+   * modes decouple, so a constant-stiffness iteration is one
+   * forward/backward substitution per mode and one pass of the point
+   * rules.
    *
    * Discretisation: FE_Q(2) per component, reduced to the 8-node
    * serendipity element by make_serendipity_constraints() (or kept as Q9),
