@@ -57,8 +57,8 @@ namespace thinlayer
    * return mapping with internal forces and stress excess, the acceptance
    * and rejection of a step, Newton's tangent, and a profile per curve.
    * The elements join the sides of quadrilaterals: a family of 2D meshes.
-   * Station by station as the point loop: the relative displacement of the harmonics
-   * summed at each station (u_r, u_z with T1, u_theta with T2), the
+   * Station by station as the point loop: the relative displacement of the
+   * harmonics summed at each station (u_r, u_z with T1, u_theta with T2), the
    * tractions projected back with the station weights.
    */
   class InterfaceElements : public ElementGroup
