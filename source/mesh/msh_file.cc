@@ -144,12 +144,12 @@ namespace thinlayer
     read_version_4(const std::string &text, MshFile &mesh)
     {
       const auto         physicals = entity_physicals(text, mesh.file);
-      std::size_t        begin, end;
+      std::size_t        nodes_begin, nodes_end, elements_begin, elements_end;
       std::istringstream nodes(
-        section(text, "$Nodes\n", "$EndNodes", begin, end));
-      std::istringstream elements(
-        section(text, "$Elements\n", "$EndElements", begin, end));
-      if (end == std::string::npos)
+        section(text, "$Nodes\n", "$EndNodes", nodes_begin, nodes_end));
+      std::istringstream elements(section(
+        text, "$Elements\n", "$EndElements", elements_begin, elements_end));
+      if (nodes_end == std::string::npos || elements_end == std::string::npos)
         fail(mesh.file, "expected a $Nodes and an $Elements section");
 
       long n_blocks = 0, n_total = 0, min_tag, max_tag;
@@ -159,7 +159,6 @@ namespace thinlayer
           int  entity_dim, entity, parametric;
           long n = 0;
           nodes >> entity_dim >> entity >> parametric >> n;
-          const std::size_t first = mesh.node_ids.size();
           for (long i = 0; i < n; ++i)
             {
               long id = 0;
@@ -175,14 +174,12 @@ namespace thinlayer
                 nodes >> u;
               mesh.positions.push_back(x);
             }
-          (void)first;
         }
       if (!nodes || long(mesh.node_ids.size()) != n_total)
         fail(mesh.file,
              "expected " + std::to_string(n_total) +
                " nodes in the $Nodes section");
 
-      nodes.clear();
       elements >> n_blocks >> n_total >> min_tag >> max_tag;
       for (long b = 0; b < n_blocks && elements; ++b)
         {
@@ -195,18 +192,17 @@ namespace thinlayer
                  "an element block of gmsh type " + std::to_string(type) +
                    ", which thinlayer does not read; expected lines, "
                    "quadrilaterals and hexahedra (types 1, 3 and 5)");
-          const auto physical = (entity_dim >= 0 && entity_dim < 4)
-                                  ? physicals[entity_dim].find(entity)
-                                  : physicals[0].end();
+          // The entity's physical tag, 0 for one without.
+          long physical = 0;
+          if (entity_dim >= 0 && entity_dim < 4)
+            if (const auto p = physicals[entity_dim].find(entity);
+                p != physicals[entity_dim].end())
+              physical = p->second;
           for (long i = 0; i < n && elements; ++i)
             {
               MshElement e;
               e.type = type;
-              e.tags = {(entity_dim >= 0 && entity_dim < 4 &&
-                         physical != physicals[entity_dim].end())
-                          ? physical->second
-                          : 0,
-                        entity};
+              e.tags = {physical, entity};
               elements >> e.id;
               e.nodes.resize(n_nodes);
               for (auto &v : e.nodes)
