@@ -9,6 +9,8 @@
 #include <thinlayer/base/input_error.h>
 #include <thinlayer/discretisation/mode_constraints.h>
 #include <thinlayer/discretisation/serendipity_constraints.h>
+#include <thinlayer/parallel/cell_partition.h>
+#include <thinlayer/parallel/mpi.h>
 
 #include <algorithm>
 #include <cmath>
@@ -122,6 +124,14 @@ namespace thinlayer
     continuum = dynamic_cast<const ContinuumCells<dim> *>(groups[0].get());
     Assert(continuum != nullptr,
            ExcMessage("The first element group must be the continuum."));
+    // On many ranks, each runs the point rules of its part of the mesh.
+    if (mpi::n_ranks() > 1)
+      {
+        const CellPartition partition =
+          partition_cells(tria, mpi::n_ranks(), mpi::rank());
+        for (const auto &group : groups)
+          group->distribute(partition);
+      }
 
     DynamicSparsityPattern dsp(dof_handler.n_dofs());
     for (const auto &group : groups)
@@ -158,8 +168,10 @@ namespace thinlayer
                                            mode.unit_load);
         mode.unit_rhs.reinit(n);
       }
-    for (ModeVectors *vectors :
-         {&solution_vectors, &increment_vectors, &internal_force_vectors})
+    for (ModeVectors *vectors : {&solution_vectors,
+                                 &increment_vectors,
+                                 &internal_force_vectors,
+                                 &rank_loads})
       vectors->assign(kinematics.n_modes(), Vector<double>(n));
   }
 
@@ -310,6 +322,7 @@ namespace thinlayer
     pending        = true;
 
     // Overflow anywhere is no state: the step fails, never converges.
+    share_states();
     StateCheck check;
     for (const auto &increment : increment_vectors)
       check.finite = check.finite && std::isfinite(increment.l1_norm());
@@ -344,8 +357,21 @@ namespace thinlayer
 
   template <int dim>
   void
+  Analysis<dim>::share_states()
+  {
+    if (states_shared)
+      return;
+    for (const auto &group : groups)
+      group->share_states();
+    states_shared = true;
+  }
+
+
+  template <int dim>
+  void
   Analysis<dim>::accept_step(const double load_factor)
   {
+    share_states();
     for (unsigned int m = 0; m < systems.size(); ++m)
       solution_vectors[m] += increment_vectors[m];
     for (const auto &group : groups)
@@ -362,6 +388,7 @@ namespace thinlayer
   {
     for (auto &increment : increment_vectors)
       increment = 0;
+    share_states();
     for (const auto &group : groups)
       group->reject();
     current_lambda = accepted_lambda;
@@ -398,11 +425,23 @@ namespace thinlayer
   unsigned int
   Analysis<dim>::viscoplastic_update(ModeVectors &body_load_change)
   {
+    states_shared = false;
+    // On many ranks each adds its points' loads, then the sum is added.
+    const bool   split      = mpi::n_ranks() > 1;
+    ModeVectors &loads      = split ? rank_loads : body_load_change;
     unsigned int n_yielding = 0;
+    if (split)
+      for (auto &v : rank_loads)
+        v = 0;
     for (const auto &group : groups)
-      n_yielding +=
-        group->viscoplastic_update(increment_vectors, body_load_change);
-    return n_yielding;
+      n_yielding += group->viscoplastic_update(increment_vectors, loads);
+    if (split)
+      for (unsigned int m = 0; m < systems.size(); ++m)
+        {
+          mpi::sum(rank_loads[m]);
+          body_load_change[m] += rank_loads[m];
+        }
+    return mpi::sum(n_yielding);
   }
 
 
@@ -416,13 +455,19 @@ namespace thinlayer
         internal_force_vectors[m] = 0;
         stress_excess[m]          = 0;
       }
+    states_shared           = false;
     unsigned int n_yielding = 0;
     for (const auto &group : groups)
       n_yielding += group->return_mapping_update(increment_vectors,
                                                  with_tangents,
                                                  internal_force_vectors,
                                                  stress_excess);
-    return n_yielding;
+    for (unsigned int m = 0; m < systems.size(); ++m)
+      {
+        mpi::sum(internal_force_vectors[m]);
+        mpi::sum(stress_excess[m]);
+      }
+    return mpi::sum(n_yielding);
   }
 
 
@@ -445,6 +490,7 @@ namespace thinlayer
   {
     for (const auto &group : groups)
       group->add_coupled_tangent(tangent, coupled_constraints);
+    mpi::sum(tangent);
   }
 
 

@@ -7,6 +7,7 @@
 #include <thinlayer/base/interruption.h>
 #include <thinlayer/output/reference_check.h>
 #include <thinlayer/output/results_directory.h>
+#include <thinlayer/parallel/mpi.h>
 #include <thinlayer/parameters/parameter_reader.h>
 #include <thinlayer/parameters/parameter_text.h>
 #include <thinlayer/parameters/parameters.h>
@@ -103,10 +104,19 @@ namespace thinlayer
                    std::ostream                   &out,
                    std::ostream                   &err)
   {
+    // Every rank reads the same command line and parameter file and meets
+    // the same errors in them; rank 0 reports those. An error that only
+    // one rank can meet (a failed write, an internal error) is reported by
+    // that rank, which then ends all of them.
+    std::ostringstream quiet;
+    std::ostream      &root_err = mpi::is_root() ? err : quiet;
+    const std::string  rank =
+      mpi::n_ranks() > 1 ? "rank " + std::to_string(mpi::rank()) + ": " : "";
+
     std::string              file;
     std::vector<std::string> overrides;
     if (const int status =
-          parse_arguments(arguments, file, overrides, out, err);
+          parse_arguments(arguments, file, overrides, out, root_err);
         status >= 0)
       return status;
 
@@ -129,8 +139,9 @@ namespace thinlayer
         out.flush();
         if (!out)
           {
-            err << "thinlayer: cannot write to standard output; the results "
-                   "are in Output/Directory\n";
+            root_err
+              << "thinlayer: cannot write to standard output; the results "
+                 "are in Output/Directory\n";
             return 1;
           }
         // 128 + the signal, as a shell reports a process it ended.
@@ -138,17 +149,17 @@ namespace thinlayer
           return 128 + interruption_signal();
         if (result.failed_runs > 0)
           {
-            err << "thinlayer: " << result.failed_runs
-                << " run(s) of the sweep ended in an error (sweep.csv, "
-                   "column error)\n";
+            root_err << "thinlayer: " << result.failed_runs
+                     << " run(s) of the sweep ended in an error (sweep.csv, "
+                        "column error)\n";
             return 1;
           }
         if (result.missed_references > 0)
           {
-            err << "thinlayer: " << result.missed_references
-                << " run(s) missed what Reference/Expected outcome or "
-                   "Expected load range asks of them (the line 'reference "
-                   "check FAILED' says what)\n";
+            root_err << "thinlayer: " << result.missed_references
+                     << " run(s) missed what Reference/Expected outcome or "
+                        "Expected load range asks of them (the line 'reference "
+                        "check FAILED' says what)\n";
             return 4;
           }
         return 0;
@@ -157,30 +168,35 @@ namespace thinlayer
     // are written as \xNN.
     catch (const InputError &e)
       {
-        err << "thinlayer: " << printable(e.what()) << '\n';
+        root_err << "thinlayer: " << printable(e.what()) << '\n';
         return 1;
       }
     catch (const Interrupted &e)
       {
-        err << "thinlayer: " << printable(e.what()) << '\n';
+        root_err << "thinlayer: " << printable(e.what()) << '\n';
         return 128 + interruption_signal();
       }
     catch (const WriteError &e)
       {
-        err << "thinlayer: " << printable(e.what())
+        err << "thinlayer: " << rank << printable(e.what())
             << "; Output/Directory still holds the run it held before\n";
+        mpi::abort_all(1);
         return 1;
       }
     catch (const ExceptionBase &e)
       {
         std::ostringstream info;
         e.print_info(info);
-        err << "thinlayer: internal error: " << printable(info.str()) << '\n';
+        err << "thinlayer: " << rank
+            << "internal error: " << printable(info.str()) << '\n';
+        mpi::abort_all(3);
         return 3;
       }
     catch (const std::exception &e)
       {
-        err << "thinlayer: internal error: " << printable(e.what()) << '\n';
+        err << "thinlayer: " << rank
+            << "internal error: " << printable(e.what()) << '\n';
+        mpi::abort_all(3);
         return 3;
       }
   }

@@ -8,6 +8,7 @@
 #include <thinlayer/output/output_writer.h>
 #include <thinlayer/output/reference_check.h>
 #include <thinlayer/output/results_directory.h>
+#include <thinlayer/parallel/mpi.h>
 #include <thinlayer/postprocess/layer_profile.h>
 #include <thinlayer/postprocess/monitors.h>
 #include <thinlayer/stepping/programme.h>
@@ -59,6 +60,8 @@ namespace thinlayer
               << (p.kinematics.antisymmetric ? "antisymmetric" : "symmetric")
               << "), " << p.kinematics.station_angles.size() << " stations\n";
         }
+      if (mpi::n_ranks() > 1)
+        out << "  " << mpi::n_ranks() << " MPI ranks\n";
       if (!warnings.empty())
         out << "  " << warnings << '\n';
       out.flush(); // progress: lines reach a file or pipe as they come
@@ -221,7 +224,9 @@ namespace thinlayer
         run.total_iterations > 0
           ? summary.timing["load steps"] / run.total_iterations
           : 0.;
-      summary.wall_seconds = wall_clock.wall_time();
+      summary.wall_seconds   = wall_clock.wall_time();
+      summary.ranks          = mpi::n_ranks();
+      summary.peak_memory_mb = mpi::peak_memory_mb();
       writer.write_file("summary.json", summary.json());
 
       if (p.output.print_timing)
@@ -242,12 +247,16 @@ namespace thinlayer
     RunSummary                        summary;
     try
       {
+        // Rank 0 writes every file (OutputWriter), so only it has a
+        // results directory.
         summary = run(
           p,
           [&]() {
-            results = std::make_unique<ResultsDirectory>(p.output.directory,
-                                                         p.parameter_file);
-            return results->staging();
+            return mpi::on_root([&]() {
+              results = std::make_unique<ResultsDirectory>(p.output.directory,
+                                                           p.parameter_file);
+              return results->staging();
+            });
           },
           out);
       }
@@ -256,7 +265,8 @@ namespace thinlayer
         throw WriteError(std::string(e.what()) + " (Output/Directory '" +
                          p.output.directory + "')");
       }
-    results->commit();
+    if (results)
+      results->commit();
     out << "  results in " << p.output.directory << std::endl;
     return summary;
   }
@@ -270,7 +280,8 @@ namespace thinlayer
     return run(
       p,
       [&]() {
-        std::filesystem::create_directories(directory);
+        if (mpi::is_root())
+          std::filesystem::create_directories(directory);
         return directory;
       },
       out);

@@ -1,3 +1,5 @@
+#include <deal.II/base/mpi.h>
+
 #include <thinlayer/base/interruption.h>
 
 #include <csignal>
@@ -5,6 +7,8 @@
 
 namespace thinlayer
 {
+  using namespace dealii;
+
   namespace
   {
     volatile std::sig_atomic_t received_signal = 0;
@@ -64,6 +68,19 @@ namespace thinlayer
 
   int
   interruption_signal()
+  {
+    // Every rank must stop at the same iteration: the largest signal of
+    // any rank, asked of all of them.
+    const int signal = received_signal;
+    if (Utilities::MPI::job_supports_mpi() &&
+        Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+      return Utilities::MPI::max(signal, MPI_COMM_WORLD);
+    return signal;
+  }
+
+
+  int
+  local_interruption_signal()
   {
     return received_signal;
   }

@@ -1,9 +1,11 @@
 #include <deal.II/dofs/dof_tools.h>
 
 #include <thinlayer/elements/continuum_cells.h>
+#include <thinlayer/parallel/mpi.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 namespace thinlayer
@@ -154,6 +156,41 @@ namespace thinlayer
 
   template <int dim>
   void
+  ContinuumCells<dim>::distribute(const CellPartition &partition)
+  {
+    cell_owner = partition.owner;
+    point_loop.set_cells(partition.owned_cells());
+  }
+
+
+  template <int dim>
+  void
+  ContinuumCells<dim>::share_states()
+  {
+    if (cell_owner.empty())
+      return;
+    const unsigned int n_stations = kinematics.n_stations();
+    const std::size_t  bytes      = sizeof(PointState) * n_q * n_stations;
+    mpi::share_from_owners(
+      cell_owner,
+      bytes,
+      [&](const unsigned int c, char *buffer) {
+        for (unsigned int q = 0; q < n_q; ++q)
+          std::memcpy(buffer + q * n_stations * sizeof(PointState),
+                      history[c * n_q + q]->stations.data(),
+                      n_stations * sizeof(PointState));
+      },
+      [&](const unsigned int c, const char *buffer) {
+        for (unsigned int q = 0; q < n_q; ++q)
+          std::memcpy(history[c * n_q + q]->stations.data(),
+                      buffer + q * n_stations * sizeof(PointState),
+                      n_stations * sizeof(PointState));
+      });
+  }
+
+
+  template <int dim>
+  void
   ContinuumCells<dim>::accept()
   {
     for (PointHistory *point : history)
@@ -261,7 +298,8 @@ namespace thinlayer
     point_loop.for_each_chunk([this](const unsigned int begin,
                                      const unsigned int end,
                                      const unsigned int chunk) {
-      compute_cell_tangents(begin, end, tangent_scratch[chunk]);
+      for (unsigned int i = begin; i < end; ++i)
+        compute_cell_tangent(point_loop.get_cells()[i], tangent_scratch[chunk]);
     });
     elastic_cell_matrices = cell_matrices;
     cell_is_elastic.assign(n_cells, 1);
@@ -285,9 +323,8 @@ namespace thinlayer
 
   template <int dim>
   void
-  ContinuumCells<dim>::compute_cell_tangents(const unsigned int begin,
-                                             const unsigned int end,
-                                             TangentScratch    &scratch)
+  ContinuumCells<dim>::compute_cell_tangent(const unsigned int c,
+                                            TangentScratch    &scratch)
   {
     const StrainOperator &B          = strain_operator;
     const unsigned int    n_cell     = B.dofs_per_cell();
@@ -305,59 +342,58 @@ namespace thinlayer
     auto &strain_rows = scratch.strain_rows;
     auto &stress_rows = scratch.stress_rows;
 
-    for (unsigned int c = begin; c < end; ++c)
-      {
-        FullMatrix<double> &cell_matrix = cell_matrices[c];
-        cell_matrix                     = 0;
-        for (unsigned int q = 0; q < n_q; ++q)
-          {
-            const unsigned int p = c * n_q + q;
-            for (unsigned int s = 0; s < n_stations; ++s)
-              {
-                const SymmetricTensor<4, 3> &C =
-                  tangents[std::size_t(p) * n_stations + s];
-                const double weight =
-                  kinematics.station_weight(s) * B.point_weight(p);
-                for (unsigned int m = 0; m < n_modes; ++m)
-                  {
-                    SymmetricTensor<2, 3> *e = &strain[m * n_cell];
-                    B.shape_strains(p, m, 0, e);
-                    if (two_parts)
-                      B.shape_strains(p, m, 1, part2.data());
-                    for (unsigned int i = 0; i < n_cell; ++i)
-                      {
-                        e[i] *= kinematics.T1(m, s);
-                        if (two_parts)
-                          e[i] += kinematics.T2(m, s) * part2[i];
-                        stress[m * n_cell + i] = C * e[i];
-                      }
-                  }
-                // Every pair of modes: the station sum of
-                // (T1 B1 + T2 B2)_m^T C_t (T1 B1 + T2 B2)_m'.
-                for (unsigned int k = 0; k < 6; ++k)
-                  for (unsigned int i = 0; i < n_local; ++i)
+    {
+      FullMatrix<double> &cell_matrix = cell_matrices[c];
+      cell_matrix                     = 0;
+      for (unsigned int q = 0; q < n_q; ++q)
+        {
+          const unsigned int p = c * n_q + q;
+          for (unsigned int s = 0; s < n_stations; ++s)
+            {
+              const SymmetricTensor<4, 3> &C =
+                tangents[std::size_t(p) * n_stations + s];
+              const double weight =
+                kinematics.station_weight(s) * B.point_weight(p);
+              for (unsigned int m = 0; m < n_modes; ++m)
+                {
+                  SymmetricTensor<2, 3> *e = &strain[m * n_cell];
+                  B.shape_strains(p, m, 0, e);
+                  if (two_parts)
+                    B.shape_strains(p, m, 1, part2.data());
+                  for (unsigned int i = 0; i < n_cell; ++i)
                     {
-                      strain_rows[k * n_local + i] =
-                        (k < 3 ? weight : 2 * weight) *
-                        strain[i].access_raw_entry(k);
-                      stress_rows[k * n_local + i] =
-                        stress[i].access_raw_entry(k);
+                      e[i] *= kinematics.T1(m, s);
+                      if (two_parts)
+                        e[i] += kinematics.T2(m, s) * part2[i];
+                      stress[m * n_cell + i] = C * e[i];
                     }
+                }
+              // Every pair of modes: the station sum of
+              // (T1 B1 + T2 B2)_m^T C_t (T1 B1 + T2 B2)_m'.
+              for (unsigned int k = 0; k < 6; ++k)
                 for (unsigned int i = 0; i < n_local; ++i)
                   {
-                    double *row = &cell_matrix(i, 0);
-                    for (unsigned int k = 0; k < 6; ++k)
-                      {
-                        const double  a = strain_rows[k * n_local + i];
-                        const double *b = &stress_rows[k * n_local];
-                        if (a != 0)
-                          for (unsigned int j = 0; j < n_local; ++j)
-                            row[j] += a * b[j];
-                      }
+                    strain_rows[k * n_local + i] =
+                      (k < 3 ? weight : 2 * weight) *
+                      strain[i].access_raw_entry(k);
+                    stress_rows[k * n_local + i] =
+                      stress[i].access_raw_entry(k);
                   }
-              }
-          }
-      }
+              for (unsigned int i = 0; i < n_local; ++i)
+                {
+                  double *row = &cell_matrix(i, 0);
+                  for (unsigned int k = 0; k < 6; ++k)
+                    {
+                      const double  a = strain_rows[k * n_local + i];
+                      const double *b = &stress_rows[k * n_local];
+                      if (a != 0)
+                        for (unsigned int j = 0; j < n_local; ++j)
+                          row[j] += a * b[j];
+                    }
+                }
+            }
+        }
+    }
   }
 
 
@@ -374,17 +410,18 @@ namespace thinlayer
     point_loop.for_each_chunk([this](const unsigned int begin,
                                      const unsigned int end,
                                      const unsigned int chunk) {
-      for (unsigned int c = begin; c < end; ++c)
+      for (unsigned int i = begin; i < end; ++i)
         {
-          cell_is_elastic[c] = elastic_tangents(c);
+          const unsigned int c = point_loop.get_cells()[i];
+          cell_is_elastic[c]   = elastic_tangents(c);
           if (!cell_is_elastic[c])
-            compute_cell_tangents(c, c + 1, tangent_scratch[chunk]);
+            compute_cell_tangent(c, tangent_scratch[chunk]);
         }
     });
 
     std::vector<types::global_dof_index> dofs(kinematics.n_modes() *
                                               strain_operator.dofs_per_cell());
-    for (unsigned int c = 0; c < cell_matrices.size(); ++c)
+    for (const unsigned int c : point_loop.get_cells())
       {
         coupled_cell_dofs(c, dofs);
         coupled_constraints.distribute_local_to_global(

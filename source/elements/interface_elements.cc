@@ -2,9 +2,11 @@
 
 #include <thinlayer/base/input_error.h>
 #include <thinlayer/elements/interface_elements.h>
+#include <thinlayer/parallel/mpi.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -115,7 +117,10 @@ namespace thinlayer
                          ? Quadrature<1>(QGaussLobatto<1>(3))
                          : Quadrature<1>(QGauss<1>(curve.points));
 
-    Element element{laws.at(pair.curve).get(), {}, {}};
+    Element element{laws.at(pair.curve).get(),
+                    pair.plus_cell->active_cell_index(),
+                    {},
+                    {}};
     std::map<types::global_dof_index, unsigned int> local;
     for (unsigned int q = 0; q < rule.size(); ++q)
       {
@@ -310,13 +315,14 @@ namespace thinlayer
     const unsigned int n_stations = kinematics->n_stations();
     unsigned int       n_yielding = 0;
     for (unsigned int p = 0; p < points.size(); ++p)
-      for (unsigned int s = 0; s < n_stations; ++s)
-        n_yielding += rule(points[p],
-                           s,
-                           *elements[points[p].element].law,
-                           states[p * n_stations + s],
-                           local_jump(points[p], s, step_increment),
-                           p * n_stations + s);
+      if (point_owner.empty() || point_owner[p] == rank)
+        for (unsigned int s = 0; s < n_stations; ++s)
+          n_yielding += rule(points[p],
+                             s,
+                             *elements[points[p].element].law,
+                             states[p * n_stations + s],
+                             local_jump(points[p], s, step_increment),
+                             p * n_stations + s);
     return n_yielding;
   }
 
@@ -403,6 +409,38 @@ namespace thinlayer
 
 
   void
+  InterfaceElements::distribute(const CellPartition &partition)
+  {
+    rank = partition.rank;
+    element_owner.resize(elements.size());
+    for (unsigned int k = 0; k < elements.size(); ++k)
+      element_owner[k] = partition.owner[elements[k].plus_cell];
+    point_owner.resize(points.size());
+    for (unsigned int p = 0; p < points.size(); ++p)
+      point_owner[p] = element_owner[points[p].element];
+  }
+
+
+  void
+  InterfaceElements::share_states()
+  {
+    if (point_owner.empty())
+      return;
+    const unsigned int n_stations = kinematics->n_stations();
+    const std::size_t  bytes      = n_stations * sizeof(InterfacePointState);
+    mpi::share_from_owners(
+      point_owner,
+      bytes,
+      [&](const unsigned int p, char *buffer) {
+        std::memcpy(buffer, &states[p * n_stations], bytes);
+      },
+      [&](const unsigned int p, const char *buffer) {
+        std::memcpy(&states[p * n_stations], buffer, bytes);
+      });
+  }
+
+
+  void
   InterfaceElements::accept()
   {
     for (InterfacePointState &state : states)
@@ -484,6 +522,8 @@ namespace thinlayer
     for (unsigned int p = 0; p < points.size(); ++p)
       for (unsigned int s = 0; s < n_stations; ++s)
         {
+          if (!point_owner.empty() && point_owner[p] != rank)
+            continue;
           jump_operator(points[p], s, G);
           const Tensor<2, 3> &C = tangents[p * n_stations + s];
           const double        weight =
@@ -498,9 +538,10 @@ namespace thinlayer
                       A(i, j) += weight * G(a, i) * C[a][b] * G(b, j);
         }
     for (unsigned int k = 0; k < elements.size(); ++k)
-      coupled_constraints.distribute_local_to_global(coupled_matrices[k],
-                                                     elements[k].coupled_dofs,
-                                                     tangent);
+      if (element_owner.empty() || element_owner[k] == rank)
+        coupled_constraints.distribute_local_to_global(coupled_matrices[k],
+                                                       elements[k].coupled_dofs,
+                                                       tangent);
   }
 
 

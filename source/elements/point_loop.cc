@@ -114,20 +114,33 @@ namespace thinlayer
     this->history         = &history;
     this->n_q             = n_q;
     n_cells               = cell_law.size();
-    // A few chunks per thread balance the plastic zone's extra work.
-    chunks = std::min(4 * MultithreadInfo::n_threads(), n_cells);
+    cells.resize(n_cells);
+    for (unsigned int c = 0; c < n_cells; ++c)
+      cells[c] = c;
 
     const unsigned int n_local =
       kinematics.n_modes() * strain_operator.dofs_per_cell();
     cell_body_loads.assign(std::size_t(n_cells) * n_local, 0.);
     cell_internal_forces.assign(std::size_t(n_cells) * n_local, 0.);
     cell_has_body_loads.assign(n_cells, 0);
-    tasks.reserve(chunks);
     ChunkScratch scratch;
     scratch.du.resize(n_local);
     scratch.mode_strain.resize(kinematics.n_modes() *
                                strain_operator.n_parts());
-    chunk_scratch.assign(chunks, scratch);
+    chunk_scratch.assign(4 * MultithreadInfo::n_threads(), scratch);
+    set_cells(cells);
+  }
+
+
+  void
+  PointLoop::set_cells(const std::vector<unsigned int> &cells)
+  {
+    if (&cells != &this->cells)
+      this->cells = cells;
+    // A few chunks per thread balance the plastic zone's extra work.
+    chunks = std::min<unsigned int>(4 * MultithreadInfo::n_threads(),
+                                    this->cells.size());
+    tasks.reserve(chunks);
   }
 
 
@@ -184,7 +197,7 @@ namespace thinlayer
     for (unsigned int m = 0; m < n_modes; ++m)
       {
         Vector<double> &target = body_loads[m];
-        for (unsigned int c = 0; c < n_cells; ++c)
+        for (const unsigned int c : cells)
           {
             const types::global_dof_index *dofs = strain_operator->cell_dofs(c);
             const std::size_t slot = (std::size_t(c) * n_modes + m) * n;
@@ -219,8 +232,9 @@ namespace thinlayer
     std::vector<double>  &du          = scratch.du;
     auto                 &mode_strain = scratch.mode_strain;
 
-    for (unsigned int c = begin; c < end; ++c)
+    for (unsigned int i = begin; i < end; ++i)
       {
+        const unsigned int             c    = cells[i];
         const MaterialLaw             &law  = *(*cell_law)[c];
         const types::global_dof_index *dofs = B.cell_dofs(c);
         double *cell_loads = &cell_body_loads[std::size_t(c) * n_modes * n];

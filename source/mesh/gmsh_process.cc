@@ -158,7 +158,7 @@ namespace thinlayer
     int               status;
     while ((status = gmsh.poll()) < 0)
       {
-        if (interrupted())
+        if (local_interruption_signal() != 0)
           {
             gmsh.kill_and_reap();
             throw Interrupted("while gmsh was meshing " + job.geometry);

@@ -4,6 +4,7 @@
 #include <thinlayer/mesh/mesh_splitting.h>
 #include <thinlayer/mesh/msh_file.h>
 #include <thinlayer/mesh/scene.h>
+#include <thinlayer/parallel/mpi.h>
 
 #include <algorithm>
 #include <cctype>
@@ -191,7 +192,8 @@ namespace thinlayer
     const std::string extension =
       std::filesystem::path(p.mesh.file).extension().string();
     if (extension == ".geo")
-      msh = mesh_geometry(p, progress);
+      // gmsh meshes once, on rank 0.
+      msh = mpi::on_root([&]() { return mesh_geometry(p, progress); });
     else if (extension == ".msh")
       msh = read_file(p.mesh.file);
     else

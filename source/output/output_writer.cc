@@ -5,6 +5,7 @@
 #include <thinlayer/output/output_writer.h>
 #include <thinlayer/output/results_directory.h>
 #include <thinlayer/output/revolved_view.h>
+#include <thinlayer/parallel/mpi.h>
 #include <thinlayer/postprocess/cell_fields.h>
 
 #include <cerrno>
@@ -35,7 +36,10 @@ namespace thinlayer
                              const std::string      &directory)
     : directory(directory)
     , vtu_subdivisions(parameters.vtu_subdivisions)
+    , writes(mpi::is_root())
   {
+    if (!writes)
+      return;
     errno = 0;
     history.open(directory + "/history.csv");
     history << "step,attempt,load_factor,load,displacement,displacement_min,"
@@ -50,6 +54,8 @@ namespace thinlayer
   void
   OutputWriter::write_history_row(const HistoryRow &row)
   {
+    if (!writes)
+      return;
     // A value that is not a finite number (a yield ratio where no
     // material can yield, a diverged step) as empty.
     const auto number = text_format::csv_number;
@@ -78,6 +84,8 @@ namespace thinlayer
                              const double                     theta,
                              const std::vector<LayerProfile> &interfaces)
   {
+    if (!writes)
+      return;
     const auto                    &dof_handler = analysis.get_dof_handler();
     const Kinematics              &kinematics  = analysis.get_kinematics();
     const bool                     fourier     = kinematics.is_fourier();
@@ -173,6 +181,8 @@ namespace thinlayer
     const std::vector<LayerProfile> &interfaces,
     const bool                       with_vtu)
   {
+    if (!writes)
+      return;
     const Kinematics &kinematics = analysis.get_kinematics();
     // Each profile as NAME-NNNN.csv, and with_vtu as NAME-NNNN.vtu listed
     // in NAME.pvd.
@@ -203,6 +213,8 @@ namespace thinlayer
                                     const Analysis<2> &analysis,
                                     const unsigned int slices)
   {
+    if (!writes)
+      return;
     std::ostringstream name;
     name << "revolved-" << std::setw(4) << std::setfill('0') << step << ".vtu";
     write_file(name.str(), revolved_view_vtu(analysis, slices));
@@ -218,6 +230,8 @@ namespace thinlayer
   OutputWriter::write_displacements(const Analysis<dim> &analysis,
                                     const double         theta) const
   {
+    if (!writes)
+      return;
     const auto          &dof_handler = analysis.get_dof_handler();
     const bool           fourier     = analysis.get_kinematics().is_fourier();
     const Vector<double> u           = analysis.displacement_at(theta);
@@ -252,6 +266,8 @@ namespace thinlayer
   OutputWriter::write_file(const std::string &name,
                            const std::string &content) const
   {
+    if (!writes)
+      return;
     // Write beside, then rename: a reader never sees half a file.
     const std::string path = directory + "/" + name;
     errno                  = 0;

@@ -127,6 +127,7 @@ namespace thinlayer
     , seconds_per_substitution(std::numeric_limits<double>::quiet_NaN())
     , seconds_per_iteration(std::numeric_limits<double>::quiet_NaN())
     , wall_seconds(std::numeric_limits<double>::quiet_NaN())
+    , peak_memory_mb(std::numeric_limits<double>::quiet_NaN())
   {}
 
 

@@ -40,6 +40,11 @@ namespace thinlayer
    *   elements), which hold the point states and laws and do the work at
    *   the points. The analysis loops over them.
    *
+   * On many ranks (thinlayer::mpi) every rank holds the whole state and
+   * factorisation and follows the same steps; the point rules are split
+   * by cells (partition_cells()), and the forces and counts they produce
+   * are summed over the ranks before anyone reads them.
+   *
    * A solution method (owned by the stepping, see StepSolver) sets the
    * step increments and calls the point rules; the stepping then ends the
    * attempt (end_attempt()), and accepts or rejects its state. Data flows
@@ -324,6 +329,11 @@ namespace thinlayer
     void
     compute_internal_forces();
 
+    /// Give every rank the point states their owners computed (once after
+    /// the point rules last ran).
+    void
+    share_states();
+
     const Parameters         &parameters;
     const Triangulation<dim> &tria;
     const Kinematics          kinematics;
@@ -344,6 +354,11 @@ namespace thinlayer
     ModeVectors solution_vectors;
     ModeVectors increment_vectors;
     ModeVectors internal_force_vectors;
+    /// On many ranks: this rank's part of a body-load change, summed.
+    ModeVectors rank_loads;
+    /// Whether every rank's point states are the owners' (see
+    /// ElementGroup::share_states()).
+    bool states_shared = true;
 
     /// The component of every DoF.
     std::vector<unsigned int> dof_component;

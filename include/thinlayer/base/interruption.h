@@ -40,9 +40,18 @@ namespace thinlayer
     operator=(const ScopedInterruption &) = delete;
   };
 
-  /// The signal that asked the run to stop, or 0.
+  /**
+   * The signal that asked the run to stop, or 0. On many ranks the largest
+   * of every rank's, asked of all of them (a collective call: every rank
+   * polls at the same points of the run, so all stop together).
+   */
   int
   interruption_signal();
+
+  /// This process's signal alone, or 0: for a loop that runs on one rank
+  /// (waiting for gmsh).
+  int
+  local_interruption_signal();
 
   /// Whether a signal asked the run to stop: polled between iterations.
   inline bool

@@ -87,6 +87,12 @@ namespace thinlayer
     add_internal_forces(ModeVectors &internal_forces) const override;
 
     void
+    distribute(const CellPartition &partition) override;
+
+    void
+    share_states() override;
+
+    void
     accept() override;
 
     void
@@ -143,12 +149,9 @@ namespace thinlayer
     coupled_cell_dofs(const unsigned int                    c,
                       std::vector<types::global_dof_index> &dofs) const;
 
-    /// Newton's matrices of the cells [@p begin, @p end) with the kept
-    /// tangents.
+    /// Newton's matrix of cell @p c with the kept tangents.
     void
-    compute_cell_tangents(const unsigned int begin,
-                          const unsigned int end,
-                          TangentScratch    &scratch);
+    compute_cell_tangent(const unsigned int c, TangentScratch &scratch);
 
     /// Whether every tangent of cell @p c is its elastic one.
     bool
@@ -167,6 +170,8 @@ namespace thinlayer
                                 history_storage;
     std::vector<PointHistory *> history;
     PointLoop                   point_loop;
+    /// The rank of every cell (empty: all this rank's).
+    std::vector<unsigned int> cell_owner;
 
     /// Newton's state, allocated by add_coupled_sparsity(): the consistent
     /// tangent at every point and station (point-major), each cell's

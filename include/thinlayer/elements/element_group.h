@@ -11,6 +11,7 @@
 #include <thinlayer/discretisation/kinematics.h>
 #include <thinlayer/discretisation/mode_vectors.h>
 #include <thinlayer/elements/interface_values.h>
+#include <thinlayer/parallel/cell_partition.h>
 
 #include <cmath>
 #include <limits>
@@ -66,6 +67,14 @@ namespace thinlayer
    *
    * Every group works on the DoFs of the analysis's one DoFHandler, one
    * copy per mode (ModeVectors), and holds its own point states and laws.
+   *
+   * On many ranks (thinlayer::mpi) the point rules and Newton's tangent
+   * run only at the points this rank owns (distribute()); what they add
+   * to vectors and matrices is summed over the ranks by the Analysis, and
+   * share_states() gives every rank the owners' states at the end of an
+   * attempt. The elastic system, the internal forces of the current
+   * stresses, accept(), reject() and the state check run everywhere on
+   * every rank.
    *
    * To add a family: derive from this class in a new file pair under
    * elements/, and construct it in create_element_groups().
@@ -130,6 +139,17 @@ namespace thinlayer
     /// Add the nodal forces of the current stresses to @p internal_forces.
     virtual void
     add_internal_forces(ModeVectors &internal_forces) const = 0;
+
+    /// Run the point rules and Newton's tangent only at the points of the
+    /// cells that @p partition gives this rank (an interface element goes
+    /// with the cell on its plus side). Without a call, at every point.
+    virtual void
+    distribute(const CellPartition &partition) = 0;
+
+    /// Give every rank the point states their owners computed: all of a
+    /// rank's copies are then current. Nothing on one rank.
+    virtual void
+    share_states() = 0;
 
     /// Make the current stresses the converged ones, and the step's
     /// plastic strain part of the total.

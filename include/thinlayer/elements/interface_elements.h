@@ -146,6 +146,12 @@ namespace thinlayer
       SparseMatrix<double>            &tangent,
       const AffineConstraints<double> &coupled_constraints) override;
 
+    void
+    distribute(const CellPartition &partition) override;
+
+    void
+    share_states() override;
+
     /// One profile per curve, "interface-curve-<id>".
     std::vector<NamedProfile>
     profiles(const ModeVectors &solution,
@@ -187,7 +193,9 @@ namespace thinlayer
 
     struct Element
     {
-      const InterfaceLaw                  *law;
+      const InterfaceLaw *law;
+      /// The active cell on the plus side: the element's rank is its.
+      unsigned int                         plus_cell;
       std::vector<types::global_dof_index> dofs;
       /// The same DoFs of every mode in Newton's coupled numbering.
       std::vector<types::global_dof_index> coupled_dofs;
@@ -250,6 +258,10 @@ namespace thinlayer
     /// Point-major: points[p] at station s is states[p * n_stations + s].
     std::vector<InterfacePointState> states;
     std::vector<Tensor<2, 3>>        tangents;
+    /// The rank of every element and point (empty: all this rank's), and
+    /// this rank.
+    std::vector<unsigned int> element_owner, point_owner;
+    unsigned int              rank = 0;
     /// Work space of add_coupled_tangent(): a matrix per element, and the
     /// jump operator of one point.
     mutable std::vector<FullMatrix<double>> coupled_matrices;

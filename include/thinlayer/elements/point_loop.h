@@ -36,6 +36,10 @@ namespace thinlayer
    * iterations, do not depend on the number of threads, and no per-chunk
    * global vectors are zeroed and summed every iteration. Everything is
    * allocated in reinit(): an iteration allocates nothing.
+   *
+   * On many ranks each loop runs over the cells this rank owns
+   * (set_cells()); what they add is then summed over the ranks by the
+   * Analysis.
    */
   class PointLoop
   {
@@ -52,6 +56,20 @@ namespace thinlayer
            const unsigned int                      n_q,
            const std::vector<const MaterialLaw *> &cell_law,
            const std::vector<PointHistory *>      &history);
+
+    /**
+     * Run the point rules over the active cells @p cells only (ascending):
+     * on many ranks, the cells this rank owns. Without a call, every cell.
+     */
+    void
+    set_cells(const std::vector<unsigned int> &cells);
+
+    /// The cells the point rules run over (ascending).
+    const std::vector<unsigned int> &
+    get_cells() const
+    {
+      return cells;
+    }
 
     /**
      * The paper's point rule with pseudo time step @p time_step. Returns
@@ -85,9 +103,9 @@ namespace thinlayer
     }
 
     /**
-     * Run @p work(begin, end, chunk) for the cells [begin, end) of every
-     * chunk as parallel tasks, and wait for them; for other per-cell work
-     * of the same size (Newton's cell tangents).
+     * Run @p work(begin, end, chunk) for the positions [begin, end) in
+     * get_cells() of every chunk as parallel tasks, and wait for them; for
+     * other per-cell work of the same size (Newton's cell tangents).
      */
     template <typename Work>
     void
@@ -113,10 +131,11 @@ namespace thinlayer
       std::vector<SymmetricTensor<2, 3>> mode_strain;
     };
 
+    /// The first position in get_cells() of chunk @p k.
     unsigned int
     chunk_begin(const unsigned int k) const
     {
-      return k * n_cells / chunks;
+      return std::size_t(k) * cells.size() / chunks;
     }
 
     /// Both point rules: the parallel cell loop, then the serial pass
@@ -129,8 +148,8 @@ namespace thinlayer
            ModeVectors       &body_loads,
            ModeVectors       *internal_forces);
 
-    /// The cells [@p begin, @p end): their slots of cell_body_loads (and
-    /// cell_internal_forces), and cell_has_body_loads.
+    /// The cells at positions [@p begin, @p end) of get_cells(): their slots of
+    /// cell_body_loads (and cell_internal_forces), and cell_has_body_loads.
     template <typename PointRule>
     unsigned int
     update_cells(const unsigned int begin,
@@ -146,6 +165,8 @@ namespace thinlayer
     unsigned int                            n_q             = 0;
     unsigned int                            n_cells         = 0;
     unsigned int                            chunks          = 0;
+    /// The cells the point rules run over.
+    std::vector<unsigned int> cells;
 
     /// Each cell's nodal body loads (viscoplastic: their increments), per
     /// mode: n_modes * dofs_per_cell entries from c * n_modes *

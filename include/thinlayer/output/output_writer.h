@@ -47,6 +47,9 @@ namespace thinlayer
    * summary.json at the end, into @p directory (a ResultsDirectory's
    * staging directory, which exists). Every write is checked: one that
    * fails throws a WriteError that names the file.
+   *
+   * On many ranks every rank holds the whole state, and rank 0 writes
+   * every file; on the others every write is nothing.
    */
   class OutputWriter
   {
@@ -115,8 +118,10 @@ namespace thinlayer
 
 
   private:
-    std::string                                 directory;
-    unsigned int                                vtu_subdivisions;
+    std::string  directory;
+    unsigned int vtu_subdivisions;
+    /// Whether this rank writes (rank 0).
+    bool                                        writes;
     std::ofstream                               history;
     std::vector<std::pair<double, std::string>> pvd_records;
     std::vector<std::pair<double, std::string>> revolved_records;

@@ -65,6 +65,10 @@ namespace thinlayer
     double       seconds_per_substitution;
     double       seconds_per_iteration;
     double       wall_seconds;
+    /// The MPI ranks the run ran on, and the largest peak resident memory
+    /// of any of them (VmHWM), in MB.
+    unsigned int ranks = 1;
+    double       peak_memory_mb;
     /// Warnings about the model (e.g. too few stations); empty if none.
     std::string warnings;
     /// Wall seconds per timer section.
@@ -130,6 +134,8 @@ namespace thinlayer
       visitor("seconds_per_substitution", seconds_per_substitution);
       visitor("seconds_per_iteration", seconds_per_iteration);
       visitor("wall_seconds", wall_seconds);
+      visitor("ranks", ranks);
+      visitor("peak_memory_mb_per_rank", peak_memory_mb);
       visitor("warnings", warnings);
       visitor("timing", timing);
     }

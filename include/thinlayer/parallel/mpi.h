@@ -1,0 +1,108 @@
+#ifndef thinlayer_parallel_mpi_h
+#define thinlayer_parallel_mpi_h
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <thinlayer/discretisation/mode_vectors.h>
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace thinlayer
+{
+  using namespace dealii;
+
+  /**
+   * The processes of a run: MPI_COMM_WORLD under mpirun, one process
+   * without it (and in programs that never initialise MPI, such as the
+   * unit tests, where every function here is the identity).
+   *
+   * Every rank runs the same control flow on the same data (the
+   * parameters, the mesh, the load programme, every decision of the
+   * stepping), and splits the work at the points: each rank runs the
+   * point rules of the cells and interface elements it owns, and the
+   * forces they produce are summed here. A sum reaches every rank with the
+   * same bits (MPI's reductions combine in one order for all ranks), which
+   * keeps the ranks' decisions identical.
+   */
+  namespace mpi
+  {
+    /// MPI_COMM_WORLD.
+    MPI_Comm
+    communicator();
+
+    /// This process's rank, 0 without MPI.
+    unsigned int
+    rank();
+
+    /// The number of ranks, 1 without MPI.
+    unsigned int
+    n_ranks();
+
+    /// Whether this is rank 0, the one that reads, prints and writes what
+    /// exists once.
+    inline bool
+    is_root()
+    {
+      return rank() == 0;
+    }
+
+    /// The largest peak resident memory (VmHWM) of any rank, in MB.
+    double
+    peak_memory_mb();
+
+    /// The sum over the ranks of @p value.
+    unsigned int
+    sum(const unsigned int value);
+
+    /// Replace @p v by its sum over the ranks; nothing on one rank.
+    void
+    sum(Vector<double> &v);
+
+    /// Replace every value of @p matrix by its sum over the ranks (every
+    /// rank has the same sparsity pattern); nothing on one rank.
+    void
+    sum(SparseMatrix<double> &matrix);
+
+    /// Rank 0's @p text, on every rank.
+    std::string
+    broadcast(const std::string &text);
+
+    /**
+     * Rank 0 runs @p work (meshing with gmsh, opening the results
+     * directory: what exists once), and its text reaches every rank. An
+     * InputError or Interrupted that @p work throws is thrown on every
+     * rank; any other error stays on rank 0, which ends all ranks
+     * (abort_all()).
+     */
+    std::string
+    on_root(const std::function<std::string()> &work);
+
+    /**
+     * End every rank with exit status @p status (MPI_Abort) when there are
+     * several: for an error that only this rank has met, which the others,
+     * waiting for it in a collective call, would otherwise wait for
+     * forever. Returns on one rank.
+     */
+    void
+    abort_all(const int status);
+
+    /**
+     * Make every rank's copy of the items i = 0, 1, ... (owner.size() of
+     * them, @p bytes bytes each) that of the rank owner[i]: @p pack writes
+     * item i into a buffer, @p unpack reads it back. Nothing on one rank.
+     */
+    void
+    share_from_owners(
+      const std::vector<unsigned int>                       &owner,
+      const std::size_t                                      bytes,
+      const std::function<void(unsigned int, char *)>       &pack,
+      const std::function<void(unsigned int, const char *)> &unpack);
+  } // namespace mpi
+} // namespace thinlayer
+
+#endif

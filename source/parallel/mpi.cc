@@ -1,0 +1,193 @@
+#include <deal.II/base/utilities.h>
+
+#include <thinlayer/base/input_error.h>
+#include <thinlayer/base/interruption.h>
+#include <thinlayer/parallel/mpi.h>
+
+#include <iostream>
+
+namespace thinlayer
+{
+  namespace mpi
+  {
+    MPI_Comm
+    communicator()
+    {
+      return MPI_COMM_WORLD;
+    }
+
+
+    // deal.II's MPI queries call MPI itself, which must have been started:
+    // a program without mpirun never starts it.
+    unsigned int
+    rank()
+    {
+      return Utilities::MPI::job_supports_mpi()
+               ? Utilities::MPI::this_mpi_process(communicator())
+               : 0;
+    }
+
+
+    unsigned int
+    n_ranks()
+    {
+      return Utilities::MPI::job_supports_mpi()
+               ? Utilities::MPI::n_mpi_processes(communicator())
+               : 1;
+    }
+
+
+    double
+    peak_memory_mb()
+    {
+      Utilities::System::MemoryStats stats;
+      Utilities::System::get_memory_stats(stats);
+      const double mb = stats.VmHWM / 1024.;
+      return n_ranks() == 1 ? mb : Utilities::MPI::max(mb, communicator());
+    }
+
+
+    unsigned int
+    sum(const unsigned int value)
+    {
+      return n_ranks() == 1 ? value
+                            : Utilities::MPI::sum(value, communicator());
+    }
+
+
+    void
+    sum(Vector<double> &v)
+    {
+      if (n_ranks() == 1 || v.size() == 0)
+        return;
+      const int ierr = MPI_Allreduce(MPI_IN_PLACE,
+                                     v.data(),
+                                     static_cast<int>(v.size()),
+                                     MPI_DOUBLE,
+                                     MPI_SUM,
+                                     communicator());
+      AssertThrowMPI(ierr);
+    }
+
+
+    void
+    sum(SparseMatrix<double> &matrix)
+    {
+      if (n_ranks() == 1)
+        return;
+      Vector<double> values(matrix.n_nonzero_elements());
+      std::size_t    k = 0;
+      for (const auto &entry : matrix)
+        values[k++] = entry.value();
+      sum(values);
+      k = 0;
+      for (auto entry = matrix.begin(); entry != matrix.end(); ++entry)
+        entry->value() = values[k++];
+    }
+
+
+    std::string
+    broadcast(const std::string &text)
+    {
+      if (n_ranks() == 1)
+        return text;
+      return Utilities::MPI::broadcast(communicator(), text, 0);
+    }
+
+
+    std::string
+    on_root(const std::function<std::string()> &work)
+    {
+      if (n_ranks() == 1)
+        return work();
+      // The first character says what came: 't' text, 'i' an InputError
+      // (file, entry and expectation separated by NUL), 's' an
+      // interruption.
+      if (is_root())
+        {
+          std::string text;
+          try
+            {
+              text = work();
+            }
+          catch (const InputError &e)
+            {
+              broadcast('i' + e.file + '\0' + e.entry + '\0' + e.expected);
+              throw;
+            }
+          catch (const Interrupted &e)
+            {
+              broadcast("s");
+              throw;
+            }
+          broadcast('t' + text);
+          return text;
+        }
+      const std::string message = broadcast("");
+      if (message[0] == 'i')
+        {
+          const std::size_t a = message.find('\0', 1);
+          const std::size_t b = message.find('\0', a + 1);
+          throw InputError(message.substr(1, a - 1),
+                           message.substr(a + 1, b - a - 1),
+                           message.substr(b + 1));
+        }
+      if (message[0] == 's')
+        throw Interrupted("on rank 0");
+      return message.substr(1);
+    }
+
+
+    void
+    abort_all(const int status)
+    {
+      if (n_ranks() == 1)
+        return;
+      std::cerr.flush();
+      MPI_Abort(communicator(), status);
+    }
+
+
+    void
+    share_from_owners(
+      const std::vector<unsigned int>                       &owner,
+      const std::size_t                                      bytes,
+      const std::function<void(unsigned int, char *)>       &pack,
+      const std::function<void(unsigned int, const char *)> &unpack)
+    {
+      const unsigned int n = n_ranks();
+      if (n == 1)
+        return;
+      const unsigned int me = rank();
+      std::vector<int>   counts(n, 0), offsets(n, 0);
+      for (const unsigned int r : owner)
+        counts[r] += static_cast<int>(bytes);
+      for (unsigned int r = 1; r < n; ++r)
+        offsets[r] = offsets[r - 1] + counts[r - 1];
+      std::vector<char> mine(counts[me]), all(offsets[n - 1] + counts[n - 1]);
+      std::size_t       at = 0;
+      for (unsigned int i = 0; i < owner.size(); ++i)
+        if (owner[i] == me)
+          {
+            pack(i, mine.data() + at);
+            at += bytes;
+          }
+      const int ierr = MPI_Allgatherv(mine.data(),
+                                      counts[me],
+                                      MPI_BYTE,
+                                      all.data(),
+                                      counts.data(),
+                                      offsets.data(),
+                                      MPI_BYTE,
+                                      communicator());
+      AssertThrowMPI(ierr);
+      std::vector<std::size_t> next(offsets.begin(), offsets.end());
+      for (unsigned int i = 0; i < owner.size(); ++i)
+        {
+          if (owner[i] != me)
+            unpack(i, all.data() + next[owner[i]]);
+          next[owner[i]] += bytes;
+        }
+    }
+  } // namespace mpi
+} // namespace thinlayer
