@@ -1,0 +1,165 @@
+// Truths checked for the parallel room (thinlayer::mpi, partition_cells()),
+// run on three ranks:
+// 1. The partition gives every cell one rank, the same on every rank, and
+//    each rank a share within 20% of an equal one; on one rank every cell
+//    is rank 0's.
+// 2. A summed vector is the exact sum of every rank's values, bit for bit
+//    the same on every rank.
+// 3. Shared items: every rank's copy of each item becomes its owner's.
+// 4. An InputError met by rank 0 in on_root() is thrown on every rank with
+//    the same file, entry and expectation; rank 0's text reaches all.
+// Each rank checks; rank 0 prints whether every rank's check held.
+#include <deal.II/base/mpi.h>
+#include <deal.II/grid/grid_generator.h>
+
+#include <thinlayer/base/input_error.h>
+#include <thinlayer/parallel/cell_partition.h>
+#include <thinlayer/parallel/mpi.h>
+
+#include <algorithm>
+#include <cstring>
+#include <iostream>
+#include <sstream>
+
+#include "../common/truths.h"
+
+using namespace thinlayer;
+
+namespace
+{
+  /// Whether @p holds on every rank, printed by rank 0.
+  void
+  expect_everywhere(const bool holds, const std::string &what)
+  {
+    const bool all =
+      Utilities::MPI::min(holds ? 1 : 0, mpi::communicator()) == 1;
+    if (mpi::is_root())
+      truths::expect(all, what);
+    else
+      truths::failures += all ? 0 : 1;
+  }
+} // namespace
+
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi_session(argc, argv, 1);
+  const unsigned int               n = mpi::n_ranks(), me = mpi::rank();
+  if (mpi::is_root())
+    std::cout << "ranks: " << n << '\n';
+
+  if (mpi::is_root())
+    std::cout << "1. Partition\n";
+  {
+    Triangulation<2> tria;
+    GridGenerator::subdivided_hyper_cube(tria, 12);
+    const CellPartition       partition = partition_cells(tria, n, me);
+    std::vector<unsigned int> count(n, 0);
+    bool                      valid = partition.owner.size() == 144;
+    for (const unsigned int r : partition.owner)
+      if (r < n)
+        ++count[r];
+      else
+        valid = false;
+    expect_everywhere(valid, "every cell has one rank of the run");
+    const std::vector<unsigned int> roots =
+      Utilities::MPI::broadcast(mpi::communicator(), partition.owner, 0);
+    expect_everywhere(roots == partition.owner, "the same on every rank");
+    const double equal = 144. / n;
+    expect_everywhere(*std::min_element(count.begin(), count.end()) >=
+                          0.8 * equal &&
+                        *std::max_element(count.begin(), count.end()) <=
+                          1.2 * equal,
+                      "every rank's share within 20% of an equal one");
+    expect_everywhere(partition.owned_cells().size() == count[me],
+                      "owned_cells() lists this rank's cells");
+    const CellPartition one = partition_cells(tria, 1, 0);
+    expect_everywhere(std::all_of(one.owner.begin(),
+                                  one.owner.end(),
+                                  [](const unsigned int r) { return r == 0; }),
+                      "on one rank, every cell is rank 0's");
+  }
+
+  if (mpi::is_root())
+    std::cout << "2. Sums\n";
+  {
+    Vector<double> v(1000);
+    for (unsigned int i = 0; i < v.size(); ++i)
+      v[i] = (me + 1) * 0.1 * (i + 1);
+    mpi::sum(v);
+    bool exact = true;
+    for (unsigned int i = 0; i < v.size(); ++i)
+      {
+        double expected = 0;
+        for (unsigned int r = 0; r < n; ++r)
+          expected += (r + 1) * 0.1 * (i + 1);
+        exact = exact && std::abs(v[i] - expected) <= 1e-12 * expected;
+      }
+    expect_everywhere(exact, "the sum of every rank's values (to 1e-12)");
+    const Vector<double> roots =
+      Utilities::MPI::broadcast(mpi::communicator(), v, 0);
+    bool same = true;
+    for (unsigned int i = 0; i < v.size(); ++i)
+      same = same && roots[i] == v[i];
+    expect_everywhere(same, "bit for bit the same on every rank");
+    expect_everywhere(mpi::sum(me + 1) == n * (n + 1) / 2,
+                      "counts summed exactly");
+  }
+
+  if (mpi::is_root())
+    std::cout << "3. Shared items\n";
+  {
+    const unsigned int        n_items = 50;
+    std::vector<unsigned int> owner(n_items);
+    std::vector<double>       items(2 * n_items, -1.);
+    for (unsigned int i = 0; i < n_items; ++i)
+      {
+        owner[i] = (7 * i) % n;
+        if (owner[i] == me)
+          items[2 * i] = items[2 * i + 1] = 100. * i + owner[i];
+      }
+    mpi::share_from_owners(
+      owner,
+      2 * sizeof(double),
+      [&](const unsigned int i, char *buffer) {
+        std::memcpy(buffer, &items[2 * i], 2 * sizeof(double));
+      },
+      [&](const unsigned int i, const char *buffer) {
+        std::memcpy(&items[2 * i], buffer, 2 * sizeof(double));
+      });
+    bool owners = true;
+    for (unsigned int i = 0; i < n_items; ++i)
+      owners = owners && items[2 * i] == 100. * i + owner[i] &&
+               items[2 * i + 1] == items[2 * i];
+    expect_everywhere(owners, "every copy is its owner's");
+  }
+
+  if (mpi::is_root())
+    std::cout << "4. Work on rank 0\n";
+  {
+    bool same_error = false;
+    try
+      {
+        mpi::on_root([]() -> std::string {
+          throw InputError("scene.prm", "Mesh/File", "a .geo");
+        });
+      }
+    catch (const InputError &e)
+      {
+        same_error = e.file == "scene.prm" && e.entry == "Mesh/File" &&
+                     e.expected == "a .geo";
+      }
+    expect_everywhere(same_error,
+                      "rank 0's InputError is thrown on every rank");
+    const std::string text =
+      mpi::on_root([]() { return std::string("staging-1"); });
+    expect_everywhere(text == "staging-1", "rank 0's text reaches every rank");
+  }
+
+  const int failures =
+    Utilities::MPI::max(truths::failures, mpi::communicator());
+  if (mpi::is_root())
+    return truths::conclude();
+  return failures == 0 ? 0 : 1;
+}
