@@ -32,7 +32,7 @@ build="$top/build"
 # already uses both cores. The reference outputs of the tests were made with
 # it: a failed (non-converged) step's state depends on rounding.
 packages=(g++ make cmake perl libdeal.ii-dev gmsh numdiff python3 python3-matplotlib ccache libopenblas0-serial
-          nlohmann-json3-dev valgrind procps)
+          nlohmann-json3-dev valgrind procps openmpi-bin)
 # The tests also open the reproduction report in a real browser.
 if [ "$mode" = test ]; then packages+=(chromium); fi
 

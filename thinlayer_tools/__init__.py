@@ -25,6 +25,18 @@ THINLAYER = os.environ.get("THINLAYER", os.path.join(TOP, "build", "thinlayer"))
 """The thinlayer executable (the Release build unless $THINLAYER names another)."""
 
 
+def mpirun(ranks):
+    """The command prefix that runs thinlayer on RANKS MPI ranks: nothing
+    for one (no mpirun at all), else Open MPI's mpirun, allowed more ranks
+    than cores and, as root (containers, CI), to run as root."""
+    if ranks == 1:
+        return []
+    prefix = ["mpirun", "-np", str(ranks), "--oversubscribe"]
+    if os.geteuid() == 0:
+        prefix.append("--allow-run-as-root")
+    return prefix
+
+
 def run_module(module, arguments, **options):
     """Run `python3 -m MODULE ARGUMENTS` (a plot, a benchmark) as a child
     process that imports this package as its parent does; OPTIONS go to

@@ -21,8 +21,8 @@ import subprocess
 import sys
 import time
 
-from thinlayer_tools import THINLAYER, TOP, run_module
-from thinlayer_tools.report import case1, case4, footings, methods, page
+from thinlayer_tools import THINLAYER, TOP, mpirun, run_module
+from thinlayer_tools.report import case1, case4, footings, methods, page, parallel
 from thinlayer_tools.report.runs import DEFAULT, PAPER, Runs
 
 ALL_ALPHAS = "alpha = 10, 20, 30, 40, 45, 50, 60, 70, 80"
@@ -72,6 +72,10 @@ def run_list(quick):
         ("case4-zero", "case4-rough-wall-zero-thickness", ("Output/Write VTU=false",)),
     ]
     runs.append(("circular-footing-rigid", "circular-footing-rigid", ("Output/Write VTU=false",)))
+    # The same scenes on several MPI ranks (the fourth field), for the
+    # section on ranks: every kinematics and element kind, each method kind.
+    runs += [(name + "-%dranks" % ranks, scene, overrides + ("Output/Write VTU=false",), ranks)
+             for name, scene, overrides, ranks in parallel.RUNS]
     for material, scene in (("adhesive", "case1-stability-map"),
                             ("frictional", "case1-frictional-stability-map")):
         for method in (("viscoplastic", "default") if quick else METHOD_NAMES):
@@ -83,9 +87,10 @@ def run_all(runs, directory):
     """Each run with a progress line; a run that ends in an error stops the
     reproduction (non-convergence is a result, not an error)."""
     start = time.time()
-    for k, (name, scene, overrides) in enumerate(runs, 1):
+    for k, (name, scene, overrides, *ranks) in enumerate(runs, 1):
         print("[%2d/%d] %-28s %s" % (k, len(runs), name, "prm/%s.prm" % scene), end="", flush=True)
-        command = [THINLAYER, os.path.join(TOP, "prm", scene + ".prm"),
+        command = mpirun(ranks[0] if ranks else 1) + [
+                   THINLAYER, os.path.join(TOP, "prm", scene + ".prm"),
                    "-s", "Output/Directory=" + os.path.join(directory, "runs", name),
                    "-s", "Output/Print timing=false"]
         for entry in overrides:
@@ -113,7 +118,8 @@ def run_benchmark(directory, quick):
 
 def sections(runs, quick):
     return (case1.sections(runs, quick) + footings.sections(runs, quick)
-            + case4.sections(runs, quick) + methods.sections(runs, quick))
+            + case4.sections(runs, quick) + methods.sections(runs, quick)
+            + parallel.sections(runs, quick))
 
 
 def main():
