@@ -3,6 +3,7 @@
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/sparsity_tools.h>
 
 #include <thinlayer/analysis/analysis.h>
 #include <thinlayer/analysis/rigid_body_modes.h>
@@ -86,6 +87,11 @@ namespace thinlayer
   Analysis<dim>::setup_dofs_and_constraints()
   {
     dof_handler.distribute_dofs(fe);
+    if (mpi::n_ranks() > 1)
+      {
+        partition      = partition_cells(tria, mpi::n_ranks(), mpi::rank());
+        owned_per_rank = number_dofs_by_rank(dof_handler, partition);
+      }
     dof_component.resize(dof_handler.n_dofs());
     for (unsigned int c = 0; c < kinematics.n_components(); ++c)
       {
@@ -126,18 +132,32 @@ namespace thinlayer
            ExcMessage("The first element group must be the continuum."));
     // On many ranks, each runs the point rules of its part of the mesh.
     if (mpi::n_ranks() > 1)
-      {
-        const CellPartition partition =
-          partition_cells(tria, mpi::n_ranks(), mpi::rank());
-        for (const auto &group : groups)
-          group->distribute(partition);
-      }
+      for (const auto &group : groups)
+        group->distribute(partition);
 
     DynamicSparsityPattern dsp(dof_handler.n_dofs());
     for (const auto &group : groups)
       for (const auto &system : systems)
         group->add_sparsity(dsp, system->constraints);
-    sparsity.copy_from(dsp);
+    if (mpi::n_ranks() == 1)
+      sparsity.copy_from(dsp);
+    else
+      {
+        // Each rank's rows, from every rank's cells.
+        SparsityTools::distribute_sparsity_pattern(dsp,
+                                                   owned_per_rank[mpi::rank()],
+                                                   mpi::communicator(),
+                                                   complete_index_set(
+                                                     dof_handler.n_dofs()));
+        for (auto &system : systems)
+          system->distributed_stiffness =
+            std::make_unique<PETScWrappers::MPI::SparseMatrix>();
+        for (auto &system : systems)
+          system->distributed_stiffness->reinit(owned_per_rank[mpi::rank()],
+                                                owned_per_rank[mpi::rank()],
+                                                dsp,
+                                                mpi::communicator());
+      }
   }
 
 
@@ -149,8 +169,11 @@ namespace thinlayer
     for (unsigned int m = 0; m < kinematics.n_modes(); ++m)
       {
         ModeSystem &mode = *systems[m];
-        mode.stiffness.reinit(sparsity);
-        mode.condensed_stiffness.reinit(sparsity);
+        if (mpi::n_ranks() == 1)
+          {
+            mode.stiffness.reinit(sparsity);
+            mode.condensed_stiffness.reinit(sparsity);
+          }
 
         // Prescribed displacements at unit load factor; the nodes tied to
         // them (centre nodes, the axis) follow through the structural lines.
@@ -181,11 +204,44 @@ namespace thinlayer
   Analysis<dim>::assemble_stiffness()
   {
     for (unsigned int m = 0; m < kinematics.n_modes(); ++m)
-      for (const auto &group : groups)
-        group->assemble_elastic(m,
-                                systems[m]->stiffness,
-                                systems[m]->condensed_stiffness,
-                                systems[m]->constraints);
+      {
+        ModeSystem &mode = *systems[m];
+        if (mpi::n_ranks() == 1)
+          {
+            for (const auto &group : groups)
+              group->assemble_elastic(
+                m, [&](const auto &dofs, const FullMatrix<double> &matrix) {
+                  mode.stiffness.add(dofs, matrix);
+                  mode.constraints.distribute_local_to_global(
+                    matrix, dofs, mode.condensed_stiffness);
+                });
+            mode.stiffness.vmult(mode.unit_rhs,
+                                 mode.unit_prescribed_displacement);
+          }
+        else
+          {
+            // The raw stiffness is not kept: each rank adds its cells'
+            // K u_prescribed.
+            Vector<double> u, Ku;
+            for (const auto &group : groups)
+              group->assemble_elastic(
+                m, [&](const auto &dofs, const FullMatrix<double> &matrix) {
+                  mode.constraints.distribute_local_to_global(
+                    matrix, dofs, *mode.distributed_stiffness);
+                  u.reinit(dofs.size());
+                  Ku.reinit(dofs.size());
+                  for (unsigned int i = 0; i < dofs.size(); ++i)
+                    u[i] = mode.unit_prescribed_displacement[dofs[i]];
+                  matrix.vmult(Ku, u);
+                  for (unsigned int i = 0; i < dofs.size(); ++i)
+                    mode.unit_rhs[dofs[i]] += Ku[i];
+                });
+            mode.distributed_stiffness->compress(VectorOperation::add);
+            mpi::sum(mode.unit_rhs);
+          }
+        // f - K u_prescribed.
+        mode.unit_rhs.sadd(-1, 1, mode.unit_load);
+      }
   }
 
 
@@ -209,10 +265,15 @@ namespace thinlayer
     std::vector<Point<dim>> points(dof_handler.n_dofs());
     DoFTools::map_dofs_to_support_points(mapping, dof_handler, points);
     const std::string motion =
-      free_rigid_body_motion(points,
-                             dof_component,
-                             systems[0]->constraints,
-                             systems[0]->condensed_stiffness);
+      mpi::n_ranks() == 1
+        ? free_rigid_body_motion(points,
+                                 dof_component,
+                                 systems[0]->constraints,
+                                 systems[0]->condensed_stiffness)
+        : free_rigid_body_motion(points,
+                                 dof_component,
+                                 systems[0]->constraints,
+                                 *systems[0]->distributed_stiffness);
     if (!motion.empty())
       throw InputError(parameters.parameter_file,
                        "Boundary <id>/Constrained components",
@@ -230,11 +291,18 @@ namespace thinlayer
     for (unsigned int m = 0; m < kinematics.n_modes(); ++m)
       {
         ModeSystem &mode = *systems[m];
-        mode.stiffness.vmult(mode.unit_rhs, mode.unit_prescribed_displacement);
-        mode.unit_rhs.sadd(-1, 1, mode.unit_load);
         try
           {
-            mode.factorisation.factorize(mode.condensed_stiffness);
+            if (mpi::n_ranks() == 1)
+              mode.factorisation.factorize(mode.condensed_stiffness);
+            else
+              {
+                mode.distributed_factorisation =
+                  std::make_unique<DistributedFactorisation>(
+                    /*symmetric=*/true);
+                mode.distributed_factorisation->factorize(
+                  *mode.distributed_stiffness, owned_per_rank);
+              }
           }
         catch (const std::exception &)
           {
@@ -253,7 +321,7 @@ namespace thinlayer
           {
             work = system->unit_rhs;
             system->constraints.condense(work);
-            system->factorisation.solve(work);
+            system->solve(work);
           }
         times.push_back(timer.wall_time());
       }
@@ -411,7 +479,7 @@ namespace thinlayer
         load *= dlambda;
         systems[m]->constraints.condense(load);
         elastic_increment = load;
-        systems[m]->factorisation.solve(elastic_increment);
+        systems[m]->solve(elastic_increment);
         elastic_work += load * elastic_increment;
         work += load * increment_vectors[m];
       }

@@ -56,27 +56,39 @@ namespace thinlayer
     DynamicSparsityPattern          &dsp,
     const AffineConstraints<double> &constraints) const
   {
-    DoFTools::make_sparsity_pattern(dof_handler,
-                                    dsp,
-                                    constraints,
-                                    /*keep_constrained_dofs=*/true);
+    if (cell_owner.empty())
+      DoFTools::make_sparsity_pattern(dof_handler,
+                                      dsp,
+                                      constraints,
+                                      /*keep_constrained_dofs=*/true);
+    else
+      {
+        std::vector<types::global_dof_index> dofs(
+          strain_operator.dofs_per_cell());
+        for (const unsigned int c : point_loop.get_cells())
+          {
+            std::copy(strain_operator.cell_dofs(c),
+                      strain_operator.cell_dofs(c) + dofs.size(),
+                      dofs.begin());
+            constraints.add_entries_local_to_global(dofs,
+                                                    dsp,
+                                                    /*keep_constrained=*/true);
+          }
+      }
   }
 
 
   template <int dim>
   void
-  ContinuumCells<dim>::assemble_elastic(
-    const unsigned int               m,
-    SparseMatrix<double>            &stiffness,
-    SparseMatrix<double>            &condensed,
-    const AffineConstraints<double> &constraints) const
+  ContinuumCells<dim>::assemble_elastic(const unsigned int    m,
+                                        const CellMatrixSink &add) const
   {
     const unsigned int                   n = strain_operator.dofs_per_cell();
     FullMatrix<double>                   cell_matrix(n, n);
     std::vector<types::global_dof_index> dofs(n);
     std::vector<SymmetricTensor<2, 3>>   strain(n), stress(n);
 
-    for (unsigned int c = 0; c < cell_law.size(); ++c)
+    for (const unsigned int c : point_loop.get_cells())
       {
         cell_matrix                    = 0;
         const SymmetricTensor<4, 3> &D = cell_law[c]->elasticity();
@@ -102,8 +114,7 @@ namespace thinlayer
         std::copy(strain_operator.cell_dofs(c),
                   strain_operator.cell_dofs(c) + n,
                   dofs.begin());
-        stiffness.add(dofs, cell_matrix);
-        constraints.distribute_local_to_global(cell_matrix, dofs, condensed);
+        add(dofs, cell_matrix);
       }
   }
 

@@ -254,19 +254,17 @@ namespace thinlayer
     DynamicSparsityPattern          &dsp,
     const AffineConstraints<double> &constraints) const
   {
-    for (const Element &element : elements)
-      constraints.add_entries_local_to_global(element.dofs,
-                                              dsp,
-                                              /*keep_constrained=*/true);
+    for (unsigned int k = 0; k < elements.size(); ++k)
+      if (element_owner.empty() || element_owner[k] == rank)
+        constraints.add_entries_local_to_global(elements[k].dofs,
+                                                dsp,
+                                                /*keep_constrained=*/true);
   }
 
 
   void
-  InterfaceElements::assemble_elastic(
-    const unsigned int               m,
-    SparseMatrix<double>            &stiffness,
-    SparseMatrix<double>            &condensed,
-    const AffineConstraints<double> &constraints) const
+  InterfaceElements::assemble_elastic(const unsigned int    m,
+                                      const CellMatrixSink &add) const
   {
     // K_m = int (c1 G1^T K G1 + c2 G2^T K G2) w: the in-plane components
     // with T1, the out-of-plane one with T2, integrated exactly over the
@@ -298,12 +296,8 @@ namespace thinlayer
               A(i, j) += point.weight * c[a] * G(a, i) * K[a][a] * G(a, j);
       }
     for (unsigned int k = 0; k < elements.size(); ++k)
-      {
-        stiffness.add(elements[k].dofs, matrices[k]);
-        constraints.distribute_local_to_global(matrices[k],
-                                               elements[k].dofs,
-                                               condensed);
-      }
+      if (element_owner.empty() || element_owner[k] == rank)
+        add(elements[k].dofs, matrices[k]);
   }
 
 

@@ -16,6 +16,7 @@
 #include <thinlayer/discretisation/mode_vectors.h>
 #include <thinlayer/elements/continuum_cells.h>
 #include <thinlayer/elements/element_group.h>
+#include <thinlayer/parallel/cell_partition.h>
 #include <thinlayer/parameters/parameters.h>
 
 #include <memory>
@@ -354,6 +355,10 @@ namespace thinlayer
     ModeVectors solution_vectors;
     ModeVectors increment_vectors;
     ModeVectors internal_force_vectors;
+    /// On many ranks: the rank of every cell, and the DoFs each rank owns
+    /// (contiguous, see number_dofs_by_rank()).
+    CellPartition         partition;
+    std::vector<IndexSet> owned_per_rank;
     /// On many ranks: this rank's part of a body-load change, summed.
     ModeVectors rank_loads;
     /// Whether every rank's point states are the owners' (see
@@ -394,7 +399,7 @@ namespace thinlayer
   inline void
   Analysis<dim>::elastic_solve(const unsigned int m, Vector<double> &rhs)
   {
-    systems[m]->factorisation.solve(rhs);
+    systems[m]->solve(rhs);
   }
 
 

@@ -2,10 +2,14 @@
 #define thinlayer_analysis_mode_system_h
 
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/petsc_sparse_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <thinlayer/solvers/distributed_factorisation.h>
 #include <thinlayer/solvers/factorised_stiffness.h>
+
+#include <memory>
 
 namespace thinlayer
 {
@@ -18,6 +22,12 @@ namespace thinlayer
    * unit load factor. Fixed once the analysis is set up; the state (the
    * displacements and forces of every mode) is the Analysis's, and what a
    * solution method iterates with is the method's.
+   *
+   * On one rank the stiffness is a SparseMatrix, factorised by CHOLMOD or
+   * UMFPACK. On several, the condensed stiffness is a PETSc matrix
+   * distributed by rows and factorised by MUMPS (DistributedFactorisation),
+   * and the raw stiffness is not kept: each rank adds its cells' part of
+   * K u_prescribed to unit_rhs while assembling.
    */
   struct ModeSystem
   {
@@ -36,6 +46,22 @@ namespace thinlayer
     Vector<double>            unit_load;
     /// f - K u_prescribed at unit load factor.
     Vector<double> unit_rhs;
+
+    /// On several ranks: the condensed stiffness, and its factors (made
+    /// only there: a PETSc object needs PETSc started, which one rank
+    /// without mpirun never does).
+    std::unique_ptr<PETScWrappers::MPI::SparseMatrix> distributed_stiffness;
+    std::unique_ptr<DistributedFactorisation>         distributed_factorisation;
+
+    /// Replace @p rhs (condensed) by the solution with the elastic factors.
+    void
+    solve(Vector<double> &rhs)
+    {
+      if (distributed_factorisation)
+        distributed_factorisation->solve(rhs);
+      else
+        factorisation.solve(rhs);
+    }
   };
 } // namespace thinlayer
 

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/point.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/petsc_sparse_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
 
 #include <string>
@@ -41,6 +42,15 @@ namespace thinlayer
                          const std::vector<unsigned int> &dof_component,
                          const AffineConstraints<double> &constraints,
                          const SparseMatrix<double>      &condensed_stiffness);
+
+  /// The same with the condensed stiffness distributed over the ranks by
+  /// rows (a collective call; the answer on every rank).
+  std::string
+  free_rigid_body_motion(
+    const std::vector<Point<2>>            &support_points,
+    const std::vector<unsigned int>        &dof_component,
+    const AffineConstraints<double>        &constraints,
+    const PETScWrappers::MPI::SparseMatrix &condensed_stiffness);
 } // namespace thinlayer
 
 #endif

@@ -6,6 +6,7 @@
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
 
 #include <thinlayer/discretisation/kinematics.h>
@@ -14,6 +15,7 @@
 #include <thinlayer/parallel/cell_partition.h>
 
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <string>
@@ -45,6 +47,12 @@ namespace thinlayer
     }
   };
 
+
+  /// What receives the elastic matrix of a cell or element: its DoFs and
+  /// the matrix.
+  using CellMatrixSink =
+    std::function<void(const std::vector<types::global_dof_index> &,
+                       const FullMatrix<double> &)>;
 
   /// A profile along a line of an element group, with the name of its
   /// output files (e.g. "interface-curve-3").
@@ -87,19 +95,17 @@ namespace thinlayer
     /// @name The elastic system
     /// @{
 
-    /// Add the couplings of the group's DoFs to @p dsp, with the fill-in
-    /// of @p constraints.
+    /// Add the couplings of the group's DoFs (of the cells and elements
+    /// this rank owns) to @p dsp, with the fill-in of @p constraints.
     virtual void
     add_sparsity(DynamicSparsityPattern          &dsp,
                  const AffineConstraints<double> &constraints) const = 0;
 
-    /// Add the elastic stiffness of mode @p m to @p stiffness (raw) and to
-    /// @p condensed (with @p constraints).
+    /// Hand the elastic matrix of mode @p m of every cell or element this
+    /// rank owns, in order, to @p add with its DoFs: the analysis puts
+    /// them where its linear system wants them.
     virtual void
-    assemble_elastic(const unsigned int               m,
-                     SparseMatrix<double>            &stiffness,
-                     SparseMatrix<double>            &condensed,
-                     const AffineConstraints<double> &constraints) const = 0;
+    assemble_elastic(const unsigned int m, const CellMatrixSink &add) const = 0;
 
     /// Whether every flow rule of the group is associated (its consistent
     /// tangent symmetric).

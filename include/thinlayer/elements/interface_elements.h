@@ -101,11 +101,8 @@ namespace thinlayer
                  const AffineConstraints<double> &constraints) const override;
 
     void
-    assemble_elastic(
-      const unsigned int               m,
-      SparseMatrix<double>            &stiffness,
-      SparseMatrix<double>            &condensed,
-      const AffineConstraints<double> &constraints) const override;
+    assemble_elastic(const unsigned int    m,
+                     const CellMatrixSink &add) const override;
 
     bool
     all_associated() const override;

@@ -1,6 +1,8 @@
 #ifndef thinlayer_parallel_cell_partition_h
 #define thinlayer_parallel_cell_partition_h
 
+#include <deal.II/base/index_set.h>
+#include <deal.II/dofs/dof_handler.h>
 #include <deal.II/grid/tria.h>
 
 #include <vector>
@@ -18,8 +20,9 @@ namespace thinlayer
   {
     /// The rank of every active cell.
     std::vector<unsigned int> owner;
-    /// This process's rank.
-    unsigned int rank = 0;
+    /// This process's rank, and the number of ranks.
+    unsigned int rank    = 0;
+    unsigned int n_ranks = 1;
 
     /// This rank's cells, ascending.
     std::vector<unsigned int>
@@ -38,6 +41,18 @@ namespace thinlayer
   partition_cells(const Triangulation<dim> &tria,
                   const unsigned int        n_ranks,
                   const unsigned int        rank);
+
+
+  /**
+   * Renumber the DoFs of @p dof_handler so that each rank's are
+   * contiguous, in rank order, as PETSc's distributed matrices ask: a DoF
+   * goes to the lowest rank among the cells it is on, and keeps its order
+   * among that rank's. Returns the DoFs of every rank.
+   */
+  template <int dim>
+  std::vector<IndexSet>
+  number_dofs_by_rank(DoFHandler<dim>     &dof_handler,
+                      const CellPartition &partition);
 } // namespace thinlayer
 
 #endif

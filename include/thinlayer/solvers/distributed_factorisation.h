@@ -1,0 +1,60 @@
+#ifndef thinlayer_solvers_distributed_factorisation_h
+#define thinlayer_solvers_distributed_factorisation_h
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/lac/petsc_sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <memory>
+#include <vector>
+
+namespace thinlayer
+{
+  using namespace dealii;
+
+  /**
+   * A stiffness matrix distributed over the MPI ranks by rows (each rank
+   * its contiguous range of DoFs), factorised once by MUMPS through PETSc,
+   * and then used for every forward/backward substitution: the direct
+   * solver of runs on several ranks, whose factor is split over them as
+   * the matrix is.
+   *
+   * The right-hand sides and solutions are whole vectors on every rank
+   * (the state every rank holds): a solve takes each rank's rows of the
+   * right-hand side and gives every rank the whole solution.
+   */
+  class DistributedFactorisation
+  {
+  public:
+    /**
+     * @p symmetric: the matrix is symmetric positive definite (the elastic
+     * stiffness, an associated tangent), factorised as L D L^T; else LU.
+     */
+    explicit DistributedFactorisation(const bool symmetric);
+
+    ~DistributedFactorisation();
+
+    /**
+     * Factorise @p matrix, whose rows are distributed as
+     * @p owned_per_rank says. Throws std::runtime_error if MUMPS finds it
+     * singular (on any rank: the answer is the same on all).
+     */
+    void
+    factorize(const PETScWrappers::MPI::SparseMatrix &matrix,
+              const std::vector<IndexSet>            &owned_per_rank);
+
+    /// Replace @p rhs (whole, the same on every rank) by the solution of
+    /// K x = rhs (whole, on every rank).
+    void
+    solve(Vector<double> &rhs) const;
+
+  private:
+    const bool symmetric;
+    /// PETSc's solver state, behind a pointer to keep its headers out.
+    struct Solver;
+    std::unique_ptr<Solver> solver;
+    std::vector<IndexSet>   owned;
+  };
+} // namespace thinlayer
+
+#endif
