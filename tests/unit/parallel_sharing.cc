@@ -3,6 +3,8 @@
 // 1. The partition gives every cell one rank, the same on every rank, and
 //    each rank a share within 20% of an equal one; on one rank every cell
 //    is rank 0's.
+//    The DoFs numbered rank by rank: every DoF in one rank's set, the sets
+//    contiguous ranges in rank order, each DoF on a cell of its rank.
 // 2. A summed vector is the exact sum of every rank's values, bit for bit
 //    the same on every rank.
 // 3. Shared items: every rank's copy of each item becomes its owner's.
@@ -10,6 +12,9 @@
 //    the same file, entry and expectation; rank 0's text reaches all.
 // Each rank checks; rank 0 prints whether every rank's check held.
 #include <deal.II/base/mpi.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
 #include <deal.II/grid/grid_generator.h>
 
 #include <thinlayer/base/input_error.h>
@@ -74,6 +79,34 @@ main(int argc, char **argv)
                       "every rank's share within 20% of an equal one");
     expect_everywhere(partition.owned_cells().size() == count[me],
                       "owned_cells() lists this rank's cells");
+    DoFHandler<2> dof_handler(tria);
+    dof_handler.distribute_dofs(FESystem<2>(FE_Q<2>(2), 2));
+    const std::vector<IndexSet> owned =
+      number_dofs_by_rank(dof_handler, partition);
+    types::global_dof_index next       = 0;
+    bool                    contiguous = owned.size() == n;
+    for (const IndexSet &set : owned)
+      {
+        contiguous = contiguous && set.is_contiguous() &&
+                     (set.n_elements() == 0 || *set.begin() == next);
+        next += set.n_elements();
+      }
+    expect_everywhere(contiguous && next == dof_handler.n_dofs(),
+                      "the DoFs of each rank one range, in rank order");
+    std::vector<bool> on_own_cell(dof_handler.n_dofs(), false);
+    std::vector<types::global_dof_index> dofs(
+      dof_handler.get_fe().n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(dofs);
+        for (const auto i : dofs)
+          if (owned[partition.owner[cell->active_cell_index()]].is_element(i))
+            on_own_cell[i] = true;
+      }
+    expect_everywhere(std::all_of(on_own_cell.begin(),
+                                  on_own_cell.end(),
+                                  [](const bool b) { return b; }),
+                      "every DoF on a cell of its rank");
     const CellPartition one = partition_cells(tria, 1, 0);
     expect_everywhere(std::all_of(one.owner.begin(),
                                   one.owner.end(),
