@@ -10,6 +10,7 @@ iteration, and the largest peak memory of any rank (summary.json's
 peak_memory_mb_per_rank, VmHWM).
 
     /usr/bin/python3 -m benchmarks.ranks [--repeat 3] [--cells 2048,8192,32768] [--ranks 1,2]
+                                         [--methods paper,default]
 
 Writes output/benchmarks/ranks.csv and ranks.md and prints the table.
 """
@@ -20,6 +21,7 @@ import statistics
 import subprocess
 
 from thinlayer_tools import THINLAYER, TOP, mpirun
+from thinlayer_tools.report.runs import DEFAULT, PAPER
 
 OUT = os.path.join(TOP, "output", "benchmarks")
 MESHES = {
@@ -29,11 +31,11 @@ MESHES = {
 }
 METHODS = [
     ("paper's method, 7 fixed steps",
-     ("Solver/Method=viscoplastic", "Solver/Tolerance=1e-3",
+     PAPER + ("Solver/Tolerance=1e-3",
       "Loading/Load increments=0.5, 0.3, 0.1, 0.05, 0.05, 0.02, 0.02",
       "Loading/Collapse resolution=0")),
-    ("default, automatic stepping", ("Solver/Method=default", "Solver/Tolerance=1e-4",
-                                     "Loading/Collapse resolution=0.005")),
+    ("default, automatic stepping", DEFAULT + ("Solver/Tolerance=1e-4",
+                                               "Loading/Collapse resolution=0.005")),
 ]
 
 
@@ -56,14 +58,18 @@ def main():
     parser.add_argument("--repeat", type=int, default=3)
     parser.add_argument("--cells", default="2048,8192,32768")
     parser.add_argument("--ranks", default="1,2")
+    parser.add_argument("--methods", default="paper,default",
+                        help="which of the two: paper, default")
     args = parser.parse_args()
     os.makedirs(OUT, exist_ok=True)
     rows = []
     for cells in (int(c) for c in args.cells.split(",")):
-        for label, entries in METHODS:
+        for k, (label, entries) in enumerate(METHODS):
+            if ("paper" if k == 0 else "default") not in args.methods.split(","):
+                continue
             one = None
             for ranks in (int(r) for r in args.ranks.split(",")):
-                directory = os.path.join(OUT, "runs", "ranks-%d-%d-%s" % (cells, ranks, label[:5]))
+                directory = os.path.join(OUT, "runs", "ranks-%d-%d-%d" % (cells, ranks, k))
                 runs = [run_once(ranks, MESHES[cells], entries, directory)
                         for _ in range(args.repeat)]
                 s = runs[-1]

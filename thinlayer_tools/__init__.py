@@ -28,10 +28,11 @@ THINLAYER = os.environ.get("THINLAYER", os.path.join(TOP, "build", "thinlayer"))
 def mpirun(ranks):
     """The command prefix that runs thinlayer on RANKS MPI ranks: nothing
     for one (no mpirun at all), else Open MPI's mpirun, allowed more ranks
-    than cores and, as root (containers, CI), to run as root."""
+    than cores (waiting ranks then yield their core instead of spinning)
+    and, as root (containers, CI), to run as root."""
     if ranks == 1:
         return []
-    prefix = ["mpirun", "-np", str(ranks), "--oversubscribe"]
+    prefix = ["mpirun", "-np", str(ranks), "--oversubscribe", "--mca", "mpi_yield_when_idle", "1"]
     if os.geteuid() == 0:
         prefix.append("--allow-run-as-root")
     return prefix

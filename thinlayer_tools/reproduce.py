@@ -74,6 +74,7 @@ def run_list(quick):
     runs.append(("circular-footing-rigid", "circular-footing-rigid", ("Output/Write VTU=false",)))
     # The same scenes on several MPI ranks (the fourth field), for the
     # section on ranks: every kinematics and element kind, each method kind.
+    runs += parallel.ONE_RANK_RUNS
     runs += [(name + "-%dranks" % ranks, scene, overrides + ("Output/Write VTU=false",), ranks)
              for name, scene, overrides, ranks in parallel.RUNS]
     for material, scene in (("adhesive", "case1-stability-map"),
