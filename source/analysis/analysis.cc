@@ -191,11 +191,11 @@ namespace thinlayer
                                            mode.unit_load);
         mode.unit_rhs.reinit(n);
       }
-    for (ModeVectors *vectors : {&solution_vectors,
-                                 &increment_vectors,
-                                 &internal_force_vectors,
-                                 &rank_loads})
+    for (ModeVectors *vectors :
+         {&solution_vectors, &increment_vectors, &internal_force_vectors})
       vectors->assign(kinematics.n_modes(), Vector<double>(n));
+    if (mpi::n_ranks() > 1)
+      rank_loads.assign(kinematics.n_modes(), Vector<double>(n));
   }
 
 

@@ -36,11 +36,18 @@ namespace thinlayer
     const PETScWrappers::MPI::SparseMatrix &matrix,
     const std::vector<IndexSet>            &owned_per_rank)
   {
-    owned               = owned_per_rank;
     solver              = std::make_unique<Solver>();
     const MPI_Comm comm = mpi::communicator();
-    solver->rhs.reinit(owned[mpi::rank()], comm);
-    solver->solution.reinit(owned[mpi::rank()], comm);
+    solver->rhs.reinit(owned_per_rank[mpi::rank()], comm);
+    solver->solution.reinit(owned_per_rank[mpi::rank()], comm);
+    // The rows are contiguous and in rank order (number_dofs_by_rank()).
+    counts.assign(owned_per_rank.size(), 0);
+    offsets.assign(owned_per_rank.size(), 0);
+    for (unsigned int r = 0; r < owned_per_rank.size(); ++r)
+      {
+        counts[r]  = static_cast<int>(owned_per_rank[r].n_elements());
+        offsets[r] = r > 0 ? offsets[r - 1] + counts[r - 1] : 0;
+      }
 
     Mat A = matrix;
     if (symmetric)
@@ -74,34 +81,22 @@ namespace thinlayer
   DistributedFactorisation::solve(Vector<double> &rhs) const
   {
     Assert(solver, ExcMessage("factorize() first."));
-    const IndexSet &mine = owned[mpi::rank()];
-    const auto      range =
-      mine.n_elements() > 0
-             ? std::make_pair(*mine.begin(), *mine.begin() + mine.n_elements())
-             : std::make_pair(types::global_dof_index(0),
-                         types::global_dof_index(0));
+    const unsigned int me    = mpi::rank();
+    const std::size_t  first = offsets[me];
     {
       PetscScalar *b;
       VecGetArray(solver->rhs, &b);
-      for (auto i = range.first; i < range.second; ++i)
-        b[i - range.first] = rhs[i];
+      for (int i = 0; i < counts[me]; ++i)
+        b[i] = rhs[first + i];
       VecRestoreArray(solver->rhs, &b);
     }
     KSPSolve(solver->ksp, solver->rhs, solver->solution);
 
     // Every rank's rows of the solution, to every rank.
-    std::vector<int> counts(owned.size()), offsets(owned.size());
-    for (unsigned int r = 0; r < owned.size(); ++r)
-      {
-        counts[r]  = static_cast<int>(owned[r].n_elements());
-        offsets[r] = owned[r].n_elements() > 0
-                       ? static_cast<int>(*owned[r].begin())
-                       : (r > 0 ? offsets[r - 1] + counts[r - 1] : 0);
-      }
     const PetscScalar *x;
     VecGetArrayRead(solver->solution, &x);
     const int ierr = MPI_Allgatherv(x,
-                                    counts[mpi::rank()],
+                                    counts[me],
                                     MPI_DOUBLE,
                                     rhs.data(),
                                     counts.data(),

@@ -42,9 +42,10 @@ namespace thinlayer
    *   the points. The analysis loops over them.
    *
    * On many ranks (thinlayer::mpi) every rank holds the whole state and
-   * factorisation and follows the same steps; the point rules are split
-   * by cells (partition_cells()), and the forces and counts they produce
-   * are summed over the ranks before anyone reads them.
+   * follows the same steps; the point rules and the elastic assembly are
+   * split by cells (partition_cells()), the forces and counts they produce
+   * are summed over the ranks before anyone reads them, and the elastic
+   * stiffness is distributed by rows and factorised by MUMPS (ModeSystem).
    *
    * A solution method (owned by the stepping, see StepSolver) sets the
    * step increments and calls the point rules; the stepping then ends the

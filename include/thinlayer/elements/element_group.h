@@ -76,13 +76,13 @@ namespace thinlayer
    * Every group works on the DoFs of the analysis's one DoFHandler, one
    * copy per mode (ModeVectors), and holds its own point states and laws.
    *
-   * On many ranks (thinlayer::mpi) the point rules and Newton's tangent
-   * run only at the points this rank owns (distribute()); what they add
-   * to vectors and matrices is summed over the ranks by the Analysis, and
+   * On many ranks (thinlayer::mpi) the sparsity, the elastic matrices,
+   * the point rules and Newton's tangent are of the cells and elements
+   * this rank owns (distribute()); what they add to vectors and matrices
+   * is summed or distributed over the ranks by the Analysis, and
    * share_states() gives every rank the owners' states at the end of an
-   * attempt. The elastic system, the internal forces of the current
-   * stresses, accept(), reject() and the state check run everywhere on
-   * every rank.
+   * attempt. The internal forces of the current stresses, accept(),
+   * reject() and the state check run everywhere on every rank.
    *
    * To add a family: derive from this class in a new file pair under
    * elements/, and construct it in create_element_groups().

@@ -5,7 +5,6 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
-
 #include <cstddef>
 #include <functional>
 #include <string>

@@ -53,7 +53,9 @@ namespace thinlayer
     /// PETSc's solver state, behind a pointer to keep its headers out.
     struct Solver;
     std::unique_ptr<Solver> solver;
-    std::vector<IndexSet>   owned;
+    /// Every rank's rows: how many, and the first (for gathering the
+    /// solution).
+    std::vector<int> counts, offsets;
   };
 } // namespace thinlayer
 
