@@ -1,3 +1,4 @@
+#include <deal.II/base/utilities.h>
 #include <deal.II/numerics/data_out.h>
 
 #include <thinlayer/base/text_format.h>
@@ -84,7 +85,9 @@ namespace thinlayer
                              const double                     theta,
                              const std::vector<LayerProfile> &interfaces)
   {
-    if (!writes)
+    // On several ranks every rank writes the piece of its own cells.
+    const bool pieces = mpi::n_ranks() > 1;
+    if (!writes && !pieces)
       return;
     const auto                    &dof_handler = analysis.get_dof_handler();
     const Kinematics              &kinematics  = analysis.get_kinematics();
@@ -155,17 +158,40 @@ namespace thinlayer
           }
       }
     data_out.add_data_vector(fields.material, "material_id");
+    const CellPartition &partition = analysis.get_partition();
+    if (pieces)
+      data_out.set_cell_selection(
+        [&partition](const typename Triangulation<dim>::cell_iterator &cell) {
+          return cell->is_active() &&
+                 partition.owner[cell->active_cell_index()] == partition.rank;
+        });
     data_out.build_patches(analysis.get_mapping(),
                            vtu_subdivisions,
                            DataOut<dim>::curved_inner_cells);
 
-    std::ostringstream name;
-    name << "fields-" << std::setw(4) << std::setfill('0') << step << ".vtu";
+    std::ostringstream base;
+    base << "fields-" << std::setw(4) << std::setfill('0') << step;
     std::ostringstream vtu;
     data_out.write_vtu(vtu);
-    write_file(name.str(), vtu.str());
+    std::string record = base.str() + ".vtu";
+    if (pieces)
+      {
+        // Pieces as deal.II's parallel codes name them (step-40), listed
+        // in one .pvtu written once every piece is in place.
+        std::vector<std::string> piece_names;
+        for (unsigned int r = 0; r < partition.n_ranks; ++r)
+          piece_names.push_back(base.str() + "." +
+                                Utilities::int_to_string(r, 4) + ".vtu");
+        write_piece(piece_names[partition.rank], vtu.str());
+        record = base.str() + ".pvtu";
+        std::ostringstream pvtu;
+        data_out.write_pvtu_record(pvtu, piece_names);
+        write_file(record, pvtu.str());
+      }
+    else
+      write_file(record, vtu.str());
 
-    pvd_records.emplace_back(load_factor, name.str());
+    pvd_records.emplace_back(load_factor, record);
     std::ostringstream pvd;
     DataOutBase::write_pvd_record(pvd, pvd_records);
     write_file("fields.pvd", pvd.str());
@@ -263,11 +289,42 @@ namespace thinlayer
 
 
   void
+  OutputWriter::write_piece(const std::string &name,
+                            const std::string &content) const
+  {
+    // Every rank learns whether every piece was written, so that all
+    // stop with the error (the rank that met it names the file) and no
+    // record lists a piece that is missing.
+    std::string error;
+    try
+      {
+        write_own_file(name, content);
+      }
+    catch (const WriteError &e)
+      {
+        error = e.what();
+      }
+    if (mpi::sum(error.empty() ? 0U : 1U) > 0)
+      throw WriteError(error.empty() ? "another rank could not write its "
+                                       "piece of the fields beside " +
+                                         name
+                                     : error);
+  }
+
+
+  void
   OutputWriter::write_file(const std::string &name,
                            const std::string &content) const
   {
-    if (!writes)
-      return;
+    if (writes)
+      write_own_file(name, content);
+  }
+
+
+  void
+  OutputWriter::write_own_file(const std::string &name,
+                               const std::string &content) const
+  {
     // Write beside, then rename: a reader never sees half a file.
     const std::string path = directory + "/" + name;
     errno                  = 0;

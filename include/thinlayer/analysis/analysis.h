@@ -272,6 +272,11 @@ namespace thinlayer
     const Mapping<dim> &
     get_mapping() const;
 
+    /// Which rank owns each active cell (on one rank an empty owner list:
+    /// every cell is rank 0's).
+    const CellPartition &
+    get_partition() const;
+
     /// The serendipity lines only (to condense residuals for reactions).
     const AffineConstraints<double> &
     get_element_constraints() const;
@@ -523,6 +528,14 @@ namespace thinlayer
   Analysis<dim>::get_mapping() const
   {
     return mapping;
+  }
+
+
+  template <int dim>
+  inline const CellPartition &
+  Analysis<dim>::get_partition() const
+  {
+    return partition;
   }
 
 

@@ -49,7 +49,9 @@ namespace thinlayer
    * fails throws a WriteError that names the file.
    *
    * On many ranks every rank holds the whole state, and rank 0 writes
-   * every file; on the others every write is nothing.
+   * every file but the fields: each rank writes the piece of its own cells
+   * as fields-NNNN.RRRR.vtu, listed in fields-NNNN.pvtu (which fields.pvd
+   * lists), as deal.II's parallel codes write them.
    */
   class OutputWriter
   {
@@ -61,7 +63,8 @@ namespace thinlayer
     write_history_row(const HistoryRow &row);
 
     /**
-     * The fields of load step @p step as fields-NNNN.vtu, and fields.pvd
+     * The fields of load step @p step as fields-NNNN.vtu (on several ranks
+     * fields-NNNN.pvtu and its pieces; every rank calls it), and fields.pvd
      * listing every step so far. For Fourier kinematics the displacement
      * is the one in the cut at angle @p theta. The profiles of
      * @p interfaces add their cell fields (zero off the layers).
@@ -118,6 +121,14 @@ namespace thinlayer
 
 
   private:
+    /// This rank's piece @p name of a step's fields (every rank calls it).
+    void
+    write_piece(const std::string &name, const std::string &content) const;
+
+    /// A file written by this rank, whichever it is.
+    void
+    write_own_file(const std::string &name, const std::string &content) const;
+
     std::string  directory;
     unsigned int vtu_subdivisions;
     /// Whether this rank writes (rank 0).
