@@ -411,6 +411,9 @@ namespace thinlayer
       forces = 0;
     for (const auto &group : groups)
       group->add_internal_forces(internal_force_vectors);
+    // Each rank's cells' share.
+    for (auto &forces : internal_force_vectors)
+      mpi::sum(forces);
   }
 
 

@@ -18,6 +18,8 @@ namespace thinlayer
     const Kinematics                                       &kinematics,
     const std::map<types::material_id, MaterialParameters> &materials)
     : dof_handler(dof_handler)
+    , mapping(mapping)
+    , quadrature(quadrature)
     , kinematics(kinematics)
     , n_q(quadrature.size())
     , time_step(std::numeric_limits<double>::infinity())
@@ -169,8 +171,11 @@ namespace thinlayer
   void
   ContinuumCells<dim>::distribute(const CellPartition &partition)
   {
-    cell_owner = partition.owner;
-    point_loop.set_cells(partition.owned_cells());
+    cell_owner                            = partition.owner;
+    const std::vector<unsigned int> owned = partition.owned_cells();
+    // Only this rank's points ask for the operator.
+    strain_operator.reinit(dof_handler, mapping, quadrature, kinematics, owned);
+    point_loop.set_cells(owned);
   }
 
 

@@ -394,11 +394,12 @@ namespace thinlayer
   {
     const unsigned int n_stations = kinematics->n_stations();
     for (unsigned int p = 0; p < points.size(); ++p)
-      for (unsigned int s = 0; s < n_stations; ++s)
-        add_forces(points[p],
-                   s,
-                   states[p * n_stations + s].traction,
-                   internal_forces);
+      if (point_owner.empty() || point_owner[p] == rank)
+        for (unsigned int s = 0; s < n_stations; ++s)
+          add_forces(points[p],
+                     s,
+                     states[p * n_stations + s].traction,
+                     internal_forces);
   }
 
 

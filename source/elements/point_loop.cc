@@ -316,7 +316,7 @@ namespace thinlayer
     const unsigned int    n       = B.dofs_per_cell();
     const unsigned int    n_modes = k.n_modes();
     std::vector<double>   cell_forces(n_modes * n);
-    for (unsigned int c = 0; c < n_cells; ++c)
+    for (const unsigned int c : cells)
       {
         std::fill(cell_forces.begin(), cell_forces.end(), 0.);
         for (unsigned int q = 0; q < n_q; ++q)

@@ -48,6 +48,20 @@ namespace thinlayer
            const Quadrature<dim> &quadrature,
            const Kinematics      &kinematics);
 
+    /**
+     * The same, keeping the operator and weights only at the points of the
+     * active cells @p cells (ascending; a rank's own cells), which are then
+     * the only points to ask for: on several ranks each rank's points are
+     * its share of the memory. The DoFs of every cell are kept.
+     */
+    template <int dim>
+    void
+    reinit(const DoFHandler<dim>           &dof_handler,
+           const Mapping<dim>              &mapping,
+           const Quadrature<dim>           &quadrature,
+           const Kinematics                &kinematics,
+           const std::vector<unsigned int> &cells);
+
     /// 1 in plane strain, 2 for Fourier kinematics.
     unsigned int
     n_parts() const
@@ -72,7 +86,7 @@ namespace thinlayer
     double
     point_weight(const unsigned int point) const
     {
-      return weights[point];
+      return weights[kept_point(point)];
     }
 
     /// The strain parts @p part of all shape functions of mode @p m at
@@ -142,14 +156,15 @@ namespace thinlayer
 
   private:
     /**
-     * Keep of @p all_shape_strains (every strain part at every one of
-     * @p n_points points, for @p n_modes modes) the non-zero pattern of
-     * each mode's and part's operator and its values at every point.
+     * Call @p f(kept point, q, FEValues) for each Gauss point q of each
+     * kept cell (cell_slot), in order.
      */
+    template <int dim, typename Function>
     void
-    pack(const std::vector<SymmetricTensor<2, 3>> &all_shape_strains,
-         const unsigned int                        n_points,
-         const unsigned int                        n_modes);
+    for_each_point(const DoFHandler<dim> &dof_handler,
+                   const Mapping<dim>    &mapping,
+                   const Quadrature<dim> &quadrature,
+                   const Function        &f) const;
 
     /// The non-zero entries of one mode's and part's operator, grouped by
     /// component: entries [component_begin[k], component_begin[k+1]).
@@ -158,16 +173,29 @@ namespace thinlayer
       std::array<unsigned int, 7> component_begin;
     };
 
+    /// Where point @p point (c * n_q + q) is kept.
+    std::size_t
+    kept_point(const unsigned int point) const
+    {
+      return cell_slot.empty()
+               ? point
+               : std::size_t(cell_slot[point / n_q]) * n_q + point % n_q;
+    }
+
     const double *
     point_values(const unsigned int point) const
     {
-      return &values[std::size_t(point) * entries_per_point];
+      return &values[kept_point(point) * entries_per_point];
     }
 
     unsigned int                         parts       = 1;
     unsigned int                         n_cell_dofs = 0;
+    unsigned int                         n_q         = 0;
     std::vector<types::global_dof_index> dofs;
-    std::vector<double>                  weights;
+    /// The place of each active cell among the kept ones (empty: every
+    /// cell is kept, in order).
+    std::vector<unsigned int> cell_slot;
+    std::vector<double>       weights;
     /// Indexed by m * n_parts + part.
     std::vector<Pattern>      patterns;
     std::vector<unsigned int> entry_dof;

@@ -155,8 +155,11 @@ namespace thinlayer
     elastic_tangents(const unsigned int c) const;
 
     const DoFHandler<dim> &dof_handler;
-    const Kinematics      &kinematics;
-    const unsigned int     n_q;
+    /// To compute the strain operator again for a rank's cells.
+    const Mapping<dim>   &mapping;
+    const Quadrature<dim> quadrature;
+    const Kinematics     &kinematics;
+    const unsigned int    n_q;
 
     std::map<types::material_id, std::unique_ptr<MaterialLaw>> laws;
     double                                                     time_step;

@@ -142,7 +142,8 @@ namespace thinlayer
                           ModeVectors       &internal_forces,
                           ModeVectors       &stress_excess) = 0;
 
-    /// Add the nodal forces of the current stresses to @p internal_forces.
+    /// Add the nodal forces of the current stresses of this rank's cells
+    /// or elements (all on one rank) to @p internal_forces.
     virtual void
     add_internal_forces(ModeVectors &internal_forces) const = 0;
 

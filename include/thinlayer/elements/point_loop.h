@@ -91,7 +91,8 @@ namespace thinlayer
                           ModeVectors                        &internal_forces,
                           ModeVectors                        &stress_excess);
 
-    /// Add the internal forces int B^T sigma of the current stresses.
+    /// Add the internal forces int B^T sigma of the current stresses of
+    /// the loop's cells.
     void
     add_internal_forces(ModeVectors &internal_forces) const;
 
