@@ -6,10 +6,11 @@ automatic stepping to a 0.5% bracket, on 1, 2 (and with --ranks, more)
 ranks. Per run: the outcome and collapse load (they must agree with one
 rank's: the outcome identical, the converged loads within 1e-6 relative),
 iterations, the median wall time of REPEAT runs, milliseconds per
-iteration, and the largest peak memory of any rank (summary.json's
-peak_memory_mb_per_rank, VmHWM).
+iteration, the largest peak memory of any rank (summary.json's
+peak_memory_mb_per_rank, VmHWM) and of it the loaded program's
+(program_memory_mb_per_rank).
 
-    /usr/bin/python3 -m benchmarks.ranks [--repeat 3] [--cells 2048,8192,32768] [--ranks 1,2]
+    /usr/bin/python3 -m benchmarks.ranks [--repeat 3] [--cells 2048,8192,32768] (or 512, 131072) [--ranks 1,2]
                                          [--methods paper,default]
 
 Writes output/benchmarks/ranks.csv and ranks.md and prints the table.
@@ -21,19 +22,13 @@ import statistics
 import subprocess
 
 from thinlayer_tools import THINLAYER, TOP, mpirun
+from thinlayer_tools.cases import PAPER_FIXED_STEPS, PRANDTL_SIZES
 from thinlayer_tools.report.runs import DEFAULT, PAPER
 
 OUT = os.path.join(TOP, "output", "benchmarks")
-MESHES = {
-    2048: "half_width=1, width=5, depth=3, n_footing=24, n_side=40, n_depth=32, growth=1.05",
-    8192: "half_width=1, width=5, depth=3, n_footing=48, n_side=80, n_depth=64, growth=1.025",
-    32768: "half_width=1, width=5, depth=3, n_footing=96, n_side=160, n_depth=128, growth=1.0125",
-}
+MESHES = PRANDTL_SIZES
 METHODS = [
-    ("paper's method, 7 fixed steps",
-     PAPER + ("Solver/Tolerance=1e-3",
-      "Loading/Load increments=0.5, 0.3, 0.1, 0.05, 0.05, 0.02, 0.02",
-      "Loading/Collapse resolution=0")),
+    ("paper's method, 7 fixed steps", PAPER + PAPER_FIXED_STEPS),
     ("default, automatic stepping", DEFAULT + ("Solver/Tolerance=1e-4",
                                                "Loading/Collapse resolution=0.005")),
 ]
@@ -89,19 +84,20 @@ def main():
                        "iterations": s["total_iterations"], "wall_median_s": wall,
                        "ms_per_iteration": 1e3 * statistics.median(
                            r["seconds_per_iteration"] for r in runs),
-                       "peak_mb_per_rank": max(r["peak_memory_mb_per_rank"] for r in runs)}
+                       "peak_mb_per_rank": max(r["peak_memory_mb_per_rank"] for r in runs),
+                       "program_mb_per_rank": max(r["program_memory_mb_per_rank"] for r in runs)}
                 rows.append(row)
                 print(row, flush=True)
     header = ("| cells | equations | method | ranks | outcome | same outcome | load / (2+pi)c "
               "| last converged load vs 1 rank | iterations | wall s (median) | ms per iteration "
-              "| peak MB per rank |")
+              "| peak MB per rank | of which the program |")
     lines = [header, "|" + "---|" * (header.count("|") - 1)]
     for r in rows:
-        lines.append("| %d | %d | %s | %d | %s | %s | %.5f | %.1e | %d | %.2f | %.2f | %.0f |" % (
+        lines.append("| %d | %d | %s | %d | %s | %s | %.5f | %.1e | %d | %.2f | %.2f | %.0f | %.0f |" % (
             r["cells"], r["equations"], r["method"], r["ranks"], r["outcome"],
             "yes" if r["same_outcome"] else "NO", r["load"] / (2 + 3.141592653589793),
             r["last_converged_difference"], r["iterations"], r["wall_median_s"],
-            r["ms_per_iteration"], r["peak_mb_per_rank"]))
+            r["ms_per_iteration"], r["peak_mb_per_rank"], r["program_mb_per_rank"]))
     with open(os.path.join(OUT, "ranks.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
     with open(os.path.join(OUT, "ranks.csv"), "w") as f:

@@ -40,3 +40,23 @@ def geometry(case, level, aspect_ratio="{ar}", alpha=30):
     LEVEL: with {ar} left in for the caller to fill unless ASPECT_RATIO is
     given; Case 1's interface at ALPHA degrees."""
     return MESH_LEVELS[case][level].format(ar=aspect_ratio, alpha=alpha)
+
+
+# Prandtl's scene at growing meshes (cells: geometry parameters), each
+# four times the cells of the one before at the same proportions, for the
+# measurements of time and memory against size and ranks.
+PRANDTL_SIZES = {
+    512: "half_width=1, width=5, depth=3, n_footing=12, n_side=20, n_depth=16, growth=1.1",
+    2048: "half_width=1, width=5, depth=3, n_footing=24, n_side=40, n_depth=32, growth=1.05",
+    8192: "half_width=1, width=5, depth=3, n_footing=48, n_side=80, n_depth=64, growth=1.025",
+    32768: "half_width=1, width=5, depth=3, n_footing=96, n_side=160, n_depth=128, "
+           "growth=1.0125",
+    131072: "half_width=1, width=5, depth=3, n_footing=192, n_side=320, n_depth=256, "
+            "growth=1.00625",
+}
+
+# The paper's method on seven fixed load steps to Prandtl's load: the same
+# iterations on every mesh size and rank count, for timings.
+PAPER_FIXED_STEPS = ("Solver/Tolerance=1e-3",
+                     "Loading/Load increments=0.5, 0.3, 0.1, 0.05, 0.05, 0.02, 0.02",
+                     "Loading/Collapse resolution=0")

@@ -22,7 +22,7 @@ import sys
 import time
 
 from thinlayer_tools import THINLAYER, TOP, mpirun, run_module
-from thinlayer_tools.report import case1, case4, footings, methods, page, parallel
+from thinlayer_tools.report import case1, case4, footings, methods, page, parallel, scaling
 from thinlayer_tools.report.runs import DEFAULT, PAPER, Runs
 
 ALL_ALPHAS = "alpha = 10, 20, 30, 40, 45, 50, 60, 70, 80"
@@ -77,6 +77,8 @@ def run_list(quick):
     runs += parallel.ONE_RANK_RUNS
     runs += [(name + "-%dranks" % ranks, scene, overrides + ("Output/Write VTU=false",), ranks)
              for name, scene, overrides, ranks in parallel.RUNS]
+    # Time and memory against size and ranks.
+    runs += scaling.run_list(quick)
     for material, scene in (("adhesive", "case1-stability-map"),
                             ("frictional", "case1-frictional-stability-map")):
         for method in (("viscoplastic", "default") if quick else METHOD_NAMES):
@@ -120,7 +122,7 @@ def run_benchmark(directory, quick):
 def sections(runs, quick):
     return (case1.sections(runs, quick) + footings.sections(runs, quick)
             + case4.sections(runs, quick) + methods.sections(runs, quick)
-            + parallel.sections(runs, quick))
+            + parallel.sections(runs, quick) + scaling.sections(runs, quick))
 
 
 def main():

@@ -145,8 +145,9 @@ namespace thinlayer
         const std::function<std::string()> &open_directory,
         std::ostream                       &out)
     {
-      Timer       wall_clock;
-      TimerOutput timer(out, TimerOutput::never, TimerOutput::wall_times);
+      Timer        wall_clock;
+      TimerOutput  timer(out, TimerOutput::never, TimerOutput::wall_times);
+      const double program_memory_mb = mpi::resident_memory_mb();
 
       out << "thinlayer: " << file_name(p.parameter_file) << '\n';
       for (const std::string &warning : p.warnings)
@@ -224,9 +225,10 @@ namespace thinlayer
         run.total_iterations > 0
           ? summary.timing["load steps"] / run.total_iterations
           : 0.;
-      summary.wall_seconds   = wall_clock.wall_time();
-      summary.ranks          = mpi::n_ranks();
-      summary.peak_memory_mb = mpi::peak_memory_mb();
+      summary.wall_seconds      = wall_clock.wall_time();
+      summary.ranks             = mpi::n_ranks();
+      summary.peak_memory_mb    = mpi::peak_memory_mb();
+      summary.program_memory_mb = program_memory_mb;
       writer.write_file("summary.json", summary.json());
 
       if (p.output.print_timing)

@@ -128,6 +128,7 @@ namespace thinlayer
     , seconds_per_iteration(std::numeric_limits<double>::quiet_NaN())
     , wall_seconds(std::numeric_limits<double>::quiet_NaN())
     , peak_memory_mb(std::numeric_limits<double>::quiet_NaN())
+    , program_memory_mb(std::numeric_limits<double>::quiet_NaN())
   {}
 
 

@@ -47,6 +47,16 @@ namespace thinlayer
     }
 
 
+    double
+    resident_memory_mb()
+    {
+      Utilities::System::MemoryStats stats;
+      Utilities::System::get_memory_stats(stats);
+      const double mb = stats.VmRSS / 1024.;
+      return n_ranks() == 1 ? mb : Utilities::MPI::max(mb, communicator());
+    }
+
+
     unsigned int
     sum(const unsigned int value)
     {

@@ -69,6 +69,10 @@ namespace thinlayer
     /// of any of them (VmHWM), in MB.
     unsigned int ranks = 1;
     double       peak_memory_mb;
+    /// The largest resident memory of any rank before the mesh was read,
+    /// in MB: the loaded program (in a sweep, with what the runs before
+    /// this one left).
+    double program_memory_mb;
     /// Warnings about the model (e.g. too few stations); empty if none.
     std::string warnings;
     /// Wall seconds per timer section.
@@ -136,6 +140,7 @@ namespace thinlayer
       visitor("wall_seconds", wall_seconds);
       visitor("ranks", ranks);
       visitor("peak_memory_mb_per_rank", peak_memory_mb);
+      visitor("program_memory_mb_per_rank", program_memory_mb);
       visitor("warnings", warnings);
       visitor("timing", timing);
     }

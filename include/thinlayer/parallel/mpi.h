@@ -50,6 +50,14 @@ namespace thinlayer
     }
 
     /// The largest peak resident memory (VmHWM) of any rank, in MB.
+    /**
+     * The largest resident memory (VmRSS) of any rank now, in MB: taken
+     * before the mesh is read, what the loaded program itself (libraries,
+     * MPI) costs every rank, which no number of ranks divides.
+     */
+    double
+    resident_memory_mb();
+
     double
     peak_memory_mb();
 
