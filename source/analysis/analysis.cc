@@ -12,6 +12,7 @@
 #include <thinlayer/discretisation/serendipity_constraints.h>
 #include <thinlayer/parallel/cell_partition.h>
 #include <thinlayer/parallel/mpi.h>
+#include <thinlayer/solvers/singular_matrix.h>
 
 #include <algorithm>
 #include <cmath>
@@ -304,7 +305,7 @@ namespace thinlayer
                   *mode.distributed_stiffness, owned_per_rank);
               }
           }
-        catch (const std::exception &)
+        catch (const SingularMatrix &)
           {
             throw_singular(m);
           }

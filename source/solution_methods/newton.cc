@@ -1,6 +1,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <thinlayer/solution_methods/newton.h>
+#include <thinlayer/solvers/singular_matrix.h>
 
 namespace thinlayer
 {
@@ -130,9 +131,9 @@ namespace thinlayer
       {
         factorisation->factorize(tangent);
       }
-    catch (const std::exception &)
+    catch (const SingularMatrix &)
       {
-        return false; // singular: a mechanism has formed
+        return false; // a mechanism has formed
       }
     return true;
   }

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include <petscksp.h>
+#include <petscmat.h>
 
 namespace thinlayer
 {
@@ -60,6 +61,14 @@ namespace thinlayer
     KSPGetPC(solver->ksp, &pc);
     PCSetType(pc, symmetric ? PCCHOLESKY : PCLU);
     PCFactorSetMatSolverType(pc, MATSOLVERMUMPS);
+    PCFactorSetUpMatSolverType(pc);
+    Mat factor = nullptr;
+    PCFactorGetMatrix(pc, &factor);
+    // Null pivots detected (ICNTL(24)), counted in INFOG(28): a pivot
+    // below MUMPS's threshold is round-off of a singular matrix (a
+    // mechanism, interface elements too soft for the cells beside them),
+    // which L D L^T would otherwise divide by without complaint.
+    MatMumpsSetIcntl(factor, 24, 1);
     // A singular matrix is an answer (a mechanism, missing supports), not
     // an error for PETSc to print: it is read off the preconditioner.
     PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
@@ -67,12 +76,39 @@ namespace thinlayer
     PetscPopErrorHandler();
     PCFailedReason reason = PC_NOERROR;
     PCGetFailedReason(pc, &reason);
+    // MUMPS's own code (INFOG(1), the same on every rank): -10 is a
+    // numerically singular matrix; others are failures of the solver.
+    // A matrix meant to be positive definite with a negative pivot
+    // (INFOG(12)) is singular up to round-off: CHOLMOD on one rank finds it
+    // not positive definite.
+    PetscInt error_code = 0, null_pivots = 0, negative_pivots = 0;
+    MatMumpsGetInfog(factor, 1, &error_code);
+    if (error_code >= 0)
+      {
+        MatMumpsGetInfog(factor, 28, &null_pivots);
+        if (symmetric)
+          MatMumpsGetInfog(factor, 12, &negative_pivots);
+        null_pivots += negative_pivots;
+      }
     const bool failed =
-      Utilities::MPI::max(ierr != 0 || reason != PC_NOERROR ? 1 : 0, comm) == 1;
+      Utilities::MPI::max(ierr != 0 || reason != PC_NOERROR || null_pivots > 0
+                            ? 1
+                            : 0,
+                          comm) == 1;
     if (failed)
       {
         solver.reset();
-        throw std::runtime_error("MUMPS: the matrix is singular");
+        const bool singular = error_code == -10 || null_pivots > 0 ||
+                              reason == PC_FACTOR_NUMERIC_ZEROPIVOT ||
+                              reason == PC_FACTOR_STRUCT_ZEROPIVOT;
+        if (singular)
+          throw SingularMatrix("MUMPS: the matrix is singular");
+        throw std::runtime_error(
+          "MUMPS could not factorise the stiffness matrix (its error code "
+          "INFOG(1) = " +
+          std::to_string(error_code) +
+          "; -8, -9, -13 and -19 mean too little memory, -38 a parallel "
+          "ordering this build of MUMPS lacks)");
       }
   }
 

@@ -1,4 +1,5 @@
 #include <thinlayer/solvers/factorised_stiffness.h>
+#include <thinlayer/solvers/singular_matrix.h>
 
 #include <stdexcept>
 #include <vector>
@@ -61,7 +62,15 @@ namespace thinlayer
   {
     if (method == Method::umfpack)
       {
-        umfpack.factorize(matrix);
+        // UMFPACK's failure on these matrices is their singularity.
+        try
+          {
+            umfpack.factorize(matrix);
+          }
+        catch (const ExceptionBase &e)
+          {
+            throw SingularMatrix(e.what());
+          }
         return;
       }
 
@@ -105,13 +114,19 @@ namespace thinlayer
     const bool ok = cholmod->factor != nullptr &&
                     cholmod_l_factorize(A, cholmod->factor, &c) &&
                     c.status == CHOLMOD_OK;
+    const int status = c.status;
     cholmod_l_free_sparse(&A, &c);
     if (!ok)
       {
         cholmod->clear(); // a failed factor is analysed afresh next time
-        throw std::runtime_error("CHOLMOD could not factorise the stiffness "
-                                 "matrix: it is singular or not positive "
-                                 "definite");
+        if (status == CHOLMOD_NOT_POSDEF)
+          throw SingularMatrix("CHOLMOD could not factorise the stiffness "
+                               "matrix: it is singular or not positive "
+                               "definite");
+        throw std::runtime_error(
+          "CHOLMOD could not factorise the stiffness matrix (its status " +
+          std::to_string(status) +
+          (status == CHOLMOD_OUT_OF_MEMORY ? ": out of memory)" : ")"));
       }
   }
 

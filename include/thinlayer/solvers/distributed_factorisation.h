@@ -5,6 +5,8 @@
 #include <deal.II/lac/petsc_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <thinlayer/solvers/singular_matrix.h>
+
 #include <memory>
 #include <vector>
 
@@ -36,8 +38,9 @@ namespace thinlayer
 
     /**
      * Factorise @p matrix, whose rows are distributed as
-     * @p owned_per_rank says. Throws std::runtime_error if MUMPS finds it
-     * singular (on any rank: the answer is the same on all).
+     * @p owned_per_rank says. Throws SingularMatrix if MUMPS finds it
+     * singular, and std::runtime_error naming MUMPS's error code if MUMPS
+     * fails otherwise (on every rank: the answer is the same on all).
      */
     void
     factorize(const PETScWrappers::MPI::SparseMatrix &matrix,

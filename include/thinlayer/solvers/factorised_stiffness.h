@@ -35,8 +35,9 @@ namespace thinlayer
     ~FactorisedStiffness();
 
     /**
-     * Factorise @p matrix. Throws std::runtime_error if it is singular (or,
-     * for CHOLMOD, not positive definite). CHOLMOD keeps the symbolic
+     * Factorise @p matrix. Throws SingularMatrix if it is singular (or,
+     * for CHOLMOD, not positive definite), std::runtime_error if CHOLMOD
+     * fails otherwise (out of memory). CHOLMOD keeps the symbolic
      * analysis (ordering, elimination tree) of the last matrix and reuses it
      * when the next one has the same SparsityPattern object, whose pattern
      * must then not have changed.
