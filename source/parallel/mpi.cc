@@ -42,8 +42,7 @@ namespace thinlayer
     {
       Utilities::System::MemoryStats stats;
       Utilities::System::get_memory_stats(stats);
-      const double mb = stats.VmHWM / 1024.;
-      return n_ranks() == 1 ? mb : Utilities::MPI::max(mb, communicator());
+      return max(stats.VmHWM / 1024.);
     }
 
 
@@ -52,8 +51,15 @@ namespace thinlayer
     {
       Utilities::System::MemoryStats stats;
       Utilities::System::get_memory_stats(stats);
-      const double mb = stats.VmRSS / 1024.;
-      return n_ranks() == 1 ? mb : Utilities::MPI::max(mb, communicator());
+      return max(stats.VmRSS / 1024.);
+    }
+
+
+    double
+    max(const double value)
+    {
+      return n_ranks() == 1 ? value
+                            : Utilities::MPI::max(value, communicator());
     }
 
 

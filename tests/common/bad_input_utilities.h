@@ -164,6 +164,37 @@ Physical Curve("bottom", 1) = {1}; Physical Curve("top", 2) = {6};
               << ", staging left behind: " << (staging_left() ? "YES" : "no")
               << "\n  " << err.str() << '\n';
   }
+  /// Print the valid scene's exit status @p status and keep its results
+  /// as the run every check starts from ("previous").
+  inline void
+  keep_valid_run(const int status)
+  {
+    std::cout << "* the valid scene: exit status " << status
+              << ", summary written: "
+              << (std::filesystem::exists("results/summary.json") ? "yes"
+                                                                  : "no")
+              << "\n\n";
+    std::filesystem::remove_all("previous");
+    std::filesystem::rename("results", "previous");
+    previous_run = contents("previous");
+  }
+
+  /// A scene on the interface patch (@p meshes/interface-patch.geo) whose
+  /// interface curve 3 is far too soft for the cells beside it.
+  inline std::string
+  soft_interface_scene(const std::string &meshes)
+  {
+    return "subsection Mesh\n  set File = " + meshes +
+           "interface-patch.geo\nend\n"
+           "subsection Material 1\nend\n"
+           "subsection Interface curve 3\n  set Shear stiffness = 1e-20\n"
+           "end\n"
+           "subsection Boundary 1\n  set Constrained components = x, y\nend\n"
+           "subsection Boundary 2\n  set Traction = 1; -1\nend\n"
+           "subsection Monitors\n  set Displacement boundary id = 2\nend\n"
+           "subsection Output\n  set Directory = results\nend\n";
+  }
+
   /// The files every check uses, and the valid scene, whose results every check
   /// starts from.
   inline void
@@ -185,15 +216,7 @@ Physical Curve("bottom", 1) = {1}; Physical Curve("top", 2) = {6};
     write("good.prm", scene());
     {
       std::ostringstream out, err;
-      const int status = thinlayer::run_command_line({"good.prm"}, out, err);
-      std::cout << "* the valid scene: exit status " << status
-                << ", summary written: "
-                << (std::filesystem::exists("results/summary.json") ? "yes"
-                                                                    : "no")
-                << "\n\n";
-      std::filesystem::remove_all("previous");
-      std::filesystem::rename("results", "previous");
-      previous_run = contents("previous");
+      keep_valid_run(thinlayer::run_command_line({"good.prm"}, out, err));
     }
   }
 } // namespace bad_input

@@ -60,16 +60,7 @@ namespace
            "-s",
            "Mesh/Geometry parameters=x0=3"});
 
-    write("soft-interface.prm",
-          "subsection Mesh\n  set File = " + meshes +
-            "interface-patch.geo\nend\n"
-            "subsection Material 1\nend\n"
-            "subsection Interface curve 3\n  set Shear stiffness = 1e-20\n"
-            "end\n"
-            "subsection Boundary 1\n  set Constrained components = x, y\nend\n"
-            "subsection Boundary 2\n  set Traction = 1; -1\nend\n"
-            "subsection Monitors\n  set Displacement boundary id = 2\nend\n"
-            "subsection Output\n  set Directory = results\nend\n");
+    write("soft-interface.prm", soft_interface_scene(meshes));
     check("an interface curve with a shear stiffness of 1e-20 E/h",
           {"soft-interface.prm"});
     check("an adhesion on an elastic interface curve",

@@ -85,17 +85,7 @@ main(int argc, char **argv)
       write("good.geo", good_geo);
       write("thesis.tex", "\\chapter{}\n");
       write("good.prm", scene());
-      write("soft-interface.prm",
-            "subsection Mesh\n  set File = " + meshes +
-              "interface-patch.geo\nend\n"
-              "subsection Material 1\nend\n"
-              "subsection Interface curve 3\n  set Shear stiffness = 1e-20\n"
-              "end\n"
-              "subsection Boundary 1\n  set Constrained components = x, "
-              "y\nend\n"
-              "subsection Boundary 2\n  set Traction = 1; -1\nend\n"
-              "subsection Monitors\n  set Displacement boundary id = 2\nend\n"
-              "subsection Output\n  set Directory = results\nend\n");
+      write("soft-interface.prm", soft_interface_scene(meshes));
     }
   barrier();
 
@@ -106,16 +96,7 @@ main(int argc, char **argv)
     const int status = thinlayer::run_command_line({"good.prm"}, out, err);
     barrier();
     if (root)
-      {
-        std::cout << "* the valid scene: exit status " << status
-                  << ", summary written: "
-                  << (std::filesystem::exists("results/summary.json") ? "yes"
-                                                                      : "no")
-                  << "\n\n";
-        std::filesystem::remove_all("previous");
-        std::filesystem::rename("results", "previous");
-        previous_run = contents("previous");
-      }
+      keep_valid_run(status);
     barrier();
   }
 

@@ -61,6 +61,10 @@ namespace thinlayer
     double
     peak_memory_mb();
 
+    /// The largest over the ranks of @p value.
+    double
+    max(const double value);
+
     /// The sum over the ranks of @p value.
     unsigned int
     sum(const unsigned int value);
