@@ -172,14 +172,17 @@ def sections(runs, quick):
         "Its forecast below extrapolates far beyond the two ranks and the sizes measured, and "
         "is read for its limits: every rank still holds %.2f kB per unknown whole (mesh, "
         "point states, vectors), so above some 10^7 unknowns a run exceeds a rank's %d MB (a "
-        "cluster core's share) whatever the ranks, and the work on whole vectors bounds the "
-        "time per iteration from below; the next floor of the issue (a distributed mesh, "
-        "states and vectors) removes both. %s" % (
+        "cluster core's share) whatever the ranks%s; the next floor of the issue (a "
+        "distributed mesh, states and vectors) removes that. %s" % (
             largest, time_ratio, memory_ratio, program, above_program,
             program, memory[0] * 1024, memory[1] * 1024,
             rest[0] * 1e6, rest[1] * 1e6, substitution[0] * 1e6, substitution[1] * 1e6,
             substitution[2] * 1e3,
             100 * worst, worst_run, memory[0] * 1024, RANK_BUDGET_MB,
+            ", and the work on whole vectors (d N) bounds the time per iteration from below"
+            if rest[1] > 0 else
+            " (these runs fit no time on whole vectors, d = 0: two ranks cannot tell it from "
+            "the split work, so the forecast's times on many ranks are a lower bound)",
             "Every run on two ranks has its one-rank run's outcome and converged loads within "
             "%.0e." % LOAD_AGREEMENT if agree else
             "Some runs on two ranks DIFFER from one rank's."))

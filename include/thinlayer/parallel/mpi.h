@@ -49,7 +49,6 @@ namespace thinlayer
       return rank() == 0;
     }
 
-    /// The largest peak resident memory (VmHWM) of any rank, in MB.
     /**
      * The largest resident memory (VmRSS) of any rank now, in MB: taken
      * before the mesh is read, what the loaded program itself (libraries,
@@ -58,6 +57,7 @@ namespace thinlayer
     double
     resident_memory_mb();
 
+    /// The largest peak resident memory (VmHWM) of any rank, in MB.
     double
     peak_memory_mb();
 
