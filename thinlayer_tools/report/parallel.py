@@ -27,6 +27,16 @@ ONE_RANK_RUNS = [RUNS[0][:3]]
 LOAD_AGREEMENT = 1e-6
 
 
+def compare_with_one_rank(summary, one):
+    """The relative difference of SUMMARY's last converged load from ONE's
+    (the same scene on one rank), and whether the two agree: the same
+    outcome and that difference within LOAD_AGREEMENT."""
+    difference = abs(results.number(summary["last_converged_load"])
+                     - results.number(one["last_converged_load"])) \
+        / abs(results.number(one["last_converged_load"]))
+    return difference, summary["outcome"] == one["outcome"] and difference <= LOAD_AGREEMENT
+
+
 def load(summary):
     """The collapse load, else the last converged one."""
     value = results.number(summary["collapse_load"])
@@ -40,10 +50,7 @@ def sections(runs, quick):
     for name, _, _, ranks in RUNS:
         one = runs.summary(name)
         for k, s in ((1, one), (ranks, runs.summary("%s-%dranks" % (name, ranks)))):
-            difference = abs(results.number(s["last_converged_load"])
-                             - results.number(one["last_converged_load"])) \
-                / abs(results.number(one["last_converged_load"]))
-            same = s["outcome"] == one["outcome"] and difference <= LOAD_AGREEMENT
+            difference, same = compare_with_one_rank(s, one)
             agree = agree and same
             if k > 1:
                 seconds += s["wall_seconds"]

@@ -23,16 +23,14 @@ import math
 
 import numpy
 
-from thinlayer_tools import results
 from thinlayer_tools.cases import PAPER_FIXED_STEPS, PRANDTL_SIZES
 from thinlayer_tools.report.page import Section
+from thinlayer_tools.report.parallel import LOAD_AGREEMENT, compare_with_one_rank
 from thinlayer_tools.report.runs import PAPER
 
 CELLS = (512, 2048, 8192, 32768)
 QUICK_CELLS = (512, 2048, 8192)
 RANKS = (1, 2)
-# Converged loads of two ranks against one (rounding only).
-LOAD_AGREEMENT = 1e-6
 FORECAST_UNKNOWNS = (1e6, 1e7, 1e8)
 FORECAST_RANKS = (1, 16, 128, 1024)
 # Memory per core of a typical cluster node (MB), the budget of a rank.
@@ -93,18 +91,16 @@ def evaluate(coefficients, terms, n, p):
     return float(numpy.dot(coefficients, terms(n, p)))
 
 
-def sections(runs, quick):
-    cells_list = QUICK_CELLS if quick else CELLS
-    measured = []
-    agree = True
+def measure(runs, cells_list):
+    """Each run's figures, and whether every run on two ranks agrees with
+    its one-rank run."""
+    measured, agree = [], True
     for cells in cells_list:
         one = runs.summary(name(cells, 1))
         for ranks in RANKS:
             s = runs.summary(name(cells, ranks))
-            difference = abs(results.number(s["last_converged_load"])
-                             - results.number(one["last_converged_load"])) \
-                / abs(results.number(one["last_converged_load"]))
-            agree = agree and s["outcome"] == one["outcome"] and difference <= LOAD_AGREEMENT
+            difference, same = compare_with_one_rank(s, one)
+            agree = agree and same
             measured.append({
                 "cells": cells, "n": s["equations"], "p": s["ranks"],
                 "iteration": s["seconds_per_iteration"],
@@ -112,29 +108,61 @@ def sections(runs, quick):
                 "peak": s["peak_memory_mb_per_rank"],
                 "program": s["program_memory_mb_per_rank"],
                 "wall": s["wall_seconds"], "difference": difference})
-    program = max(m["program"] for m in measured)
-    size = [(m["n"], m["p"]) for m in measured]
-    memory = fit(size, memory_terms, [m["peak"] - program for m in measured])
-    rest = fit(size, rest_terms, [m["iteration"] - m["substitution"] for m in measured])
-    substitution = fit(size, substitution_terms, [m["substitution"] for m in measured])
+    return measured, agree
 
-    def model_memory(n, p):
-        return program + evaluate(memory, memory_terms, n, p)
 
-    def model_substitution(n, p):
-        return evaluate(substitution, substitution_terms, n, p)
+class Model:
+    """The model of the module's docstring fitted to the MEASURED runs."""
 
-    def model_iteration(n, p):
-        return evaluate(rest, rest_terms, n, p) + model_substitution(n, p)
+    def __init__(self, measured):
+        self.program = max(m["program"] for m in measured)
+        size = [(m["n"], m["p"]) for m in measured]
+        self.memory_fit = fit(size, memory_terms,
+                              [m["peak"] - self.program for m in measured])
+        self.rest_fit = fit(size, rest_terms,
+                            [m["iteration"] - m["substitution"] for m in measured])
+        self.substitution_fit = fit(size, substitution_terms,
+                                    [m["substitution"] for m in measured])
+
+    def memory(self, n, p):
+        return self.program + evaluate(self.memory_fit, memory_terms, n, p)
+
+    def substitution(self, n, p):
+        return evaluate(self.substitution_fit, substitution_terms, n, p)
+
+    def iteration(self, n, p):
+        return evaluate(self.rest_fit, rest_terms, n, p) + self.substitution(n, p)
+
+
+def forecast(model):
+    """The model's memory per rank and time per iteration beyond the runs."""
+    rows = [["unknowns"] + ["%d ranks: MB per rank, s per iteration" % p
+                            for p in FORECAST_RANKS]]
+    for n in FORECAST_UNKNOWNS:
+        row = ["%.0e" % n]
+        for p in FORECAST_RANKS:
+            mb = model.memory(n, p)
+            row.append("%.0f MB%s, %.2g s" % (mb, " (over budget)" if mb > RANK_BUDGET_MB else "",
+                                              model.iteration(n, p)))
+        rows.append(row)
+    return rows
+
+
+def sections(runs, quick):
+    cells_list = QUICK_CELLS if quick else CELLS
+    measured, agree = measure(runs, cells_list)
+    model = Model(measured)
+    program = model.program
+    memory, rest, substitution = model.memory_fit, model.rest_fit, model.substitution_fit
 
     table = [["cells", "unknowns", "ranks", "ms per iteration", "model",
               "of which substitution", "model", "peak MB per rank", "model",
               "last converged load vs 1 rank"]]
     worst, worst_run = 0.0, ""
     for m in measured:
-        pairs = ((1e3 * m["iteration"], 1e3 * model_iteration(m["n"], m["p"])),
-                 (1e3 * m["substitution"], 1e3 * model_substitution(m["n"], m["p"])),
-                 (m["peak"], model_memory(m["n"], m["p"])))
+        pairs = ((1e3 * m["iteration"], 1e3 * model.iteration(m["n"], m["p"])),
+                 (1e3 * m["substitution"], 1e3 * model.substitution(m["n"], m["p"])),
+                 (m["peak"], model.memory(m["n"], m["p"])))
         for a, b in pairs:
             if abs(b - a) / a > worst:
                 worst, worst_run = abs(b - a) / a, "%d cells on %d" % (m["cells"], m["p"])
@@ -148,15 +176,6 @@ def sections(runs, quick):
     above_program = (two["peak"] - program) / (one["peak"] - program)
     time_ratio = two["iteration"] / one["iteration"]
 
-    forecast = [["unknowns"] + ["%d ranks: MB per rank, s per iteration" % p
-                                for p in FORECAST_RANKS]]
-    for n in FORECAST_UNKNOWNS:
-        row = ["%.0e" % n]
-        for p in FORECAST_RANKS:
-            mb = model_memory(n, p)
-            row.append("%.0f MB%s, %.2g s" % (mb, " (over budget)" if mb > RANK_BUDGET_MB else "",
-                                              model_iteration(n, p)))
-        forecast.append(row)
     why = (
         "Measured on this machine (the report's footer names it), one run each. At %d cells "
         "two ranks take %.2f of one rank's time per iteration (the issue's target: at most "
@@ -190,7 +209,7 @@ def sections(runs, quick):
         "scaling", "Time and memory against ranks and size (MPI)",
         "(not in the paper) one process.",
         "beyond" if agree else "differs", why,
-        rows=table + [[""] * len(table[0])] + forecast,
+        rows=table + [[""] * len(table[0])] + forecast(model),
         cost="%.0f s for the %d runs" % (sum(m["wall"] for m in measured), len(measured)),
         paper_value="(not in the paper)",
         our_value="2 ranks: time x%.2f, memory x%.2f at %d cells" % (time_ratio, memory_ratio,
