@@ -255,7 +255,7 @@ namespace thinlayer
     const AffineConstraints<double> &constraints) const
   {
     for (unsigned int k = 0; k < elements.size(); ++k)
-      if (element_owner.empty() || element_owner[k] == rank)
+      if (owns_element(k))
         constraints.add_entries_local_to_global(elements[k].dofs,
                                                 dsp,
                                                 /*keep_constrained=*/true);
@@ -296,7 +296,7 @@ namespace thinlayer
               A(i, j) += point.weight * c[a] * G(a, i) * K[a][a] * G(a, j);
       }
     for (unsigned int k = 0; k < elements.size(); ++k)
-      if (element_owner.empty() || element_owner[k] == rank)
+      if (owns_element(k))
         add(elements[k].dofs, matrices[k]);
   }
 
@@ -309,7 +309,7 @@ namespace thinlayer
     const unsigned int n_stations = kinematics->n_stations();
     unsigned int       n_yielding = 0;
     for (unsigned int p = 0; p < points.size(); ++p)
-      if (point_owner.empty() || point_owner[p] == rank)
+      if (owns_point(p))
         for (unsigned int s = 0; s < n_stations; ++s)
           n_yielding += rule(points[p],
                              s,
@@ -394,7 +394,7 @@ namespace thinlayer
   {
     const unsigned int n_stations = kinematics->n_stations();
     for (unsigned int p = 0; p < points.size(); ++p)
-      if (point_owner.empty() || point_owner[p] == rank)
+      if (owns_point(p))
         for (unsigned int s = 0; s < n_stations; ++s)
           add_forces(points[p],
                      s,
@@ -517,7 +517,7 @@ namespace thinlayer
     for (unsigned int p = 0; p < points.size(); ++p)
       for (unsigned int s = 0; s < n_stations; ++s)
         {
-          if (!point_owner.empty() && point_owner[p] != rank)
+          if (!owns_point(p))
             continue;
           jump_operator(points[p], s, G);
           const Tensor<2, 3> &C = tangents[p * n_stations + s];
@@ -533,7 +533,7 @@ namespace thinlayer
                       A(i, j) += weight * G(a, i) * C[a][b] * G(b, j);
         }
     for (unsigned int k = 0; k < elements.size(); ++k)
-      if (element_owner.empty() || element_owner[k] == rank)
+      if (owns_element(k))
         coupled_constraints.distribute_local_to_global(coupled_matrices[k],
                                                        elements[k].coupled_dofs,
                                                        tangent);

@@ -81,24 +81,24 @@ namespace thinlayer
     // A matrix meant to be positive definite with a negative pivot
     // (INFOG(12)) is singular up to round-off: CHOLMOD on one rank finds it
     // not positive definite.
-    PetscInt error_code = 0, null_pivots = 0, negative_pivots = 0;
+    PetscInt error_code = 0, singular_pivots = 0, negative_pivots = 0;
     MatMumpsGetInfog(factor, 1, &error_code);
     if (error_code >= 0)
       {
-        MatMumpsGetInfog(factor, 28, &null_pivots);
+        MatMumpsGetInfog(factor, 28, &singular_pivots); // null pivots
         if (symmetric)
           MatMumpsGetInfog(factor, 12, &negative_pivots);
-        null_pivots += negative_pivots;
+        singular_pivots += negative_pivots;
       }
-    const bool failed =
-      Utilities::MPI::max(ierr != 0 || reason != PC_NOERROR || null_pivots > 0
-                            ? 1
-                            : 0,
-                          comm) == 1;
+    const bool failed = Utilities::MPI::max(ierr != 0 || reason != PC_NOERROR ||
+                                                singular_pivots > 0
+                                              ? 1
+                                              : 0,
+                                            comm) == 1;
     if (failed)
       {
         solver.reset();
-        const bool singular = error_code == -10 || null_pivots > 0 ||
+        const bool singular = error_code == -10 || singular_pivots > 0 ||
                               reason == PC_FACTOR_NUMERIC_ZEROPIVOT ||
                               reason == PC_FACTOR_STRUCT_ZEROPIVOT;
         if (singular)

@@ -259,6 +259,20 @@ namespace thinlayer
     /// this rank.
     std::vector<unsigned int> element_owner, point_owner;
     unsigned int              rank = 0;
+
+    /// Whether this rank runs element @p k (every one on one rank).
+    bool
+    owns_element(const unsigned int k) const
+    {
+      return element_owner.empty() || element_owner[k] == rank;
+    }
+
+    /// Whether this rank runs integration point @p p.
+    bool
+    owns_point(const unsigned int p) const
+    {
+      return point_owner.empty() || point_owner[p] == rank;
+    }
     /// Work space of add_coupled_tangent(): a matrix per element, and the
     /// jump operator of one point.
     mutable std::vector<FullMatrix<double>> coupled_matrices;
