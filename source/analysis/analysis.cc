@@ -545,24 +545,19 @@ namespace thinlayer
 
   template <int dim>
   void
-  Analysis<dim>::add_coupled_sparsity(
-    DynamicSparsityPattern          &dsp,
-    const AffineConstraints<double> &coupled_constraints)
+  Analysis<dim>::add_coupled_sparsity(const DofSink &add)
   {
     for (const auto &group : groups)
-      group->add_coupled_sparsity(dsp, coupled_constraints);
+      group->add_coupled_sparsity(add);
   }
 
 
   template <int dim>
   void
-  Analysis<dim>::add_coupled_tangent(
-    SparseMatrix<double>            &tangent,
-    const AffineConstraints<double> &coupled_constraints)
+  Analysis<dim>::add_coupled_tangent(const CellMatrixSink &add)
   {
     for (const auto &group : groups)
-      group->add_coupled_tangent(tangent, coupled_constraints);
-    mpi::sum(tangent);
+      group->add_coupled_tangent(add);
   }
 
 

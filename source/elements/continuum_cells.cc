@@ -278,22 +278,21 @@ namespace thinlayer
 
   template <int dim>
   void
-  ContinuumCells<dim>::add_coupled_sparsity(
-    DynamicSparsityPattern          &dsp,
-    const AffineConstraints<double> &coupled_constraints)
+  ContinuumCells<dim>::add_coupled_sparsity(const DofSink &add)
   {
     const unsigned int n_local =
       kinematics.n_modes() * strain_operator.dofs_per_cell();
     const unsigned int                   n_cells = cell_law.size();
     std::vector<types::global_dof_index> dofs(n_local);
-    for (unsigned int c = 0; c < n_cells; ++c)
+    for (const unsigned int c : point_loop.get_cells())
       {
         coupled_cell_dofs(c, dofs);
-        coupled_constraints.add_entries_local_to_global(dofs,
-                                                        dsp,
-                                                        /*keep=*/true);
+        add(dofs);
       }
-    cell_matrices.assign(n_cells, FullMatrix<double>(n_local, n_local));
+    // Matrices only for this rank's cells.
+    cell_matrices.assign(n_cells, FullMatrix<double>());
+    for (const unsigned int c : point_loop.get_cells())
+      cell_matrices[c].reinit(n_local, n_local);
 
     TangentScratch scratch;
     scratch.strain.resize(n_local);
@@ -415,9 +414,7 @@ namespace thinlayer
 
   template <int dim>
   void
-  ContinuumCells<dim>::add_coupled_tangent(
-    SparseMatrix<double>            &tangent,
-    const AffineConstraints<double> &coupled_constraints)
+  ContinuumCells<dim>::add_coupled_tangent(const CellMatrixSink &add)
   {
     // The matrices of the cells with a plastic point in parallel (the
     // return mappings give the elastic tangent itself at an elastic point,
@@ -440,10 +437,8 @@ namespace thinlayer
     for (const unsigned int c : point_loop.get_cells())
       {
         coupled_cell_dofs(c, dofs);
-        coupled_constraints.distribute_local_to_global(
-          cell_is_elastic[c] ? elastic_cell_matrices[c] : cell_matrices[c],
-          dofs,
-          tangent);
+        add(dofs,
+            cell_is_elastic[c] ? elastic_cell_matrices[c] : cell_matrices[c]);
       }
   }
 

@@ -494,21 +494,16 @@ namespace thinlayer
 
 
   void
-  InterfaceElements::add_coupled_sparsity(
-    DynamicSparsityPattern          &dsp,
-    const AffineConstraints<double> &coupled_constraints)
+  InterfaceElements::add_coupled_sparsity(const DofSink &add)
   {
-    for (const Element &element : elements)
-      coupled_constraints.add_entries_local_to_global(element.coupled_dofs,
-                                                      dsp,
-                                                      true);
+    for (unsigned int k = 0; k < elements.size(); ++k)
+      if (owns_element(k))
+        add(elements[k].coupled_dofs);
   }
 
 
   void
-  InterfaceElements::add_coupled_tangent(
-    SparseMatrix<double>            &tangent,
-    const AffineConstraints<double> &coupled_constraints)
+  InterfaceElements::add_coupled_tangent(const CellMatrixSink &add)
   {
     const unsigned int n_stations = kinematics->n_stations();
     for (auto &matrix : coupled_matrices)
@@ -534,9 +529,7 @@ namespace thinlayer
         }
     for (unsigned int k = 0; k < elements.size(); ++k)
       if (owns_element(k))
-        coupled_constraints.distribute_local_to_global(coupled_matrices[k],
-                                                       elements[k].coupled_dofs,
-                                                       tangent);
+        add(elements[k].coupled_dofs, coupled_matrices[k]);
   }
 
 

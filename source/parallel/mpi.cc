@@ -86,22 +86,6 @@ namespace thinlayer
     }
 
 
-    void
-    sum(SparseMatrix<double> &matrix)
-    {
-      if (n_ranks() == 1)
-        return;
-      Vector<double> values(matrix.n_nonzero_elements());
-      std::size_t    k = 0;
-      for (const auto &entry : matrix)
-        values[k++] = entry.value();
-      sum(values);
-      k = 0;
-      for (auto entry = matrix.begin(); entry != matrix.end(); ++entry)
-        entry->value() = values[k++];
-    }
-
-
     std::string
     broadcast(const std::string &text)
     {

@@ -1,5 +1,3 @@
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-
 #include <thinlayer/solution_methods/newton.h>
 #include <thinlayer/solvers/singular_matrix.h>
 
@@ -10,33 +8,22 @@ namespace thinlayer
   NewtonMethod<dim>::initialize()
   {
     ReturnMappingMethod<dim>::initialize();
-    Analysis<dim>     &analysis = this->analysis;
-    const unsigned int n        = analysis.get_dof_handler().n_dofs();
-    const unsigned int n_modes  = analysis.n_modes();
+    Analysis<dim> &analysis = this->analysis;
 
-    constraints.clear();
-    for (unsigned int m = 0; m < n_modes; ++m)
-      {
-        AffineConstraints<double> shifted;
-        shifted.copy_from(analysis.mode_system(m).constraints);
-        shifted.shift(m * n);
-        constraints.merge(shifted);
-      }
-    constraints.close();
-
-    DynamicSparsityPattern dsp(n_modes * n);
-    analysis.add_coupled_sparsity(dsp, constraints);
-    sparsity.copy_from(dsp);
-    tangent.reinit(sparsity);
-    coupled_vector.reinit(n_modes * n);
-
+    std::vector<const AffineConstraints<double> *> mode_constraints;
+    for (unsigned int m = 0; m < analysis.n_modes(); ++m)
+      mode_constraints.push_back(&analysis.mode_system(m).constraints);
     // A non-associated flow rule makes the tangent unsymmetric.
-    factorisation = std::make_unique<FactorisedStiffness>(
-      analysis.all_laws_associated() &&
-          this->parameters.linear_solver ==
-            SolverParameters::LinearSolver::cholmod
+    system = std::make_unique<CoupledSystem>(
+      mode_constraints,
+      analysis.get_dof_handler().n_dofs(),
+      analysis.get_owned_per_rank(),
+      analysis.all_laws_associated(),
+      this->parameters.linear_solver == SolverParameters::LinearSolver::cholmod
         ? FactorisedStiffness::Method::cholmod
         : FactorisedStiffness::Method::umfpack);
+    system->reinit(
+      [&analysis](const DofSink &add) { analysis.add_coupled_sparsity(add); });
   }
 
 
@@ -71,7 +58,6 @@ namespace thinlayer
                              StepResult    &result)
   {
     Analysis<dim>     &analysis = this->analysis;
-    const unsigned int n        = analysis.get_dof_handler().n_dofs();
     const unsigned int n_modes  = analysis.n_modes();
 
     ++result.factorisations;
@@ -88,16 +74,9 @@ namespace thinlayer
         norms = this->evaluate_residual(target, /*tangents=*/true);
         return true;
       }
-    // The coupled solve: the residuals (each condensed with its mode's
-    // constraints) one after the other.
-    for (unsigned int m = 0; m < n_modes; ++m)
-      for (unsigned int i = 0; i < n; ++i)
-        coupled_vector[m * n + i] = this->residual[m][i];
-    factorisation->solve(coupled_vector);
-    constraints.distribute(coupled_vector);
-    for (unsigned int m = 0; m < n_modes; ++m)
-      for (unsigned int i = 0; i < n; ++i)
-        this->correction[m][i] = coupled_vector[m * n + i];
+    // The coupled solve of the residuals, each condensed with its mode's
+    // constraints.
+    system->solve(this->residual, this->correction);
     this->remember_increments();
 
     // Backtracking on |r|_2: halve the step until the residual falls
@@ -125,17 +104,10 @@ namespace thinlayer
   bool
   NewtonMethod<dim>::factorise_tangent()
   {
-    tangent = 0;
-    this->analysis.add_coupled_tangent(tangent, constraints);
-    try
-      {
-        factorisation->factorize(tangent);
-      }
-    catch (const SingularMatrix &)
-      {
-        return false; // a mechanism has formed
-      }
-    return true;
+    Analysis<dim> &analysis = this->analysis;
+    return system->factorise([&analysis](const CellMatrixSink &add) {
+      analysis.add_coupled_tangent(add);
+    });
   }
 
 

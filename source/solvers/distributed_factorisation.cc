@@ -13,6 +13,10 @@ namespace thinlayer
   struct DistributedFactorisation::Solver
   {
     KSP ksp = nullptr;
+    /// The matrix the KSP was set up with: a next factorisation of it
+    /// (Newton's tangent, same pattern, new values) reuses MUMPS's
+    /// symbolic analysis.
+    Mat matrix = nullptr;
     /// The right-hand side and solution in PETSc's layout.
     mutable PETScWrappers::MPI::Vector rhs, solution;
 
@@ -37,38 +41,52 @@ namespace thinlayer
     const PETScWrappers::MPI::SparseMatrix &matrix,
     const std::vector<IndexSet>            &owned_per_rank)
   {
-    solver              = std::make_unique<Solver>();
     const MPI_Comm comm = mpi::communicator();
-    solver->rhs.reinit(owned_per_rank[mpi::rank()], comm);
-    solver->solution.reinit(owned_per_rank[mpi::rank()], comm);
-    // The rows are contiguous and in rank order (number_dofs_by_rank()).
-    counts.assign(owned_per_rank.size(), 0);
-    offsets.assign(owned_per_rank.size(), 0);
-    for (unsigned int r = 0; r < owned_per_rank.size(); ++r)
+    Mat            A    = matrix;
+    PetscErrorCode ierr = 0;
+    PC             pc;
+    if (solver && solver->matrix == A)
       {
-        counts[r]  = static_cast<int>(owned_per_rank[r].n_elements());
-        offsets[r] = r > 0 ? offsets[r - 1] + counts[r - 1] : 0;
+        // The same matrix with new values: PETSc sees them changed and
+        // redoes only the numerical factorisation.
+        KSPSetOperators(solver->ksp, A, A);
+        KSPGetPC(solver->ksp, &pc);
       }
+    else
+      {
+        solver         = std::make_unique<Solver>();
+        solver->matrix = A;
+        solver->rhs.reinit(owned_per_rank[mpi::rank()], comm);
+        solver->solution.reinit(owned_per_rank[mpi::rank()], comm);
+        // The rows are contiguous and in rank order.
+        counts.assign(owned_per_rank.size(), 0);
+        offsets.assign(owned_per_rank.size(), 0);
+        for (unsigned int r = 0; r < owned_per_rank.size(); ++r)
+          {
+            counts[r]  = static_cast<int>(owned_per_rank[r].n_elements());
+            offsets[r] = r > 0 ? offsets[r - 1] + counts[r - 1] : 0;
+          }
 
-    Mat A = matrix;
-    if (symmetric)
-      MatSetOption(A, MAT_SPD, PETSC_TRUE);
-    PetscErrorCode ierr = KSPCreate(comm, &solver->ksp);
-    AssertThrow(ierr == 0, ExcPETScError(ierr));
-    KSPSetOperators(solver->ksp, A, A);
-    KSPSetType(solver->ksp, KSPPREONLY);
-    PC pc;
-    KSPGetPC(solver->ksp, &pc);
-    PCSetType(pc, symmetric ? PCCHOLESKY : PCLU);
-    PCFactorSetMatSolverType(pc, MATSOLVERMUMPS);
-    PCFactorSetUpMatSolverType(pc);
+        if (symmetric)
+          MatSetOption(A, MAT_SPD, PETSC_TRUE);
+        ierr = KSPCreate(comm, &solver->ksp);
+        AssertThrow(ierr == 0, ExcPETScError(ierr));
+        KSPSetOperators(solver->ksp, A, A);
+        KSPSetType(solver->ksp, KSPPREONLY);
+        KSPGetPC(solver->ksp, &pc);
+        PCSetType(pc, symmetric ? PCCHOLESKY : PCLU);
+        PCFactorSetMatSolverType(pc, MATSOLVERMUMPS);
+        PCFactorSetUpMatSolverType(pc);
+        Mat new_factor = nullptr;
+        PCFactorGetMatrix(pc, &new_factor);
+        // Null pivots detected (ICNTL(24)), counted in INFOG(28): a pivot
+        // below MUMPS's threshold is round-off of a singular matrix (a
+        // mechanism, interface elements too soft for the cells beside
+        // them), which L D L^T would otherwise divide by without complaint.
+        MatMumpsSetIcntl(new_factor, 24, 1);
+      }
     Mat factor = nullptr;
     PCFactorGetMatrix(pc, &factor);
-    // Null pivots detected (ICNTL(24)), counted in INFOG(28): a pivot
-    // below MUMPS's threshold is round-off of a singular matrix (a
-    // mechanism, interface elements too soft for the cells beside them),
-    // which L D L^T would otherwise divide by without complaint.
-    MatMumpsSetIcntl(factor, 24, 1);
     // A singular matrix is an answer (a mechanism, missing supports), not
     // an error for PETSc to print: it is read off the preconditioner.
     PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);

@@ -158,16 +158,16 @@ namespace thinlayer
     bool
     all_laws_associated() const;
 
-    /// Add the couplings of Newton's tangent over all modes (DoF
-    /// m * n_dofs + i of mode m) to @p dsp, every group's.
+    /// Hand the DoFs of all modes (DoF m * n_dofs + i of mode m) of every
+    /// cell and element this rank owns to @p add, every group's: the
+    /// couplings of Newton's tangent.
     void
-    add_coupled_sparsity(DynamicSparsityPattern          &dsp,
-                         const AffineConstraints<double> &coupled_constraints);
+    add_coupled_sparsity(const DofSink &add);
 
-    /// Add every group's tangent of the last return mapping with tangents.
+    /// Hand every group's tangent matrices of the last return mapping with
+    /// tangents, of the cells and elements this rank owns, to @p add.
     void
-    add_coupled_tangent(SparseMatrix<double>            &tangent,
-                        const AffineConstraints<double> &coupled_constraints);
+    add_coupled_tangent(const CellMatrixSink &add);
 
     /// @}
     /// @name The end of an attempt, and its state accepted or rejected
@@ -276,6 +276,11 @@ namespace thinlayer
     /// every cell is rank 0's).
     const CellPartition &
     get_partition() const;
+
+    /// The DoFs each rank owns, contiguous and in rank order (empty on one
+    /// rank).
+    const std::vector<IndexSet> &
+    get_owned_per_rank() const;
 
     /// The serendipity lines only (to condense residuals for reactions).
     const AffineConstraints<double> &
@@ -536,6 +541,14 @@ namespace thinlayer
   Analysis<dim>::get_partition() const
   {
     return partition;
+  }
+
+
+  template <int dim>
+  inline const std::vector<IndexSet> &
+  Analysis<dim>::get_owned_per_rank() const
+  {
+    return owned_per_rank;
   }
 
 

@@ -101,14 +101,10 @@ namespace thinlayer
     check_state(StateCheck &check) const override;
 
     void
-    add_coupled_sparsity(
-      DynamicSparsityPattern          &dsp,
-      const AffineConstraints<double> &coupled_constraints) override;
+    add_coupled_sparsity(const DofSink &add) override;
 
     void
-    add_coupled_tangent(
-      SparseMatrix<double>            &tangent,
-      const AffineConstraints<double> &coupled_constraints) override;
+    add_coupled_tangent(const CellMatrixSink &add) override;
     /// @}
 
     /// The pseudo time step of the viscoplastic iterations: the smallest

@@ -48,11 +48,15 @@ namespace thinlayer
   };
 
 
-  /// What receives the elastic matrix of a cell or element: its DoFs and
-  /// the matrix.
+  /// What receives the matrix of a cell or element (elastic, or Newton's
+  /// tangent): its DoFs and the matrix.
   using CellMatrixSink =
     std::function<void(const std::vector<types::global_dof_index> &,
                        const FullMatrix<double> &)>;
+
+  /// What receives the DoFs of a cell or element, for a sparsity pattern.
+  using DofSink =
+    std::function<void(const std::vector<types::global_dof_index> &)>;
 
   /// A profile along a line of an element group, with the name of its
   /// output files (e.g. "interface-curve-3").
@@ -175,18 +179,18 @@ namespace thinlayer
     /// @name Newton's coupled tangent (DoF m * n_dofs + i for mode m)
     /// @{
 
-    /// Add the couplings of the group's DoFs of all modes to @p dsp, and
-    /// allocate what add_coupled_tangent() works in.
+    /// Hand the DoFs of all modes of every cell or element this rank owns,
+    /// in order, to @p add, and allocate what add_coupled_tangent() works
+    /// in.
     virtual void
-    add_coupled_sparsity(
-      DynamicSparsityPattern          &dsp,
-      const AffineConstraints<double> &coupled_constraints) = 0;
+    add_coupled_sparsity(const DofSink &add) = 0;
 
-    /// Add the tangent of the last return_mapping_update() with tangents.
+    /// Hand the tangent matrix of the last return_mapping_update() with
+    /// tangents of every cell or element this rank owns, in order, with
+    /// its DoFs of all modes, to @p add: the solution method puts them
+    /// where its coupled system wants them.
     virtual void
-    add_coupled_tangent(
-      SparseMatrix<double>            &tangent,
-      const AffineConstraints<double> &coupled_constraints) = 0;
+    add_coupled_tangent(const CellMatrixSink &add) = 0;
 
     /// @}
 

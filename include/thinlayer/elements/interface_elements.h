@@ -131,17 +131,13 @@ namespace thinlayer
     check_state(StateCheck &check) const override;
 
     void
-    add_coupled_sparsity(
-      DynamicSparsityPattern          &dsp,
-      const AffineConstraints<double> &coupled_constraints) override;
+    add_coupled_sparsity(const DofSink &add) override;
 
     /// With the tangents of the last return_mapping_update() with
     /// tangents. Uses work space sized in reinit(): it runs at every
     /// factorisation.
     void
-    add_coupled_tangent(
-      SparseMatrix<double>            &tangent,
-      const AffineConstraints<double> &coupled_constraints) override;
+    add_coupled_tangent(const CellMatrixSink &add) override;
 
     void
     distribute(const CellPartition &partition) override;

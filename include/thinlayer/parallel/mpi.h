@@ -2,7 +2,6 @@
 #define thinlayer_parallel_mpi_h
 
 #include <deal.II/base/mpi.h>
-#include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <cstddef>
@@ -72,11 +71,6 @@ namespace thinlayer
     /// Replace @p v by its sum over the ranks; nothing on one rank.
     void
     sum(Vector<double> &v);
-
-    /// Replace every value of @p matrix by its sum over the ranks (every
-    /// rank has the same sparsity pattern); nothing on one rank.
-    void
-    sum(SparseMatrix<double> &matrix);
 
     /// Rank 0's @p text, on every rank.
     std::string

@@ -1,13 +1,8 @@
 #ifndef thinlayer_solution_methods_newton_h
 #define thinlayer_solution_methods_newton_h
 
-#include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/sparse_matrix.h>
-#include <deal.II/lac/sparsity_pattern.h>
-#include <deal.II/lac/vector.h>
-
+#include <thinlayer/analysis/coupled_system.h>
 #include <thinlayer/solution_methods/return_mapping_method.h>
-#include <thinlayer/solvers/factorised_stiffness.h>
 
 #include <memory>
 #include <vector>
@@ -27,8 +22,9 @@ namespace thinlayer
    * In the Fourier case the stations mix the harmonics, so the consistent
    * tangent couples them: it is one matrix over all modes, mode m's DoFs
    * shifted by m * n_dofs, each block condensed with its mode's
-   * constraints (in plane strain, the one mode's matrix). Every element
-   * group of the analysis adds its part (ElementGroup::add_coupled_tangent()).
+   * constraints (in plane strain, the one mode's matrix): a CoupledSystem,
+   * to which every element group of the analysis adds its part
+   * (ElementGroup::add_coupled_tangent()).
    */
   template <int dim>
   class NewtonMethod : public ReturnMappingMethod<dim>
@@ -65,13 +61,8 @@ namespace thinlayer
     bool
     factorise_tangent();
 
-    AffineConstraints<double>            constraints;
-    SparsityPattern                      sparsity;
-    SparseMatrix<double>                 tangent;
-    std::unique_ptr<FactorisedStiffness> factorisation;
-    /// The residuals of all modes one after the other, and then the
-    /// correction.
-    Vector<double> coupled_vector;
+    /// The tangent over all modes, and its factors.
+    std::unique_ptr<CoupledSystem> system;
   };
 } // namespace thinlayer
 

@@ -41,6 +41,9 @@ namespace thinlayer
      * @p owned_per_rank says. Throws SingularMatrix if MUMPS finds it
      * singular, and std::runtime_error naming MUMPS's error code if MUMPS
      * fails otherwise (on every rank: the answer is the same on all).
+     * Factorising the same matrix object again after a success (new
+     * values on the same pattern, as Newton's tangent) reuses MUMPS's
+     * ordering and symbolic analysis.
      */
     void
     factorize(const PETScWrappers::MPI::SparseMatrix &matrix,

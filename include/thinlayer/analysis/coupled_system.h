@@ -1,0 +1,110 @@
+#ifndef thinlayer_analysis_coupled_system_h
+#define thinlayer_analysis_coupled_system_h
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/petsc_sparse_matrix.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+
+#include <thinlayer/discretisation/mode_vectors.h>
+#include <thinlayer/elements/element_group.h>
+#include <thinlayer/solvers/distributed_factorisation.h>
+#include <thinlayer/solvers/factorised_stiffness.h>
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace thinlayer
+{
+  using namespace dealii;
+
+  /**
+   * Newton's linear system over all modes: the consistent tangent, which
+   * couples the Fourier harmonics through the stations (in plane strain,
+   * the one mode's matrix), each mode's block condensed with its mode's
+   * constraints, factorised at every iteration.
+   *
+   * The element groups hand their matrices with DoF m * n + i for DoF i of
+   * mode m (ElementGroup::add_coupled_tangent()). On one rank that is the
+   * system's numbering, the matrix a SparseMatrix factorised by CHOLMOD or
+   * UMFPACK. On several, the matrix is a PETSc matrix distributed by rows
+   * and factorised by MUMPS, whose ranks need contiguous rows: rank r's
+   * DoFs of all modes are numbered together, mode by mode, after those of
+   * the ranks before it (with one mode, the same numbering). MUMPS keeps
+   * its symbolic analysis from one factorisation to the next, as CHOLMOD
+   * does on one rank: the pattern never changes.
+   */
+  class CoupledSystem
+  {
+  public:
+    /**
+     * The system of the modes whose constraints @p mode_constraints gives
+     * (each over the same @p n_dofs DoFs), with every rank's DoFs in
+     * @p owned_per_rank (empty on one rank). @p symmetric: the tangent is
+     * symmetric (every flow rule associated), factorised by Cholesky
+     * (CHOLMOD where @p method says so, MUMPS's L D L^T) rather than LU.
+     */
+    CoupledSystem(
+      const std::vector<const AffineConstraints<double> *> &mode_constraints,
+      const types::global_dof_index                         n_dofs,
+      const std::vector<IndexSet>                          &owned_per_rank,
+      const bool                                            symmetric,
+      const FactorisedStiffness::Method                     method);
+
+    ~CoupledSystem();
+
+    /// The sparsity of the DoFs that @p add_dofs hands to its argument (of
+    /// every cell or element this rank owns, in the m * n + i numbering).
+    void
+    reinit(const std::function<void(const DofSink &)> &add_dofs);
+
+    /**
+     * Assemble the tangent whose matrices @p add_matrices hands to its
+     * argument (every cell or element this rank owns, in the m * n + i
+     * numbering) and factorise it. Returns false if it is singular (or, by
+     * Cholesky, not positive definite): a mechanism has formed.
+     */
+    bool
+    factorise(const std::function<void(const CellMatrixSink &)> &add_matrices);
+
+    /// @p correction = K_t^-1 @p residual, mode by mode, with the
+    /// constrained DoFs set from the constraints.
+    void
+    solve(const ModeVectors &residual, ModeVectors &correction);
+
+  private:
+    /// The system's DoF of DoF @p i of mode @p m.
+    types::global_dof_index
+    index(const unsigned int m, const types::global_dof_index i) const;
+
+    /// @p dofs, in the m * n + i numbering, in the system's.
+    const std::vector<types::global_dof_index> &
+    renumbered(const std::vector<types::global_dof_index> &dofs) const;
+
+    const unsigned int            n_modes;
+    const types::global_dof_index n;
+    /// Where each rank's DoFs start, and how many it has (several ranks).
+    std::vector<types::global_dof_index> first_dof, n_owned;
+    /// Each rank's rows of the system (several ranks).
+    std::vector<IndexSet> rows_per_rank;
+    /// Whether the system's numbering is the m * n + i one.
+    bool identity;
+
+    AffineConstraints<double> constraints;
+
+    SparsityPattern                      sparsity;
+    SparseMatrix<double>                 matrix;
+    std::unique_ptr<FactorisedStiffness> factorisation;
+
+    std::unique_ptr<PETScWrappers::MPI::SparseMatrix> distributed_matrix;
+    std::unique_ptr<DistributedFactorisation>         distributed_factorisation;
+
+    Vector<double>                               vector;
+    mutable std::vector<types::global_dof_index> renumbered_dofs;
+  };
+} // namespace thinlayer
+
+#endif
