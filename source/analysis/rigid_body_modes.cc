@@ -17,6 +17,24 @@ namespace thinlayer
   {
     using Motions = std::array<Vector<double>, 3>;
 
+    /// The centre of the bounding box of @p points, and half its diagonal
+    /// (at least 1e-300).
+    void
+    bounding_box_centre(const std::vector<Point<2>> &points,
+                        Point<2>                    &centre,
+                        double                      &size)
+    {
+      Point<2> low = points[0], high = points[0];
+      for (const auto &p : points)
+        for (unsigned int d = 0; d < 2; ++d)
+          {
+            low[d]  = std::min(low[d], p[d]);
+            high[d] = std::max(high[d], p[d]);
+          }
+      centre = (low + high) / 2;
+      size   = std::max((high - low).norm() / 2, 1e-300);
+    }
+
     /**
      * The check itself, given the three motions and what the stiffness
      * makes of them: @p image = K r and @p scale = |K| |r| on the
@@ -43,38 +61,23 @@ namespace thinlayer
                   Motions                         &scale)
     {
       const unsigned int n = support_points.size();
-      // The rotation about the centre of the bounding box, scaled by its
-      // size, so that the three motions have displacements of one size.
-      Point<2> low = support_points[0], high = support_points[0];
-      for (const auto &p : support_points)
-        for (unsigned int d = 0; d < 2; ++d)
-          {
-            low[d]  = std::min(low[d], p[d]);
-            high[d] = std::max(high[d], p[d]);
-          }
-      centre = (low + high) / 2;
-      size   = std::max((high - low).norm() / 2, 1e-300);
-
+      bounding_box_centre(support_points, centre, size);
+      const std::vector<Vector<double>> motions =
+        rigid_body_motions(support_points, dof_component, 2);
       Motions motion;
       for (unsigned int k = 0; k < 3; ++k)
         {
-          motion[k].reinit(n);
+          motion[k] = motions[k];
           image[k].reinit(n);
           scale[k].reinit(n);
           for (unsigned int i = 0; i < n; ++i)
-            {
-              const Tensor<1, 2> x = (support_points[i] - centre) / size;
-              const unsigned int c = dof_component[i];
-              motion[k][i] =
-                k < 2 ? (c == k ? 1. : 0.) : (c == 0 ? -x[1] : x[0]);
-              // Held by a support: a line without entries.
-              if (constraints.is_constrained(i))
-                {
-                  const auto *entries = constraints.get_constraint_entries(i);
-                  if (entries == nullptr || entries->empty())
-                    motion[k][i] = 0;
-                }
-            }
+            // Held by a support: a line without entries.
+            if (constraints.is_constrained(i))
+              {
+                const auto *entries = constraints.get_constraint_entries(i);
+                if (entries == nullptr || entries->empty())
+                  motion[k][i] = 0;
+              }
         }
       return motion;
     }
@@ -137,6 +140,43 @@ namespace thinlayer
              printf("%.3g", c[1] / length) + ")";
     }
   } // namespace
+
+
+  std::vector<Vector<double>>
+  rigid_body_motions(const std::vector<Point<2>>     &support_points,
+                     const std::vector<unsigned int> &dof_component,
+                     const unsigned int               n_components)
+  {
+    const unsigned int          n = support_points.size();
+    std::vector<Vector<double>> motions;
+    if (n_components != 2)
+      {
+        for (unsigned int k = 0; k < n_components; ++k)
+          {
+            motions.emplace_back(n);
+            for (unsigned int i = 0; i < n; ++i)
+              motions[k][i] = dof_component[i] == k ? 1. : 0.;
+          }
+        return motions;
+      }
+    // The rotation about the centre of the bounding box, scaled by its
+    // size, so that the three motions have displacements of one size.
+    Point<2> centre;
+    double   size;
+    bounding_box_centre(support_points, centre, size);
+    for (unsigned int k = 0; k < 3; ++k)
+      {
+        motions.emplace_back(n);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const Tensor<1, 2> x = (support_points[i] - centre) / size;
+            const unsigned int c = dof_component[i];
+            motions[k][i] =
+              k < 2 ? (c == k ? 1. : 0.) : (c == 0 ? -x[1] : x[0]);
+          }
+      }
+    return motions;
+  }
 
 
   std::string

@@ -11,6 +11,7 @@
 #include <thinlayer/parameters/parameter_reader.h>
 #include <thinlayer/parameters/parameter_text.h>
 #include <thinlayer/parameters/parameters.h>
+#include <thinlayer/solvers/linear_solver_failure.h>
 
 #include <csignal>
 #include <sstream>
@@ -34,7 +35,8 @@ namespace thinlayer
           << "fields.pvd with one VTU per load step.\n\n"
           << "Exit status: 0 a result (non-convergence is one), 1 bad input,\n"
           << "a failed write or a sweep run that ended in an error, 2 a bad\n"
-          << "command line, 3 an internal error, 4 a run that missed its\n"
+          << "command line, 3 an internal error or a failed linear solver\n"
+          << "(out of memory, CG not converging), 4 a run that missed its\n"
           << "Reference/Expected outcome or load range, 128 + N signal N.\n";
     }
 
@@ -182,6 +184,13 @@ namespace thinlayer
             << "; Output/Directory still holds the run it held before\n";
         mpi::abort_all(1);
         return 1;
+      }
+    catch (const LinearSolverFailure &e)
+      {
+        err << "thinlayer: " << rank
+            << "the linear solver failed: " << printable(e.what()) << '\n';
+        mpi::abort_all(3);
+        return 3;
       }
     catch (const ExceptionBase &e)
       {

@@ -221,6 +221,8 @@ namespace thinlayer
         out << "  reference check " << check.description << '\n';
       summary.timing = timer.get_summary_data(TimerOutput::total_wall_time);
       summary.seconds_per_substitution = analysis.substitution_seconds();
+      summary.linear_iterations_per_solve =
+        analysis.linear_iterations_per_solve();
       summary.seconds_per_iteration =
         run.total_iterations > 0
           ? summary.timing["load steps"] / run.total_iterations

@@ -125,6 +125,7 @@ namespace thinlayer
     , final_displacement_min(std::numeric_limits<double>::quiet_NaN())
     , final_displacement_max(std::numeric_limits<double>::quiet_NaN())
     , seconds_per_substitution(std::numeric_limits<double>::quiet_NaN())
+    , linear_iterations_per_solve(std::numeric_limits<double>::quiet_NaN())
     , seconds_per_iteration(std::numeric_limits<double>::quiet_NaN())
     , wall_seconds(std::numeric_limits<double>::quiet_NaN())
     , peak_memory_mb(std::numeric_limits<double>::quiet_NaN())

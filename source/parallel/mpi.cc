@@ -1,10 +1,14 @@
 #include <deal.II/base/utilities.h>
+#include <deal.II/lac/exceptions.h>
 
 #include <thinlayer/base/input_error.h>
 #include <thinlayer/base/interruption.h>
 #include <thinlayer/parallel/mpi.h>
 
+#include <cstdlib>
 #include <iostream>
+
+#include <petscsys.h>
 
 namespace thinlayer
 {
@@ -14,6 +18,20 @@ namespace thinlayer
     communicator()
     {
       return MPI_COMM_WORLD;
+    }
+
+
+    void
+    start_petsc()
+    {
+      PetscBool started = PETSC_FALSE;
+      PetscInitialized(&started);
+      if (started)
+        return;
+      const PetscErrorCode ierr = PetscInitializeNoArguments();
+      AssertThrow(ierr == 0, ExcPETScError(ierr));
+      // After every PETSc object (the analysis's) is gone.
+      std::atexit([]() { PetscFinalize(); });
     }
 
 

@@ -132,8 +132,8 @@ namespace thinlayer
 
   const NameTable<SolverParameters::LinearSolver>
     SolverParameters::linear_solver_names = {{LinearSolver::cholmod, "cholmod"},
-                                             {LinearSolver::umfpack,
-                                              "umfpack"}};
+                                             {LinearSolver::umfpack, "umfpack"},
+                                             {LinearSolver::amg_cg, "amg cg"}};
 
 
   void
@@ -204,9 +204,26 @@ namespace thinlayer
     prm.declare_entry("Linear solver",
                       "cholmod",
                       Patterns::Selection(linear_solver_names.pattern()),
-                      "The direct solver of the stiffness, factorised once "
-                      "per analysis: cholmod (sparse Cholesky, the stiffness "
-                      "being symmetric positive definite) or umfpack (LU).");
+                      "The solver of the elastic stiffness: cholmod (sparse "
+                      "Cholesky, the stiffness being symmetric positive "
+                      "definite) or umfpack (LU), factorised once per "
+                      "analysis (on several ranks both mean MUMPS); or amg "
+                      "cg (conjugate gradients preconditioned by PETSc's "
+                      "algebraic multigrid, GAMG, with the rigid-body "
+                      "motions), for a scene whose factors do not fit in "
+                      "memory: every solve then iterates, slowly where a "
+                      "thin layer is much stiffer than the soil (README). "
+                      "Newton's tangent is factorised whatever this says.");
+    prm.declare_entry("Linear solver tolerance",
+                      "1e-10",
+                      Patterns::Double(0),
+                      "amg cg: a solve stops at a residual this fraction of "
+                      "its right-hand side's.");
+    prm.declare_entry("Linear solver iterations",
+                      "2000",
+                      Patterns::Integer(1),
+                      "amg cg: the iteration limit of a solve; a solve that "
+                      "reaches it ends the run with an error.");
     prm.declare_entry("Continue after failure",
                       "false",
                       Patterns::Bool(),
@@ -259,6 +276,15 @@ namespace thinlayer
     max_iterations         = prm.get_integer("Maximum iterations");
     continue_after_failure = prm.get_bool("Continue after failure");
     linear_solver = linear_solver_names.value(prm.get("Linear solver"));
+    linear_solver_tolerance =
+      positive(prm, "Linear solver tolerance", file, "Solver");
+    if (!(linear_solver_tolerance < 1))
+      throw InputError(file,
+                       "Solver/Linear solver tolerance",
+                       "expected a value in (0, 1), the fraction of the "
+                       "right-hand side's residual a solve reaches; got " +
+                         prm.get("Linear solver tolerance"));
+    linear_solver_iterations = prm.get_integer("Linear solver iterations");
     prm.leave_subsection();
   }
 

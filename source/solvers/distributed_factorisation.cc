@@ -2,6 +2,7 @@
 
 #include <thinlayer/parallel/mpi.h>
 #include <thinlayer/solvers/distributed_factorisation.h>
+#include <thinlayer/solvers/linear_solver_failure.h>
 
 #include <stdexcept>
 
@@ -121,7 +122,7 @@ namespace thinlayer
                               reason == PC_FACTOR_STRUCT_ZEROPIVOT;
         if (singular)
           throw SingularMatrix("MUMPS: the matrix is singular");
-        throw std::runtime_error(
+        throw LinearSolverFailure(
           "MUMPS could not factorise the stiffness matrix (its error code "
           "INFOG(1) = " +
           std::to_string(error_code) +

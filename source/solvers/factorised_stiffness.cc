@@ -1,4 +1,5 @@
 #include <thinlayer/solvers/factorised_stiffness.h>
+#include <thinlayer/solvers/linear_solver_failure.h>
 #include <thinlayer/solvers/singular_matrix.h>
 
 #include <stdexcept>
@@ -123,7 +124,7 @@ namespace thinlayer
           throw SingularMatrix("CHOLMOD could not factorise the stiffness "
                                "matrix: it is singular or not positive "
                                "definite");
-        throw std::runtime_error(
+        throw LinearSolverFailure(
           "CHOLMOD could not factorise the stiffness matrix (its status " +
           std::to_string(status) +
           (status == CHOLMOD_OUT_OF_MEMORY ? ": out of memory)" : ")"));

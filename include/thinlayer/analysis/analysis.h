@@ -307,6 +307,11 @@ namespace thinlayer
     double
     substitution_seconds() const;
 
+    /// With Solver/Linear solver = amg cg, the mean CG iterations of a
+    /// solve so far (all modes); NaN with factors.
+    double
+    linear_iterations_per_solve() const;
+
   private:
     void
     setup_dofs_and_constraints();
@@ -331,6 +336,15 @@ namespace thinlayer
     /// one substitution takes.
     void
     factorise_stiffness();
+
+    /// Solver/Linear solver = amg cg: every mode's AMG-CG, the rigid-body
+    /// motions its near-null space, instead of factors.
+    void
+    set_up_iterative_solvers();
+
+    /// Time one substitution (or iterative solve) of every mode.
+    void
+    time_substitution();
 
     /// The InputError of a singular stiffness matrix of mode @p m: what
     /// the scene most likely lacks.

@@ -6,6 +6,7 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <thinlayer/solvers/amg_conjugate_gradient.h>
 #include <thinlayer/solvers/distributed_factorisation.h>
 #include <thinlayer/solvers/factorised_stiffness.h>
 
@@ -53,11 +54,19 @@ namespace thinlayer
     std::unique_ptr<PETScWrappers::MPI::SparseMatrix> distributed_stiffness;
     std::unique_ptr<DistributedFactorisation>         distributed_factorisation;
 
-    /// Replace @p rhs (condensed) by the solution with the elastic factors.
+    /// With Solver/Linear solver = amg cg: the iterative solver, and on
+    /// one rank the PETSc copy of the condensed stiffness it works on.
+    std::unique_ptr<AmgConjugateGradient>             iterative;
+    std::unique_ptr<PETScWrappers::MPI::SparseMatrix> petsc_stiffness;
+
+    /// Replace @p rhs (condensed) by the solution with the elastic factors
+    /// (or the iterative solver).
     void
     solve(Vector<double> &rhs)
     {
-      if (distributed_factorisation)
+      if (iterative)
+        iterative->solve(rhs);
+      else if (distributed_factorisation)
         distributed_factorisation->solve(rhs);
       else
         factorisation.solve(rhs);

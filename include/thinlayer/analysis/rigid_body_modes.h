@@ -5,6 +5,7 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/petsc_sparse_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
 
 #include <string>
 #include <vector>
@@ -12,6 +13,21 @@
 namespace thinlayer
 {
   using namespace dealii;
+
+  /**
+   * The rigid-body motions of a plane-strain body (@p n_components 2):
+   * the two translations and the rotation about the centre of the bounding
+   * box of @p support_points, scaled by its size, on the DoFs whose points
+   * and components (0: x, 1: y) @p support_points and @p dof_component
+   * give. With more components (a Fourier harmonic, whose rigid motions
+   * depend on its order), a uniform displacement of each. What algebraic
+   * multigrid must represent on its coarse levels.
+   */
+  std::vector<Vector<double>>
+  rigid_body_motions(const std::vector<Point<2>>     &support_points,
+                     const std::vector<unsigned int> &dof_component,
+                     const unsigned int               n_components);
+
 
   /**
    * The rigid-body motion, if any, that the supports of a plane-strain body

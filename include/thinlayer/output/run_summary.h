@@ -63,6 +63,9 @@ namespace thinlayer
     unsigned int converged_iterations = 0;
     std::string  method;
     double       seconds_per_substitution;
+    /// With an iterative linear solver, its mean iterations per solve
+    /// (NaN with factors).
+    double linear_iterations_per_solve;
     double       seconds_per_iteration;
     double       wall_seconds;
     /// The MPI ranks the run ran on, and the largest peak resident memory
@@ -136,6 +139,7 @@ namespace thinlayer
       visitor("iterations_to_last_converged_step", converged_iterations);
       visitor("method", method);
       visitor("seconds_per_substitution", seconds_per_substitution);
+      visitor("linear_iterations_per_solve", linear_iterations_per_solve);
       visitor("seconds_per_iteration", seconds_per_iteration);
       visitor("wall_seconds", wall_seconds);
       visitor("ranks", ranks);

@@ -32,6 +32,12 @@ namespace thinlayer
     MPI_Comm
     communicator();
 
+    /// Start PETSc (and with it MPI, as a single process) if no mpirun
+    /// did, for a PETSc solver on one rank; finalised at exit. Nothing if
+    /// PETSc is running.
+    void
+    start_petsc();
+
     /// This process's rank, 0 without MPI.
     unsigned int
     rank();

@@ -73,11 +73,13 @@ namespace thinlayer
       residual
     };
 
-    /// The direct solver of the constant stiffness.
+    /// The solver of the constant stiffness: direct on one rank (MUMPS on
+    /// several), or iterative.
     enum class LinearSolver
     {
       cholmod,
-      umfpack
+      umfpack,
+      amg_cg
     };
 
     static const NameTable<Method>               method_names;
@@ -93,6 +95,9 @@ namespace thinlayer
     unsigned int         max_iterations;
     bool                 continue_after_failure;
     LinearSolver         linear_solver;
+    /// AMG-CG: the residual reduction of a solve, and its iteration limit.
+    double       linear_solver_tolerance;
+    unsigned int linear_solver_iterations;
 
     static void
     declare(ParameterHandler &prm);

@@ -10,7 +10,7 @@ namespace thinlayer
    * positive definite): a mechanism or missing supports, which the caller
    * explains in terms of the model or takes as the answer (Newton's
    * tangent at collapse). Any other failure of a factorisation (memory, a
-   * solver option its build lacks) is a plain std::runtime_error, which no
+   * solver option its build lacks) is a LinearSolverFailure, which no
    * caller may mistake for a property of the model.
    */
   class SingularMatrix : public std::runtime_error
