@@ -77,6 +77,8 @@ def run_list(quick):
     runs += parallel.ONE_RANK_RUNS
     runs += [(name + "-%dranks" % ranks, scene, overrides + ("Output/Write VTU=false",), ranks)
              for name, scene, overrides, ranks in parallel.RUNS]
+    runs += [(parallel.amg_run_name(name, ranks), scene, overrides + ("Output/Write VTU=false",),
+              ranks) for name, scene, overrides, ranks in parallel.AMG_RUNS]
     # Time and memory against size and ranks.
     runs += scaling.run_list(quick)
     for material, scene in (("adhesive", "case1-stability-map"),

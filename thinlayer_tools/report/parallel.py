@@ -22,6 +22,20 @@ RUNS = [
     ("case3-zero", "case3-circular-footing-zero-thickness", (), 2),
 ]
 ONE_RANK_RUNS = [RUNS[0][:3]]
+# The iterative solver (Solver/Linear solver = amg cg) on one rank and two,
+# each compared with the one-rank run of the direct solver: (that run, its
+# scene, its overrides, ranks); run as NAME-amg-<RANKS>ranks.
+AMG = ("Solver/Linear solver=amg cg",)
+AMG_RUNS = [
+    ("prandtl-default", "prandtl-strip-footing", DEFAULT + AMG, 1),
+    ("prandtl-default", "prandtl-strip-footing", DEFAULT + AMG, 2),
+    ("case3-default", "case3-circular-footing", DEFAULT + AMG, 2),
+]
+
+
+def amg_run_name(name, ranks):
+    """The name of the AMG-CG run of NAME's scene on RANKS ranks."""
+    return "%s-amg-%dranks" % (name, ranks)
 # Converged loads of several ranks must agree with one rank's this closely
 # (the forces are summed in another order: rounding, not a model change).
 LOAD_AGREEMENT = 1e-6
@@ -47,33 +61,44 @@ def sections(runs, quick):
     table = [["scene (run)", "kinematics", "ranks", "outcome", "collapse load",
               "last converged load vs 1 rank", "wall s", "peak MB per rank"]]
     agree, seconds = True, 0.0
+    # (row label, run, the one-rank direct run it is compared with)
+    compared = []
     for name, _, _, ranks in RUNS:
-        one = runs.summary(name)
-        for k, s in ((1, one), (ranks, runs.summary("%s-%dranks" % (name, ranks)))):
-            difference, same = compare_with_one_rank(s, one)
-            agree = agree and same
-            if k > 1:
-                seconds += s["wall_seconds"]
-            table.append([name, s["kinematics"], "%d" % s.get("ranks", 1),
-                          s["outcome"] + ("" if same else " (DIFFERS)"),
-                          "%.6g" % load(s) if results.collapse_detected(s) else "-",
-                          "%.1e" % difference, "%.2f" % s["wall_seconds"],
-                          "%.0f" % s["peak_memory_mb_per_rank"]])
+        compared += [(name, name, name),
+                     ("%s-%dranks" % (name, ranks),) * 2 + (name,)]
+    compared += [(amg_run_name(name, ranks) + " (AMG-CG)", amg_run_name(name, ranks), name)
+                 for name, _, _, ranks in AMG_RUNS]
+    for label, run, one_rank_run in compared:
+        s, one = runs.summary(run), runs.summary(one_rank_run)
+        difference, same = compare_with_one_rank(s, one)
+        agree = agree and same
+        if run != one_rank_run:
+            seconds += s["wall_seconds"]
+        table.append([label, s["kinematics"], "%d" % s.get("ranks", 1),
+                      s["outcome"] + ("" if same else " (DIFFERS)"),
+                      "%.6g" % load(s) if results.collapse_detected(s) else "-",
+                      "%.1e" % difference, "%.2f" % s["wall_seconds"],
+                      "%.0f" % s["peak_memory_mb_per_rank"]])
     why = ("Each scene run on one rank and again under mpirun: the Gauss-point work split by "
            "cells (METIS), the forces summed over the ranks, the elastic stiffness distributed "
-           "by rows and factorised once by MUMPS; every rank holds the whole mesh, state and "
-           "vectors, and Newton's tangent is still whole on every rank. %s The converged loads "
-           "may differ by rounding only (the forces are summed and the factors computed in "
-           "another order); the section asks for at most %.0e relative, and the same outcome. "
-           "Time and memory against ranks and mesh size are in benchmarks/ranks.py and the "
-           "README." % (
+           "by rows and factorised once by MUMPS, Newton's tangent distributed likewise and "
+           "refactorised by MUMPS; every rank holds the whole mesh, state and vectors. The runs "
+           "marked AMG-CG solve the elastic stiffness by conjugate gradients with algebraic "
+           "multigrid (Solver/Linear solver = amg cg, to a residual of 1e-10) instead of "
+           "factors, on one rank and on two, and are compared with the one-rank direct run. "
+           "%s The converged loads may differ by rounding only (the forces are summed and the "
+           "factors computed in another order) and by the CG tolerance; the section asks for "
+           "at most %.0e relative, and the same outcome. Time and memory against ranks and mesh "
+           "size are in benchmarks/ranks.py, the solvers against each other in "
+           "benchmarks/linear_solvers.py, both in the README." % (
                "Every run agrees with its one-rank run." if agree else
                "Some runs DIFFER from their one-rank run (marked).", LOAD_AGREEMENT))
     return [Section(
         "ranks", "Runs on several processes (MPI)",
         "(not in the paper) one process.",
         "beyond" if agree else "differs", why, rows=table,
-        cost="%.0f s for the %d runs on several ranks" % (seconds, len(RUNS)),
+        cost="%.0f s for the %d runs on several ranks or with AMG-CG" % (
+            seconds, len(RUNS) + len(AMG_RUNS)),
         paper_value="(not in the paper)",
         our_value="outcomes identical, loads within %.0e" % LOAD_AGREEMENT if agree
         else "some runs differ")]
