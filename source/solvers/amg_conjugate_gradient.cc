@@ -1,9 +1,10 @@
-#include <deal.II/lac/petsc_vector.h>
+#include <deal.II/lac/exceptions.h>
 
 #include <thinlayer/base/text_format.h>
 #include <thinlayer/parallel/mpi.h>
 #include <thinlayer/solvers/amg_conjugate_gradient.h>
 #include <thinlayer/solvers/linear_solver_failure.h>
+#include <thinlayer/solvers/row_distribution.h>
 
 #include <cstdlib>
 #include <stdexcept>
@@ -20,7 +21,7 @@ namespace thinlayer
     /// The matrix with its block size (the unknowns of a node).
     Mat matrix = nullptr;
     /// The right-hand side and solution in PETSc's layout.
-    mutable PETScWrappers::MPI::Vector rhs, solution;
+    RowDistribution rows;
 
     ~Solver()
     {
@@ -108,15 +109,8 @@ namespace thinlayer
     const MPI_Comm  comm  = matrix.get_mpi_communicator();
     const unsigned  me    = mpi::rank();
     const IndexSet &owned = owned_per_rank[me];
-    solver->rhs.reinit(owned, comm);
-    solver->solution.reinit(owned, comm);
-    counts.assign(owned_per_rank.size(), 0);
-    offsets.assign(owned_per_rank.size(), 0);
-    for (unsigned int r = 0; r < owned_per_rank.size(); ++r)
-      {
-        counts[r]  = static_cast<int>(owned_per_rank[r].n_elements());
-        offsets[r] = r > 0 ? offsets[r - 1] + counts[r - 1] : 0;
-      }
+    solver->rows.reinit(owned_per_rank, comm);
+    const auto first = owned.n_elements() > 0 ? owned.nth_index_in_set(0) : 0;
 
     // The near-null space, orthonormalised (PETSc asks for it) by modified
     // Gram-Schmidt on the whole vectors, the same on every rank.
@@ -133,22 +127,22 @@ namespace thinlayer
             basis.push_back(std::move(w));
           }
       }
-    std::vector<PETScWrappers::MPI::Vector> vectors(basis.size());
-    std::vector<Vec>                        vecs;
+    std::vector<Vec> vecs(basis.size());
     for (unsigned int k = 0; k < basis.size(); ++k)
       {
-        vectors[k].reinit(owned, comm);
+        VecCreateMPI(comm, owned.n_elements(), PETSC_DETERMINE, &vecs[k]);
         PetscScalar *x;
-        VecGetArray(vectors[k], &x);
-        for (int i = 0; i < counts[me]; ++i)
-          x[i] = basis[k][offsets[me] + i];
-        VecRestoreArray(vectors[k], &x);
-        vecs.push_back(vectors[k]);
+        VecGetArray(vecs[k], &x);
+        for (unsigned int i = 0; i < owned.n_elements(); ++i)
+          x[i] = basis[k][first + i];
+        VecRestoreArray(vecs[k], &x);
       }
     solver->matrix      = blocked_copy(matrix, block_size);
     Mat            A    = solver->matrix;
     PetscErrorCode ierr = MatNullSpaceCreate(
       comm, PETSC_FALSE, vecs.size(), vecs.data(), &solver->near_null_space);
+    for (Vec &v : vecs) // the null space holds its own references
+      VecDestroy(&v);
     AssertThrow(ierr == 0, ExcPETScError(ierr));
     MatSetNearNullSpace(A, solver->near_null_space);
     MatSetOption(A, MAT_SPD, PETSC_TRUE);
@@ -187,15 +181,8 @@ namespace thinlayer
   AmgConjugateGradient::solve(Vector<double> &rhs) const
   {
     Assert(solver, ExcMessage("initialize() first."));
-    const unsigned int me = mpi::rank();
-    {
-      PetscScalar *b;
-      VecGetArray(solver->rhs, &b);
-      for (int i = 0; i < counts[me]; ++i)
-        b[i] = rhs[offsets[me] + i];
-      VecRestoreArray(solver->rhs, &b);
-    }
-    KSPSolve(solver->ksp, solver->rhs, solver->solution);
+    solver->rows.scatter(rhs);
+    KSPSolve(solver->ksp, solver->rows.rhs, solver->rows.solution);
     KSPConvergedReason reason;
     KSPGetConvergedReason(solver->ksp, &reason);
     PetscInt n_iterations = 0;
@@ -216,24 +203,7 @@ namespace thinlayer
           "); raise Solver/Linear solver iterations or use a direct solver");
       }
 
-    // Every rank's rows of the solution, to every rank.
-    const PetscScalar *x;
-    VecGetArrayRead(solver->solution, &x);
-    if (counts.size() == 1)
-      std::copy(x, x + counts[0], rhs.begin());
-    else
-      {
-        const int ierr = MPI_Allgatherv(x,
-                                        counts[me],
-                                        MPI_DOUBLE,
-                                        rhs.data(),
-                                        counts.data(),
-                                        offsets.data(),
-                                        MPI_DOUBLE,
-                                        mpi::communicator());
-        AssertThrowMPI(ierr);
-      }
-    VecRestoreArrayRead(solver->solution, &x);
+    solver->rows.gather(rhs);
   }
 
 

@@ -1,8 +1,9 @@
-#include <deal.II/lac/petsc_vector.h>
+#include <deal.II/lac/exceptions.h>
 
 #include <thinlayer/parallel/mpi.h>
 #include <thinlayer/solvers/distributed_factorisation.h>
 #include <thinlayer/solvers/linear_solver_failure.h>
+#include <thinlayer/solvers/row_distribution.h>
 
 #include <stdexcept>
 
@@ -19,7 +20,7 @@ namespace thinlayer
     /// symbolic analysis.
     Mat matrix = nullptr;
     /// The right-hand side and solution in PETSc's layout.
-    mutable PETScWrappers::MPI::Vector rhs, solution;
+    RowDistribution rows;
 
     ~Solver()
     {
@@ -57,16 +58,7 @@ namespace thinlayer
       {
         solver         = std::make_unique<Solver>();
         solver->matrix = A;
-        solver->rhs.reinit(owned_per_rank[mpi::rank()], comm);
-        solver->solution.reinit(owned_per_rank[mpi::rank()], comm);
-        // The rows are contiguous and in rank order.
-        counts.assign(owned_per_rank.size(), 0);
-        offsets.assign(owned_per_rank.size(), 0);
-        for (unsigned int r = 0; r < owned_per_rank.size(); ++r)
-          {
-            counts[r]  = static_cast<int>(owned_per_rank[r].n_elements());
-            offsets[r] = r > 0 ? offsets[r - 1] + counts[r - 1] : 0;
-          }
+        solver->rows.reinit(owned_per_rank, comm);
 
         if (symmetric)
           MatSetOption(A, MAT_SPD, PETSC_TRUE);
@@ -136,29 +128,8 @@ namespace thinlayer
   DistributedFactorisation::solve(Vector<double> &rhs) const
   {
     Assert(solver, ExcMessage("factorize() first."));
-    const unsigned int me    = mpi::rank();
-    const std::size_t  first = offsets[me];
-    {
-      PetscScalar *b;
-      VecGetArray(solver->rhs, &b);
-      for (int i = 0; i < counts[me]; ++i)
-        b[i] = rhs[first + i];
-      VecRestoreArray(solver->rhs, &b);
-    }
-    KSPSolve(solver->ksp, solver->rhs, solver->solution);
-
-    // Every rank's rows of the solution, to every rank.
-    const PetscScalar *x;
-    VecGetArrayRead(solver->solution, &x);
-    const int ierr = MPI_Allgatherv(x,
-                                    counts[me],
-                                    MPI_DOUBLE,
-                                    rhs.data(),
-                                    counts.data(),
-                                    offsets.data(),
-                                    MPI_DOUBLE,
-                                    mpi::communicator());
-    VecRestoreArrayRead(solver->solution, &x);
-    AssertThrowMPI(ierr);
+    solver->rows.scatter(rhs);
+    KSPSolve(solver->ksp, solver->rows.rhs, solver->rows.solution);
+    solver->rows.gather(rhs);
   }
 } // namespace thinlayer

@@ -73,7 +73,6 @@ namespace thinlayer
     /// PETSc's solver state, behind a pointer to keep its headers out.
     struct Solver;
     std::unique_ptr<Solver> solver;
-    std::vector<int>        counts, offsets;
     mutable unsigned long   iterations = 0, solves = 0;
   };
 

@@ -59,9 +59,6 @@ namespace thinlayer
     /// PETSc's solver state, behind a pointer to keep its headers out.
     struct Solver;
     std::unique_ptr<Solver> solver;
-    /// Every rank's rows: how many, and the first (for gathering the
-    /// solution).
-    std::vector<int> counts, offsets;
   };
 } // namespace thinlayer
 
