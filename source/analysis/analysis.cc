@@ -352,15 +352,11 @@ namespace thinlayer
           parameters.solver.linear_solver_tolerance,
           parameters.solver.linear_solver_iterations);
         if (mpi::n_ranks() == 1)
-          {
-            system->petsc_stiffness = petsc_copy(system->condensed_stiffness);
-            system->iterative->initialize(*system->petsc_stiffness,
-                                          {complete_index_set(
-                                            dof_handler.n_dofs())},
-                                          free_motions,
-                                          block_size);
-            system->petsc_stiffness.reset(); // the solver has its copy
-          }
+          system->iterative->initialize(
+            *petsc_copy(system->condensed_stiffness),
+            {complete_index_set(dof_handler.n_dofs())},
+            free_motions,
+            block_size);
         else
           system->iterative->initialize(*system->distributed_stiffness,
                                         owned_per_rank,

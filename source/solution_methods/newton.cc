@@ -13,15 +13,16 @@ namespace thinlayer
     std::vector<const AffineConstraints<double> *> mode_constraints;
     for (unsigned int m = 0; m < analysis.n_modes(); ++m)
       mode_constraints.push_back(&analysis.mode_system(m).constraints);
-    // A non-associated flow rule makes the tangent unsymmetric.
+    // A non-associated flow rule makes the tangent unsymmetric. The
+    // tangent is factorised with amg cg too (by CHOLMOD where symmetric).
     system = std::make_unique<CoupledSystem>(
       mode_constraints,
       analysis.get_dof_handler().n_dofs(),
       analysis.get_owned_per_rank(),
       analysis.all_laws_associated(),
-      this->parameters.linear_solver == SolverParameters::LinearSolver::cholmod
-        ? FactorisedStiffness::Method::cholmod
-        : FactorisedStiffness::Method::umfpack);
+      this->parameters.linear_solver == SolverParameters::LinearSolver::umfpack
+        ? FactorisedStiffness::Method::umfpack
+        : FactorisedStiffness::Method::cholmod);
     system->reinit(
       [&analysis](const DofSink &add) { analysis.add_coupled_sparsity(add); });
   }

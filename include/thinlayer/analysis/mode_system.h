@@ -54,10 +54,9 @@ namespace thinlayer
     std::unique_ptr<PETScWrappers::MPI::SparseMatrix> distributed_stiffness;
     std::unique_ptr<DistributedFactorisation>         distributed_factorisation;
 
-    /// With Solver/Linear solver = amg cg: the iterative solver, and on
-    /// one rank the PETSc copy of the condensed stiffness it works on.
-    std::unique_ptr<AmgConjugateGradient>             iterative;
-    std::unique_ptr<PETScWrappers::MPI::SparseMatrix> petsc_stiffness;
+    /// With Solver/Linear solver = amg cg: the iterative solver (with its
+    /// own copy of the condensed stiffness).
+    std::unique_ptr<AmgConjugateGradient> iterative;
 
     /// Replace @p rhs (condensed) by the solution with the elastic factors
     /// (or the iterative solver).
