@@ -66,8 +66,8 @@ namespace thinlayer
     /// With an iterative linear solver, its mean iterations per solve
     /// (NaN with factors).
     double linear_iterations_per_solve;
-    double       seconds_per_iteration;
-    double       wall_seconds;
+    double seconds_per_iteration;
+    double wall_seconds;
     /// The MPI ranks the run ran on, and the largest peak resident memory
     /// of any of them (VmHWM), in MB.
     unsigned int ranks = 1;
