@@ -282,17 +282,15 @@ namespace thinlayer
   {
     const unsigned int n_local =
       kinematics.n_modes() * strain_operator.dofs_per_cell();
-    const unsigned int                   n_cells = cell_law.size();
+    const std::vector<unsigned int>     &cells = point_loop.get_cells();
     std::vector<types::global_dof_index> dofs(n_local);
-    for (const unsigned int c : point_loop.get_cells())
+    for (const unsigned int c : cells)
       {
         coupled_cell_dofs(c, dofs);
         add(dofs);
       }
-    // Matrices only for this rank's cells.
-    cell_matrices.assign(n_cells, FullMatrix<double>());
-    for (const unsigned int c : point_loop.get_cells())
-      cell_matrices[c].reinit(n_local, n_local);
+    // Matrices and tangents only for this rank's cells.
+    cell_matrices.assign(cells.size(), FullMatrix<double>(n_local, n_local));
 
     TangentScratch scratch;
     scratch.strain.resize(n_local);
@@ -302,33 +300,33 @@ namespace thinlayer
     scratch.stress_rows.resize(6 * n_local);
     tangent_scratch.assign(point_loop.n_chunks(), scratch);
 
-    // Each cell's matrix with elastic tangents, once: a cell whose points
-    // are all elastic takes it as it is in every factorisation.
+    // Each cell's matrix with elastic tangents: a cell whose points are
+    // all elastic takes it as it is in every factorisation.
     const unsigned int n_stations = kinematics.n_stations();
-    tangents.resize(std::size_t(n_cells) * n_q * n_stations);
-    for (unsigned int p = 0; p < n_cells * n_q; ++p)
-      for (unsigned int s = 0; s < n_stations; ++s)
-        tangents[std::size_t(p) * n_stations + s] =
-          cell_law[p / n_q]->elasticity();
+    tangents.resize(cells.size() * n_q * n_stations);
+    for (unsigned int i = 0; i < cells.size(); ++i)
+      for (unsigned int q = 0; q < n_q; ++q)
+        for (unsigned int s = 0; s < n_stations; ++s)
+          tangents[point_loop.tangent_index(i, q, s)] =
+            cell_law[cells[i]]->elasticity();
     point_loop.for_each_chunk([this](const unsigned int begin,
                                      const unsigned int end,
                                      const unsigned int chunk) {
       for (unsigned int i = begin; i < end; ++i)
-        compute_cell_tangent(point_loop.get_cells()[i], tangent_scratch[chunk]);
+        compute_cell_tangent(i, tangent_scratch[chunk]);
     });
-    elastic_cell_matrices = cell_matrices;
-    cell_is_elastic.assign(n_cells, 1);
+    holds_elastic_matrix.assign(cells.size(), 1);
   }
 
 
   template <int dim>
   bool
-  ContinuumCells<dim>::elastic_tangents(const unsigned int c) const
+  ContinuumCells<dim>::elastic_tangents(const unsigned int i) const
   {
-    const unsigned int           n_stations = kinematics.n_stations();
-    const SymmetricTensor<4, 3> &elasticity = cell_law[c]->elasticity();
-    for (std::size_t k = std::size_t(c) * n_q * n_stations;
-         k < std::size_t(c + 1) * n_q * n_stations;
+    const SymmetricTensor<4, 3> &elasticity =
+      cell_law[point_loop.get_cells()[i]]->elasticity();
+    for (std::size_t k = point_loop.tangent_index(i, 0, 0);
+         k < point_loop.tangent_index(i + 1, 0, 0);
          ++k)
       if (!(tangents[k] == elasticity))
         return false;
@@ -338,9 +336,10 @@ namespace thinlayer
 
   template <int dim>
   void
-  ContinuumCells<dim>::compute_cell_tangent(const unsigned int c,
+  ContinuumCells<dim>::compute_cell_tangent(const unsigned int i,
                                             TangentScratch    &scratch)
   {
+    const unsigned int    c          = point_loop.get_cells()[i];
     const StrainOperator &B          = strain_operator;
     const unsigned int    n_cell     = B.dofs_per_cell();
     const unsigned int    n_modes    = kinematics.n_modes();
@@ -358,7 +357,7 @@ namespace thinlayer
     auto &stress_rows = scratch.stress_rows;
 
     {
-      FullMatrix<double> &cell_matrix = cell_matrices[c];
+      FullMatrix<double> &cell_matrix = cell_matrices[i];
       cell_matrix                     = 0;
       for (unsigned int q = 0; q < n_q; ++q)
         {
@@ -366,7 +365,7 @@ namespace thinlayer
           for (unsigned int s = 0; s < n_stations; ++s)
             {
               const SymmetricTensor<4, 3> &C =
-                tangents[std::size_t(p) * n_stations + s];
+                tangents[point_loop.tangent_index(i, q, s)];
               const double weight =
                 kinematics.station_weight(s) * B.point_weight(p);
               for (unsigned int m = 0; m < n_modes; ++m)
@@ -418,27 +417,28 @@ namespace thinlayer
   {
     // The matrices of the cells with a plastic point in parallel (the
     // return mappings give the elastic tangent itself at an elastic point,
-    // so the test is exact), then all added in cell order (the same sums on
-    // any number of threads).
+    // so the test is exact), and of those elastic again, whose matrix is
+    // still the last plastic one; then all added in cell order (the same
+    // sums on any number of threads).
     point_loop.for_each_chunk([this](const unsigned int begin,
                                      const unsigned int end,
                                      const unsigned int chunk) {
       for (unsigned int i = begin; i < end; ++i)
         {
-          const unsigned int c = point_loop.get_cells()[i];
-          cell_is_elastic[c]   = elastic_tangents(c);
-          if (!cell_is_elastic[c])
-            compute_cell_tangent(c, tangent_scratch[chunk]);
+          const bool elastic = elastic_tangents(i);
+          if (!elastic || !holds_elastic_matrix[i])
+            compute_cell_tangent(i, tangent_scratch[chunk]);
+          holds_elastic_matrix[i] = elastic;
         }
     });
 
+    const std::vector<unsigned int>     &cells = point_loop.get_cells();
     std::vector<types::global_dof_index> dofs(kinematics.n_modes() *
                                               strain_operator.dofs_per_cell());
-    for (const unsigned int c : point_loop.get_cells())
+    for (unsigned int i = 0; i < cells.size(); ++i)
       {
-        coupled_cell_dofs(c, dofs);
-        add(dofs,
-            cell_is_elastic[c] ? elastic_cell_matrices[c] : cell_matrices[c]);
+        coupled_cell_dofs(cells[i], dofs);
+        add(dofs, cell_matrices[i]);
       }
   }
 

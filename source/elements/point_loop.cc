@@ -120,9 +120,6 @@ namespace thinlayer
 
     const unsigned int n_local =
       kinematics.n_modes() * strain_operator.dofs_per_cell();
-    cell_body_loads.assign(std::size_t(n_cells) * n_local, 0.);
-    cell_internal_forces.assign(std::size_t(n_cells) * n_local, 0.);
-    cell_has_body_loads.assign(n_cells, 0);
     ChunkScratch scratch;
     scratch.du.resize(n_local);
     scratch.mode_strain.resize(kinematics.n_modes() *
@@ -137,6 +134,11 @@ namespace thinlayer
   {
     if (&cells != &this->cells)
       this->cells = cells;
+    const std::size_t n_local =
+      kinematics->n_modes() * strain_operator->dofs_per_cell();
+    cell_body_loads.assign(this->cells.size() * n_local, 0.);
+    cell_internal_forces.assign(this->cells.size() * n_local, 0.);
+    cell_has_body_loads.assign(this->cells.size(), 0);
     // A few chunks per thread balance the plastic zone's extra work.
     chunks = std::min<unsigned int>(4 * MultithreadInfo::n_threads(),
                                     this->cells.size());
@@ -197,11 +199,12 @@ namespace thinlayer
     for (unsigned int m = 0; m < n_modes; ++m)
       {
         Vector<double> &target = body_loads[m];
-        for (const unsigned int c : cells)
+        for (unsigned int i = 0; i < cells.size(); ++i)
           {
-            const types::global_dof_index *dofs = strain_operator->cell_dofs(c);
-            const std::size_t slot = (std::size_t(c) * n_modes + m) * n;
-            if (cell_has_body_loads[c])
+            const types::global_dof_index *dofs =
+              strain_operator->cell_dofs(cells[i]);
+            const std::size_t slot = (std::size_t(i) * n_modes + m) * n;
+            if (cell_has_body_loads[i])
               for (unsigned int i = 0; i < n; ++i)
                 target[dofs[i]] += cell_body_loads[slot + i];
             if (PointRule::with_internal_forces)
@@ -232,15 +235,16 @@ namespace thinlayer
     std::vector<double>  &du          = scratch.du;
     auto                 &mode_strain = scratch.mode_strain;
 
-    for (unsigned int i = begin; i < end; ++i)
+    for (unsigned int position = begin; position < end; ++position)
       {
-        const unsigned int             c    = cells[i];
+        const unsigned int             c    = cells[position];
         const MaterialLaw             &law  = *(*cell_law)[c];
         const types::global_dof_index *dofs = B.cell_dofs(c);
-        double *cell_loads = &cell_body_loads[std::size_t(c) * n_modes * n];
+        double                        *cell_loads =
+          &cell_body_loads[std::size_t(position) * n_modes * n];
         double *cell_forces =
           PointRule::with_internal_forces
-            ? &cell_internal_forces[std::size_t(c) * n_modes * n]
+            ? &cell_internal_forces[std::size_t(position) * n_modes * n]
             : nullptr;
         bool has_body_loads = false;
         for (unsigned int m = 0; m < n_modes; ++m)
@@ -297,12 +301,12 @@ namespace thinlayer
                 n_yielding += rule(law,
                                    state,
                                    strain,
-                                   std::size_t(p) * n_stations + s,
+                                   tangent_index(position, q, s),
                                    add_body_load,
                                    add_force);
               }
           }
-        cell_has_body_loads[c] = has_body_loads;
+        cell_has_body_loads[position] = has_body_loads;
       }
     return n_yielding;
   }

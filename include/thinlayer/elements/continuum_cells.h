@@ -142,13 +142,15 @@ namespace thinlayer
     coupled_cell_dofs(const unsigned int                    c,
                       std::vector<types::global_dof_index> &dofs) const;
 
-    /// Newton's matrix of cell @p c with the kept tangents.
+    /// Newton's matrix of the cell at position @p i of the point loop's
+    /// cells, with the kept tangents.
     void
-    compute_cell_tangent(const unsigned int c, TangentScratch &scratch);
+    compute_cell_tangent(const unsigned int i, TangentScratch &scratch);
 
-    /// Whether every tangent of cell @p c is its elastic one.
+    /// Whether every tangent of the cell at position @p i of the point
+    /// loop's cells is its elastic one.
     bool
-    elastic_tangents(const unsigned int c) const;
+    elastic_tangents(const unsigned int i) const;
 
     const DoFHandler<dim> &dof_handler;
     /// To compute the strain operator again for a rank's cells.
@@ -169,13 +171,15 @@ namespace thinlayer
     /// The rank of every cell (empty: all this rank's).
     std::vector<unsigned int> cell_owner;
 
-    /// Newton's state, allocated by add_coupled_sparsity(): the consistent
-    /// tangent at every point and station (point-major), each cell's
-    /// matrix, and its elastic matrix.
+    /// Newton's state for the point loop's cells (this rank's), by their
+    /// position in its list, allocated by add_coupled_sparsity(): the
+    /// consistent tangent at every point and station
+    /// (PointLoop::tangent_index()), each cell's matrix, and whether that
+    /// matrix is the elastic one (a cell elastic again needs it
+    /// recomputed; one elastic throughout, never).
     std::vector<SymmetricTensor<4, 3>> tangents;
     std::vector<FullMatrix<double>>    cell_matrices;
-    std::vector<FullMatrix<double>>    elastic_cell_matrices;
-    std::vector<unsigned char>         cell_is_elastic;
+    std::vector<unsigned char>         holds_elastic_matrix;
     std::vector<TangentScratch>        tangent_scratch;
   };
 

@@ -39,7 +39,9 @@ namespace thinlayer
    *
    * On many ranks each loop runs over the cells this rank owns
    * (set_cells()); what they add is then summed over the ranks by the
-   * Analysis.
+   * Analysis. Every per-cell slot is kept only for those cells, by their
+   * position in get_cells(): a rank's memory for them falls with the
+   * number of ranks.
    */
   class PointLoop
   {
@@ -82,7 +84,8 @@ namespace thinlayer
 
     /**
      * Return mapping at every point and station. With @p tangents (one per
-     * point and station, point-major), the consistent tangents are stored
+     * point and station of the loop's cells, point-major in the order of
+     * get_cells(): tangent_index()), the consistent tangents are stored
      * there. Returns the number of yielding points and stations.
      */
     unsigned int
@@ -95,6 +98,17 @@ namespace thinlayer
     /// the loop's cells.
     void
     add_internal_forces(ModeVectors &internal_forces) const;
+
+    /// Where the tangent of point @p q, station @p s of the cell at
+    /// position @p i in get_cells() is kept in return_mapping_update()'s
+    /// @p tangents.
+    std::size_t
+    tangent_index(const unsigned int i,
+                  const unsigned int q,
+                  const unsigned int s) const
+    {
+      return (std::size_t(i) * n_q + q) * kinematics->n_stations() + s;
+    }
 
     /// How many chunks the cells are split into.
     unsigned int
@@ -169,12 +183,12 @@ namespace thinlayer
     /// The cells the point rules run over.
     std::vector<unsigned int> cells;
 
-    /// Each cell's nodal body loads (viscoplastic: their increments), per
-    /// mode: n_modes * dofs_per_cell entries from c * n_modes *
-    /// dofs_per_cell on.
+    /// Each loop cell's nodal body loads (viscoplastic: their increments),
+    /// per mode: n_modes * dofs_per_cell entries from i * n_modes *
+    /// dofs_per_cell on for the cell at position i in cells.
     std::vector<double> cell_body_loads;
-    /// Each cell's nodal internal forces (return mapping), laid out as
-    /// cell_body_loads.
+    /// Each loop cell's nodal internal forces (return mapping), laid out
+    /// as cell_body_loads.
     std::vector<double> cell_internal_forces;
     /// Whether a cell's slot of cell_body_loads holds anything (0 when none
     /// of its points yields): the serial pass skips the cells with 0.
