@@ -78,6 +78,9 @@ namespace thinlayer
                     /*symmetric=*/true);
                 mode.distributed_factorisation->factorize(
                   *mode.distributed_stiffness, owned_per_rank);
+                // MUMPS holds its own copy of the entries; the matrix is
+                // never needed again.
+                mode.distributed_stiffness.reset();
               }
           }
         catch (const SingularMatrix &)

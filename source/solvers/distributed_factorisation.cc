@@ -7,27 +7,42 @@
 
 #include <stdexcept>
 
-#include <petscksp.h>
 #include <petscmat.h>
 
 namespace thinlayer
 {
   struct DistributedFactorisation::Solver
   {
-    KSP ksp = nullptr;
-    /// The matrix the KSP was set up with: a next factorisation of it
-    /// (Newton's tangent, same pattern, new values) reuses MUMPS's
-    /// symbolic analysis.
-    Mat matrix = nullptr;
+    /// MUMPS's factor. It keeps no reference to the matrix it was
+    /// factorised from: the caller may free that matrix (the elastic
+    /// stiffness, factorised once) and keep only the factor.
+    Mat factor = nullptr;
+    /// PETSc's unique id of the matrix factorised last (ids, unlike
+    /// addresses, are never reused): a next factorisation of the same
+    /// matrix (Newton's tangent, same pattern, new values) redoes only the
+    /// numerical factorisation.
+    PetscInt64 matrix_id = -1;
     /// The right-hand side and solution in PETSc's layout.
     RowDistribution rows;
 
     ~Solver()
     {
-      if (ksp != nullptr)
-        KSPDestroy(&ksp);
+      if (factor != nullptr)
+        MatDestroy(&factor);
     }
   };
+
+
+  namespace
+  {
+    /// MUMPS's codes for a work space that its analysis estimated too
+    /// small (INFOG(1)): -8 and -14 integer, -9 real.
+    bool
+    work_space_too_small(const PetscInt error_code)
+    {
+      return error_code == -8 || error_code == -9 || error_code == -14;
+    }
+  } // namespace
 
 
   DistributedFactorisation::DistributedFactorisation(const bool symmetric)
@@ -43,84 +58,105 @@ namespace thinlayer
     const PETScWrappers::MPI::SparseMatrix &matrix,
     const std::vector<IndexSet>            &owned_per_rank)
   {
+    const PetscInt error_code = try_factorize(matrix, owned_per_rank, true);
+    // In parallel MUMPS schedules its work as it goes, and may need more
+    // than its estimate: then once more with its own margin.
+    if (symmetric && work_space_too_small(error_code))
+      try_factorize(matrix, owned_per_rank, false);
+  }
+
+
+  PetscInt
+  DistributedFactorisation::try_factorize(
+    const PETScWrappers::MPI::SparseMatrix &matrix,
+    const std::vector<IndexSet>            &owned_per_rank,
+    const bool                              exact_work_space)
+  {
     const MPI_Comm comm = mpi::communicator();
     Mat            A    = matrix;
-    PetscErrorCode ierr = 0;
-    PC             pc;
-    if (solver && solver->matrix == A)
+    PetscInt64     id   = -1;
+    PetscObjectGetId(reinterpret_cast<PetscObject>(A), &id);
+    const bool new_pattern = !solver || solver->matrix_id != id;
+    if (new_pattern)
       {
-        // The same matrix with new values: PETSc sees them changed and
-        // redoes only the numerical factorisation.
-        KSPSetOperators(solver->ksp, A, A);
-        KSPGetPC(solver->ksp, &pc);
-      }
-    else
-      {
-        solver         = std::make_unique<Solver>();
-        solver->matrix = A;
+        solver            = std::make_unique<Solver>();
+        solver->matrix_id = id;
         solver->rows.reinit(owned_per_rank, comm);
-
         if (symmetric)
           MatSetOption(A, MAT_SPD, PETSC_TRUE);
-        ierr = KSPCreate(comm, &solver->ksp);
+        const PetscErrorCode ierr =
+          MatGetFactor(A,
+                       MATSOLVERMUMPS,
+                       symmetric ? MAT_FACTOR_CHOLESKY : MAT_FACTOR_LU,
+                       &solver->factor);
         AssertThrow(ierr == 0, ExcPETScError(ierr));
-        KSPSetOperators(solver->ksp, A, A);
-        KSPSetType(solver->ksp, KSPPREONLY);
-        KSPGetPC(solver->ksp, &pc);
-        PCSetType(pc, symmetric ? PCCHOLESKY : PCLU);
-        PCFactorSetMatSolverType(pc, MATSOLVERMUMPS);
-        PCFactorSetUpMatSolverType(pc);
-        Mat new_factor = nullptr;
-        PCFactorGetMatrix(pc, &new_factor);
         // Null pivots detected (ICNTL(24)), counted in INFOG(28): a pivot
         // below MUMPS's threshold is round-off of a singular matrix (a
         // mechanism, interface elements too soft for the cells beside
         // them), which L D L^T would otherwise divide by without complaint.
-        MatMumpsSetIcntl(new_factor, 24, 1);
+        MatMumpsSetIcntl(solver->factor, 24, 1);
+        // Without pivoting (a positive definite matrix) MUMPS's estimate of
+        // its work space is its need, up to its dynamic scheduling on
+        // several ranks: its default margin of 20% (ICNTL(14)) is memory
+        // held for nothing, a fifth of the factor's.
+        if (symmetric && exact_work_space)
+          MatMumpsSetIcntl(solver->factor, 14, 0);
       }
-    Mat factor = nullptr;
-    PCFactorGetMatrix(pc, &factor);
+
     // A singular matrix is an answer (a mechanism, missing supports), not
-    // an error for PETSc to print: it is read off the preconditioner.
+    // an error for PETSc to print: it is read off the factor.
+    MatFactorInfo info;
+    MatFactorInfoInitialize(&info);
     PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
-    ierr = KSPSetUp(solver->ksp);
+    PetscErrorCode ierr = 0;
+    if (new_pattern)
+      ierr =
+        symmetric
+          ? MatCholeskyFactorSymbolic(solver->factor, A, nullptr, &info)
+          : MatLUFactorSymbolic(solver->factor, A, nullptr, nullptr, &info);
+    if (ierr == 0)
+      ierr = symmetric ? MatCholeskyFactorNumeric(solver->factor, A, &info)
+                       : MatLUFactorNumeric(solver->factor, A, &info);
     PetscPopErrorHandler();
-    PCFailedReason reason = PC_NOERROR;
-    PCGetFailedReason(pc, &reason);
+    MatFactorError factor_error = MAT_FACTOR_NOERROR;
+    MatFactorGetError(solver->factor, &factor_error);
+
     // MUMPS's own code (INFOG(1), the same on every rank): -10 is a
     // numerically singular matrix; others are failures of the solver.
     // A matrix meant to be positive definite with a negative pivot
     // (INFOG(12)) is singular up to round-off: CHOLMOD on one rank finds it
     // not positive definite.
     PetscInt error_code = 0, singular_pivots = 0, negative_pivots = 0;
-    MatMumpsGetInfog(factor, 1, &error_code);
+    MatMumpsGetInfog(solver->factor, 1, &error_code);
     if (error_code >= 0)
       {
-        MatMumpsGetInfog(factor, 28, &singular_pivots); // null pivots
+        MatMumpsGetInfog(solver->factor, 28, &singular_pivots); // null pivots
         if (symmetric)
-          MatMumpsGetInfog(factor, 12, &negative_pivots);
+          MatMumpsGetInfog(solver->factor, 12, &negative_pivots);
         singular_pivots += negative_pivots;
       }
-    const bool failed = Utilities::MPI::max(ierr != 0 || reason != PC_NOERROR ||
-                                                singular_pivots > 0
-                                              ? 1
-                                              : 0,
-                                            comm) == 1;
-    if (failed)
-      {
-        solver.reset();
-        const bool singular = error_code == -10 || singular_pivots > 0 ||
-                              reason == PC_FACTOR_NUMERIC_ZEROPIVOT ||
-                              reason == PC_FACTOR_STRUCT_ZEROPIVOT;
-        if (singular)
-          throw SingularMatrix("MUMPS: the matrix is singular");
-        throw LinearSolverFailure(
-          "MUMPS could not factorise the stiffness matrix (its error code "
-          "INFOG(1) = " +
-          std::to_string(error_code) +
-          "; -8, -9, -13 and -19 mean too little memory, -38 a parallel "
-          "ordering this build of MUMPS lacks)");
-      }
+    const bool failed =
+      Utilities::MPI::max(ierr != 0 || factor_error != MAT_FACTOR_NOERROR ||
+                              singular_pivots > 0
+                            ? 1
+                            : 0,
+                          comm) == 1;
+    if (!failed)
+      return 0;
+    solver.reset();
+    if (exact_work_space && work_space_too_small(error_code))
+      return error_code;
+    const bool singular = error_code == -10 || singular_pivots > 0 ||
+                          factor_error == MAT_FACTOR_NUMERIC_ZEROPIVOT ||
+                          factor_error == MAT_FACTOR_STRUCT_ZEROPIVOT;
+    if (singular)
+      throw SingularMatrix("MUMPS: the matrix is singular");
+    throw LinearSolverFailure(
+      "MUMPS could not factorise the stiffness matrix (its error code "
+      "INFOG(1) = " +
+      std::to_string(error_code) +
+      "; -8, -9, -13 and -19 mean too little memory, -38 a parallel "
+      "ordering this build of MUMPS lacks)");
   }
 
 
@@ -129,7 +165,7 @@ namespace thinlayer
   {
     Assert(solver, ExcMessage("factorize() first."));
     solver->rows.scatter(rhs);
-    KSPSolve(solver->ksp, solver->rows.rhs, solver->rows.solution);
+    MatSolve(solver->factor, solver->rows.rhs, solver->rows.solution);
     solver->rows.gather(rhs);
   }
 } // namespace thinlayer

@@ -48,9 +48,9 @@ namespace thinlayer
     /// f - K u_prescribed at unit load factor.
     Vector<double> unit_rhs;
 
-    /// On several ranks: the condensed stiffness, and its factors (made
-    /// only there: a PETSc object needs PETSc started, which one rank
-    /// without mpirun never does).
+    /// On several ranks: the condensed stiffness (freed once factorised),
+    /// and its factors (made only there: a PETSc object needs PETSc
+    /// started, which one rank without mpirun never does).
     std::unique_ptr<PETScWrappers::MPI::SparseMatrix> distributed_stiffness;
     std::unique_ptr<DistributedFactorisation>         distributed_factorisation;
 

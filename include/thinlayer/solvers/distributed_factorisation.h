@@ -43,7 +43,8 @@ namespace thinlayer
      * fails otherwise (on every rank: the answer is the same on all).
      * Factorising the same matrix object again after a success (new
      * values on the same pattern, as Newton's tangent) reuses MUMPS's
-     * ordering and symbolic analysis.
+     * ordering and symbolic analysis. The factor keeps no reference to
+     * @p matrix, which may be freed once factorised for good.
      */
     void
     factorize(const PETScWrappers::MPI::SparseMatrix &matrix,
@@ -55,6 +56,17 @@ namespace thinlayer
     solve(Vector<double> &rhs) const;
 
   private:
+    /**
+     * One attempt of factorize(), with MUMPS's work space as its analysis
+     * estimates it (@p exact_work_space, for a symmetric matrix) or with
+     * MUMPS's own margin. Returns 0, or MUMPS's code for too small a work
+     * space when @p exact_work_space; throws as factorize() otherwise.
+     */
+    PetscInt
+    try_factorize(const PETScWrappers::MPI::SparseMatrix &matrix,
+                  const std::vector<IndexSet>            &owned_per_rank,
+                  const bool                              exact_work_space);
+
     const bool symmetric;
     /// PETSc's solver state, behind a pointer to keep its headers out.
     struct Solver;
