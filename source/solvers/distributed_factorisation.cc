@@ -24,6 +24,8 @@ namespace thinlayer
     PetscInt64 matrix_id = -1;
     /// The right-hand side and solution in PETSc's layout.
     RowDistribution rows;
+    /// Whether the last factorisation succeeded: the factor may be used.
+    bool factorised = false;
 
     ~Solver()
     {
@@ -135,15 +137,24 @@ namespace thinlayer
           MatMumpsGetInfog(solver->factor, 12, &negative_pivots);
         singular_pivots += negative_pivots;
       }
-    const bool failed =
+    // 2: MUMPS failed; 1: only the pivots show the matrix singular.
+    const int verdict =
       Utilities::MPI::max(ierr != 0 || factor_error != MAT_FACTOR_NOERROR ||
-                              singular_pivots > 0
-                            ? 1
-                            : 0,
-                          comm) == 1;
+                              error_code < 0
+                            ? 2
+                            : (singular_pivots > 0 ? 1 : 0),
+                          comm);
+    const bool mumps_failed = verdict == 2;
+    const bool failed       = verdict > 0;
+    solver->factorised      = !failed;
     if (!failed)
       return 0;
-    solver.reset();
+    // MUMPS's analysis stands when only the pivots showed the matrix
+    // singular (Newton's tangent at a mechanism): the next factorisation
+    // of the same matrix needs only new values. After MUMPS's own failure
+    // it starts afresh.
+    if (mumps_failed)
+      solver.reset();
     if (exact_work_space && work_space_too_small(error_code))
       return error_code;
     const bool singular = error_code == -10 || singular_pivots > 0 ||
@@ -163,7 +174,8 @@ namespace thinlayer
   void
   DistributedFactorisation::solve(Vector<double> &rhs) const
   {
-    Assert(solver, ExcMessage("factorize() first."));
+    Assert(solver && solver->factorised,
+           ExcMessage("factorize() first, successfully."));
     solver->rows.scatter(rhs);
     MatSolve(solver->factor, solver->rows.rhs, solver->rows.solution);
     solver->rows.gather(rhs);
