@@ -150,8 +150,11 @@ namespace thinlayer
                                              ModeVectors       &internal_forces,
                                              ModeVectors       &stress_excess)
   {
-    Assert(!with_tangents || !tangents.empty(),
-           ExcMessage("Tangents are kept only after add_coupled_sparsity()."));
+    Assert(!with_tangents ||
+             tangents.size() ==
+               point_loop.tangent_index(point_loop.get_cells().size(), 0, 0),
+           ExcMessage("Tangents are kept only after add_coupled_sparsity(), "
+                      "for the point loop's cells at that time."));
     return point_loop.return_mapping_update(step_increment,
                                             with_tangents ? &tangents : nullptr,
                                             internal_forces,
