@@ -17,9 +17,10 @@ largest peak memory of any rank. Medians of REPEAT runs. A run whose CG
 does not converge in Solver/Linear solver iterations (here 20000) is
 listed as failed.
 
-    /usr/bin/python3 -m benchmarks.linear_solvers [--repeat 3] [--ranks 1,2] [--large]
+    /usr/bin/python3 -m benchmarks.linear_solvers [--repeat 3] [--ranks 1,2] [--large] [--only TEXT]
 
---large adds Prandtl at 131072 cells. Writes output/benchmarks/
+--large adds Prandtl at 131072 cells; --only runs the scenes whose label
+contains TEXT ("131072"). Writes output/benchmarks/
 linear_solvers.csv and linear_solvers.md and prints the table.
 """
 import argparse
@@ -77,10 +78,13 @@ def main():
     parser.add_argument("--repeat", type=int, default=3)
     parser.add_argument("--ranks", default="1")
     parser.add_argument("--large", action="store_true")
+    parser.add_argument("--only", default="", help="run the scenes whose label contains this")
     args = parser.parse_args()
     os.makedirs(OUT, exist_ok=True)
     rows = []
     for label, parameter_file, entries in scenes(args.large):
+        if args.only not in label:
+            continue
         for ranks in (int(r) for r in args.ranks.split(",")):
             for name, solver in SOLVERS:
                 directory = os.path.join(OUT, "runs", "linear-solver")
