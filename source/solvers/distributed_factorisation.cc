@@ -60,7 +60,8 @@ namespace thinlayer
     const PETScWrappers::MPI::SparseMatrix &matrix,
     const std::vector<IndexSet>            &owned_per_rank)
   {
-    const PetscInt error_code = try_factorize(matrix, owned_per_rank, true);
+    const PetscInt error_code =
+      try_factorize(matrix, owned_per_rank, /*exact_work_space=*/symmetric);
     // In parallel MUMPS schedules its work as it goes, and may need more
     // than its estimate: then once more with its own margin.
     if (symmetric && work_space_too_small(error_code))
@@ -101,7 +102,7 @@ namespace thinlayer
         // its work space is its need, up to its dynamic scheduling on
         // several ranks: its default margin of 20% (ICNTL(14)) is memory
         // held for nothing, a fifth of the factor's.
-        if (symmetric && exact_work_space)
+        if (exact_work_space)
           MatMumpsSetIcntl(solver->factor, 14, 0);
       }
 

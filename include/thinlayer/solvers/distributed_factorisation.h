@@ -58,8 +58,9 @@ namespace thinlayer
   private:
     /**
      * One attempt of factorize(), with MUMPS's work space as its analysis
-     * estimates it (@p exact_work_space, for a symmetric matrix) or with
-     * MUMPS's own margin. Returns 0, or MUMPS's code for too small a work
+     * estimates it (@p exact_work_space: only for a positive definite
+     * matrix, which MUMPS factorises without pivoting) or with MUMPS's own
+     * margin. Returns 0, or MUMPS's code for too small a work
      * space when @p exact_work_space; throws as factorize() otherwise.
      */
     PetscInt
