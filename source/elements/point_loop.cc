@@ -108,12 +108,12 @@ namespace thinlayer
                     const std::vector<const MaterialLaw *> &cell_law,
                     const std::vector<PointHistory *>      &history)
   {
-    this->strain_operator = &strain_operator;
-    this->kinematics      = &kinematics;
-    this->cell_law        = &cell_law;
-    this->history         = &history;
-    this->n_q             = n_q;
-    n_cells               = cell_law.size();
+    this->strain_operator      = &strain_operator;
+    this->kinematics           = &kinematics;
+    this->cell_law             = &cell_law;
+    this->history              = &history;
+    this->n_q                  = n_q;
+    const unsigned int n_cells = cell_law.size();
     cells.resize(n_cells);
     for (unsigned int c = 0; c < n_cells; ++c)
       cells[c] = c;

@@ -64,7 +64,7 @@ namespace thinlayer
       try_factorize(matrix, owned_per_rank, /*exact_work_space=*/symmetric);
     // In parallel MUMPS schedules its work as it goes, and may need more
     // than its estimate: then once more with its own margin.
-    if (symmetric && work_space_too_small(error_code))
+    if (work_space_too_small(error_code))
       try_factorize(matrix, owned_per_rank, false);
   }
 

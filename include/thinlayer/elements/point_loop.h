@@ -178,7 +178,6 @@ namespace thinlayer
     const std::vector<const MaterialLaw *> *cell_law        = nullptr;
     const std::vector<PointHistory *>      *history         = nullptr;
     unsigned int                            n_q             = 0;
-    unsigned int                            n_cells         = 0;
     unsigned int                            chunks          = 0;
     /// The cells the point rules run over.
     std::vector<unsigned int> cells;
