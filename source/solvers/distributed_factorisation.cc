@@ -27,6 +27,37 @@ namespace thinlayer
     /// Whether the last factorisation succeeded: the factor may be used.
     bool factorised = false;
 
+    /// MUMPS's factor of @p A (of PETSc id @p id), not yet analysed, as
+    /// factorize() asks for it.
+    Solver(Mat                          A,
+           const PetscInt64             id,
+           const std::vector<IndexSet> &owned_per_rank,
+           const bool                   symmetric,
+           const bool                   exact_work_space)
+      : matrix_id(id)
+    {
+      rows.reinit(owned_per_rank, mpi::communicator());
+      if (symmetric)
+        MatSetOption(A, MAT_SPD, PETSC_TRUE);
+      const PetscErrorCode ierr =
+        MatGetFactor(A,
+                     MATSOLVERMUMPS,
+                     symmetric ? MAT_FACTOR_CHOLESKY : MAT_FACTOR_LU,
+                     &factor);
+      AssertThrow(ierr == 0, ExcPETScError(ierr));
+      // Null pivots detected (ICNTL(24)), counted in INFOG(28): a pivot
+      // below MUMPS's threshold is round-off of a singular matrix (a
+      // mechanism, interface elements too soft for the cells beside
+      // them), which L D L^T would otherwise divide by without complaint.
+      MatMumpsSetIcntl(factor, 24, 1);
+      // Without pivoting (a positive definite matrix) MUMPS's estimate of
+      // its work space is its need, up to its dynamic scheduling on
+      // several ranks: its default margin of 20% (ICNTL(14)) is memory
+      // held for nothing, a fifth of the factor's.
+      if (exact_work_space)
+        MatMumpsSetIcntl(factor, 14, 0);
+    }
+
     ~Solver()
     {
       if (factor != nullptr)
@@ -81,30 +112,8 @@ namespace thinlayer
     PetscObjectGetId(reinterpret_cast<PetscObject>(A), &id);
     const bool new_pattern = !solver || solver->matrix_id != id;
     if (new_pattern)
-      {
-        solver            = std::make_unique<Solver>();
-        solver->matrix_id = id;
-        solver->rows.reinit(owned_per_rank, comm);
-        if (symmetric)
-          MatSetOption(A, MAT_SPD, PETSC_TRUE);
-        const PetscErrorCode ierr =
-          MatGetFactor(A,
-                       MATSOLVERMUMPS,
-                       symmetric ? MAT_FACTOR_CHOLESKY : MAT_FACTOR_LU,
-                       &solver->factor);
-        AssertThrow(ierr == 0, ExcPETScError(ierr));
-        // Null pivots detected (ICNTL(24)), counted in INFOG(28): a pivot
-        // below MUMPS's threshold is round-off of a singular matrix (a
-        // mechanism, interface elements too soft for the cells beside
-        // them), which L D L^T would otherwise divide by without complaint.
-        MatMumpsSetIcntl(solver->factor, 24, 1);
-        // Without pivoting (a positive definite matrix) MUMPS's estimate of
-        // its work space is its need, up to its dynamic scheduling on
-        // several ranks: its default margin of 20% (ICNTL(14)) is memory
-        // held for nothing, a fifth of the factor's.
-        if (exact_work_space)
-          MatMumpsSetIcntl(solver->factor, 14, 0);
-      }
+      solver = std::make_unique<Solver>(
+        A, id, owned_per_rank, symmetric, exact_work_space);
 
     // A singular matrix is an answer (a mechanism, missing supports), not
     // an error for PETSc to print: it is read off the factor.
