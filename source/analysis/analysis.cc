@@ -123,15 +123,13 @@ namespace thinlayer
                               systems[m]->constraints);
       }
 
+    // On many ranks, each holds and runs the points of its part of the
+    // mesh.
     groups = create_element_groups(
-      parameters, dof_handler, mapping, quadrature, kinematics);
+      parameters, dof_handler, mapping, quadrature, kinematics, partition);
     continuum = dynamic_cast<const ContinuumCells<dim> *>(groups[0].get());
     Assert(continuum != nullptr,
            ExcMessage("The first element group must be the continuum."));
-    // On many ranks, each runs the point rules of its part of the mesh.
-    if (mpi::n_ranks() > 1)
-      for (const auto &group : groups)
-        group->distribute(partition);
 
     DynamicSparsityPattern dsp(dof_handler.n_dofs());
     for (const auto &group : groups)
@@ -251,12 +249,22 @@ namespace thinlayer
     pending        = true;
 
     // Overflow anywhere is no state: the step fails, never converges.
-    share_states();
     StateCheck check;
     for (const auto &increment : increment_vectors)
       check.finite = check.finite && std::isfinite(increment.l1_norm());
     for (const auto &group : groups)
       group->check_state(check);
+    if (mpi::n_ranks() > 1)
+      {
+        // Each rank checked its own points. A rank none of whose points
+        // can yield has no ratio (NaN), which the maximum passes over.
+        check.finite        = mpi::sum(check.finite ? 0u : 1u) == 0;
+        const double lowest = -std::numeric_limits<double>::infinity();
+        const double ratio  = mpi::max(
+          std::isnan(check.max_yield_ratio) ? lowest : check.max_yield_ratio);
+        check.max_yield_ratio =
+          ratio == lowest ? std::numeric_limits<double>::quiet_NaN() : ratio;
+      }
     compute_internal_forces();
     for (const auto &forces : internal_force_vectors)
       check.finite = check.finite && std::isfinite(forces.linfty_norm());
@@ -289,21 +297,8 @@ namespace thinlayer
 
   template <int dim>
   void
-  Analysis<dim>::share_states()
-  {
-    if (states_shared)
-      return;
-    for (const auto &group : groups)
-      group->share_states();
-    states_shared = true;
-  }
-
-
-  template <int dim>
-  void
   Analysis<dim>::accept_step(const double load_factor)
   {
-    share_states();
     for (unsigned int m = 0; m < systems.size(); ++m)
       solution_vectors[m] += increment_vectors[m];
     for (const auto &group : groups)
@@ -320,7 +315,6 @@ namespace thinlayer
   {
     for (auto &increment : increment_vectors)
       increment = 0;
-    share_states();
     for (const auto &group : groups)
       group->reject();
     current_lambda = accepted_lambda;
@@ -357,7 +351,6 @@ namespace thinlayer
   unsigned int
   Analysis<dim>::viscoplastic_update(ModeVectors &body_load_change)
   {
-    states_shared = false;
     // On many ranks each adds its points' loads, then the sum is added.
     const bool   split      = mpi::n_ranks() > 1;
     ModeVectors &loads      = split ? rank_loads : body_load_change;
@@ -387,7 +380,6 @@ namespace thinlayer
         internal_force_vectors[m] = 0;
         stress_excess[m]          = 0;
       }
-    states_shared           = false;
     unsigned int n_yielding = 0;
     for (const auto &group : groups)
       n_yielding += group->return_mapping_update(increment_vectors,

@@ -1,11 +1,9 @@
 #include <deal.II/dofs/dof_tools.h>
 
 #include <thinlayer/elements/continuum_cells.h>
-#include <thinlayer/parallel/mpi.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <limits>
 
 namespace thinlayer
@@ -16,13 +14,15 @@ namespace thinlayer
     const Mapping<dim>                                     &mapping,
     const Quadrature<dim>                                  &quadrature,
     const Kinematics                                       &kinematics,
-    const std::map<types::material_id, MaterialParameters> &materials)
+    const std::map<types::material_id, MaterialParameters> &materials,
+    const CellPartition                                    &partition)
     : dof_handler(dof_handler)
     , mapping(mapping)
     , quadrature(quadrature)
     , kinematics(kinematics)
     , n_q(quadrature.size())
     , time_step(std::numeric_limits<double>::infinity())
+    , all_cells(partition.owner.empty())
   {
     for (const auto &[id, material] : materials)
       {
@@ -32,23 +32,32 @@ namespace thinlayer
 
     const Triangulation<dim> &tria = dof_handler.get_triangulation();
     cell_law.resize(tria.n_active_cells());
-    history_storage.initialize(tria.begin_active(), tria.end(), n_q);
-    history.resize(tria.n_active_cells() * n_q);
     for (const auto &cell : tria.active_cell_iterators())
-      {
-        const unsigned int c = cell->active_cell_index();
-        cell_law[c]          = laws.at(cell->material_id()).get();
-        const auto points    = history_storage.get_data(cell);
-        for (unsigned int q = 0; q < n_q; ++q)
-          {
-            history[c * n_q + q] = points[q].get();
-            history[c * n_q + q]->stations.assign(kinematics.n_stations(),
-                                                  PointState());
-          }
-      }
+      cell_law[cell->active_cell_index()] = laws.at(cell->material_id()).get();
 
-    strain_operator.reinit(dof_handler, mapping, quadrature, kinematics);
-    point_loop.reinit(strain_operator, kinematics, n_q, cell_law, history);
+    std::vector<unsigned int> cells;
+    if (all_cells)
+      {
+        cells.resize(tria.n_active_cells());
+        for (unsigned int c = 0; c < cells.size(); ++c)
+          cells[c] = c;
+        strain_operator.reinit(dof_handler, mapping, quadrature, kinematics);
+      }
+    else
+      {
+        // Only this rank's points: their operator and their states.
+        cells = partition.owned_cells();
+        cell_position.assign(tria.n_active_cells(),
+                             numbers::invalid_unsigned_int);
+        for (unsigned int i = 0; i < cells.size(); ++i)
+          cell_position[cells[i]] = i;
+        strain_operator.reinit(
+          dof_handler, mapping, quadrature, kinematics, cells);
+      }
+    states.assign(std::size_t(cells.size()) * n_q * kinematics.n_stations(),
+                  PointState());
+    point_loop.reinit(
+      strain_operator, kinematics, n_q, cell_law, cells, states);
   }
 
 
@@ -58,7 +67,7 @@ namespace thinlayer
     DynamicSparsityPattern          &dsp,
     const AffineConstraints<double> &constraints) const
   {
-    if (cell_owner.empty())
+    if (all_cells)
       DoFTools::make_sparsity_pattern(dof_handler,
                                       dsp,
                                       constraints,
@@ -152,7 +161,7 @@ namespace thinlayer
   {
     Assert(!with_tangents ||
              tangents.size() ==
-               point_loop.tangent_index(point_loop.get_cells().size(), 0, 0),
+               point_loop.point_index(point_loop.get_cells().size(), 0, 0),
            ExcMessage("Tangents are kept only after add_coupled_sparsity(), "
                       "for the point loop's cells at that time."));
     return point_loop.return_mapping_update(step_increment,
@@ -172,55 +181,16 @@ namespace thinlayer
 
   template <int dim>
   void
-  ContinuumCells<dim>::distribute(const CellPartition &partition)
-  {
-    cell_owner                            = partition.owner;
-    const std::vector<unsigned int> owned = partition.owned_cells();
-    // Only this rank's points ask for the operator.
-    strain_operator.reinit(dof_handler, mapping, quadrature, kinematics, owned);
-    point_loop.set_cells(owned);
-  }
-
-
-  template <int dim>
-  void
-  ContinuumCells<dim>::share_states()
-  {
-    if (cell_owner.empty())
-      return;
-    const unsigned int n_stations = kinematics.n_stations();
-    const std::size_t  bytes      = sizeof(PointState) * n_q * n_stations;
-    mpi::share_from_owners(
-      cell_owner,
-      bytes,
-      [&](const unsigned int c, char *buffer) {
-        for (unsigned int q = 0; q < n_q; ++q)
-          std::memcpy(buffer + q * n_stations * sizeof(PointState),
-                      history[c * n_q + q]->stations.data(),
-                      n_stations * sizeof(PointState));
-      },
-      [&](const unsigned int c, const char *buffer) {
-        for (unsigned int q = 0; q < n_q; ++q)
-          std::memcpy(history[c * n_q + q]->stations.data(),
-                      buffer + q * n_stations * sizeof(PointState),
-                      n_stations * sizeof(PointState));
-      });
-  }
-
-
-  template <int dim>
-  void
   ContinuumCells<dim>::accept()
   {
-    for (PointHistory *point : history)
-      for (PointState &state : point->stations)
-        {
-          state.converged_stress = state.stress;
-          state.plastic_strain +=
-            state.step_plastic_strain - state.pending_plastic_strain;
-          state.step_plastic_strain    = 0;
-          state.pending_plastic_strain = 0;
-        }
+    for (PointState &state : states)
+      {
+        state.converged_stress = state.stress;
+        state.plastic_strain +=
+          state.step_plastic_strain - state.pending_plastic_strain;
+        state.step_plastic_strain    = 0;
+        state.pending_plastic_strain = 0;
+      }
   }
 
 
@@ -228,13 +198,12 @@ namespace thinlayer
   void
   ContinuumCells<dim>::reject()
   {
-    for (PointHistory *point : history)
-      for (PointState &state : point->stations)
-        {
-          state.stress                 = state.converged_stress;
-          state.step_plastic_strain    = 0;
-          state.pending_plastic_strain = 0;
-        }
+    for (PointState &state : states)
+      {
+        state.stress                 = state.converged_stress;
+        state.step_plastic_strain    = 0;
+        state.pending_plastic_strain = 0;
+      }
   }
 
 
@@ -245,11 +214,15 @@ namespace thinlayer
     // Overflow anywhere is no state: stresses whose invariants overflow
     // make the yield tests meaningless (NaN compares false, and a point
     // would count as elastic).
-    for (unsigned int p = 0; p < history.size(); ++p)
+    const std::vector<unsigned int> &cells = point_loop.get_cells();
+    for (unsigned int i = 0; i < cells.size(); ++i)
       {
-        const MaterialLaw &law = *cell_law[p / n_q];
-        for (const PointState &state : history[p]->stations)
+        const MaterialLaw &law = *cell_law[cells[i]];
+        for (std::size_t p = point_loop.point_index(i, 0, 0);
+             p < point_loop.point_index(i + 1, 0, 0);
+             ++p)
           {
+            const PointState &state = states[p];
             for (unsigned int k = 0;
                  k < SymmetricTensor<2, 3>::n_independent_components;
                  ++k)
@@ -310,7 +283,7 @@ namespace thinlayer
     for (unsigned int i = 0; i < cells.size(); ++i)
       for (unsigned int q = 0; q < n_q; ++q)
         for (unsigned int s = 0; s < n_stations; ++s)
-          tangents[point_loop.tangent_index(i, q, s)] =
+          tangents[point_loop.point_index(i, q, s)] =
             cell_law[cells[i]]->elasticity();
     point_loop.for_each_chunk([this](const unsigned int begin,
                                      const unsigned int end,
@@ -328,8 +301,8 @@ namespace thinlayer
   {
     const SymmetricTensor<4, 3> &elasticity =
       cell_law[point_loop.get_cells()[i]]->elasticity();
-    for (std::size_t k = point_loop.tangent_index(i, 0, 0);
-         k < point_loop.tangent_index(i + 1, 0, 0);
+    for (std::size_t k = point_loop.point_index(i, 0, 0);
+         k < point_loop.point_index(i + 1, 0, 0);
          ++k)
       if (!(tangents[k] == elasticity))
         return false;
@@ -368,7 +341,7 @@ namespace thinlayer
           for (unsigned int s = 0; s < n_stations; ++s)
             {
               const SymmetricTensor<4, 3> &C =
-                tangents[point_loop.tangent_index(i, q, s)];
+                tangents[point_loop.point_index(i, q, s)];
               const double weight =
                 kinematics.station_weight(s) * B.point_weight(p);
               for (unsigned int m = 0; m < n_modes; ++m)

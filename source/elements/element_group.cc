@@ -21,11 +21,16 @@ namespace thinlayer
                         const DoFHandler<dim> &dof_handler,
                         const Mapping<dim>    &mapping,
                         const Quadrature<dim> &quadrature,
-                        const Kinematics      &kinematics)
+                        const Kinematics      &kinematics,
+                        const CellPartition   &partition)
   {
     std::vector<std::unique_ptr<ElementGroup>> groups;
-    groups.push_back(std::make_unique<ContinuumCells<dim>>(
-      dof_handler, mapping, quadrature, kinematics, parameters.materials));
+    groups.push_back(std::make_unique<ContinuumCells<dim>>(dof_handler,
+                                                           mapping,
+                                                           quadrature,
+                                                           kinematics,
+                                                           parameters.materials,
+                                                           partition));
     if (!parameters.interface_elements.empty())
       {
         // The interface elements join the sides of quadrilaterals: a family
@@ -39,6 +44,7 @@ namespace thinlayer
                              kinematics,
                              parameters.interface_elements,
                              parameters.materials,
+                             partition,
                              parameters.parameter_file);
             groups.push_back(std::move(elements));
           }
@@ -59,11 +65,13 @@ namespace thinlayer
                         const DoFHandler<2> &,
                         const Mapping<2> &,
                         const Quadrature<2> &,
-                        const Kinematics &);
+                        const Kinematics &,
+                        const CellPartition &);
   template std::vector<std::unique_ptr<ElementGroup>>
   create_element_groups(const Parameters &,
                         const DoFHandler<3> &,
                         const Mapping<3> &,
                         const Quadrature<3> &,
-                        const Kinematics &);
+                        const Kinematics &,
+                        const CellPartition &);
 } // namespace thinlayer

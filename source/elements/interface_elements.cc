@@ -2,11 +2,9 @@
 
 #include <thinlayer/base/input_error.h>
 #include <thinlayer/elements/interface_elements.h>
-#include <thinlayer/parallel/mpi.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -22,6 +20,7 @@ namespace thinlayer
     const Kinematics                                               &kinematics,
     const std::map<types::boundary_id, InterfaceElementParameters> &curves,
     const std::map<types::material_id, MaterialParameters>         &materials,
+    const CellPartition                                            &partition,
     const std::string &parameter_file)
   {
     this->kinematics = &kinematics;
@@ -54,6 +53,17 @@ namespace thinlayer
             element.coupled_dofs.push_back(m * dof_handler.n_dofs() + dof);
         coupled_matrices.emplace_back(element.coupled_dofs.size(),
                                       element.coupled_dofs.size());
+      }
+
+    rank = partition.rank;
+    element_owner.clear();
+    point_owner.clear();
+    if (!partition.owner.empty())
+      {
+        for (const Element &element : elements)
+          element_owner.push_back(partition.owner[element.plus_cell]);
+        for (const IntegrationPoint &point : points)
+          point_owner.push_back(element_owner[point.element]);
       }
 
     states.assign(points.size() * kinematics.n_stations(),
@@ -404,38 +414,6 @@ namespace thinlayer
 
 
   void
-  InterfaceElements::distribute(const CellPartition &partition)
-  {
-    rank = partition.rank;
-    element_owner.resize(elements.size());
-    for (unsigned int k = 0; k < elements.size(); ++k)
-      element_owner[k] = partition.owner[elements[k].plus_cell];
-    point_owner.resize(points.size());
-    for (unsigned int p = 0; p < points.size(); ++p)
-      point_owner[p] = element_owner[points[p].element];
-  }
-
-
-  void
-  InterfaceElements::share_states()
-  {
-    if (point_owner.empty())
-      return;
-    const unsigned int n_stations = kinematics->n_stations();
-    const std::size_t  bytes      = n_stations * sizeof(InterfacePointState);
-    mpi::share_from_owners(
-      point_owner,
-      bytes,
-      [&](const unsigned int p, char *buffer) {
-        std::memcpy(buffer, &states[p * n_stations], bytes);
-      },
-      [&](const unsigned int p, const char *buffer) {
-        std::memcpy(&states[p * n_stations], buffer, bytes);
-      });
-  }
-
-
-  void
   InterfaceElements::accept()
   {
     for (InterfacePointState &state : states)
@@ -467,6 +445,8 @@ namespace thinlayer
     const unsigned int n_stations = kinematics ? kinematics->n_stations() : 1;
     for (unsigned int p = 0; p < points.size(); ++p)
       {
+        if (!owns_point(p))
+          continue;
         const InterfaceLaw &law = *elements[points[p].element].law;
         for (unsigned int s = 0; s < n_stations; ++s)
           {
@@ -567,6 +547,11 @@ namespace thinlayer
         std::vector<InterfaceValues> &values = result.stations.emplace_back();
         for (const unsigned int p : indices)
           {
+            if (!owns_point(p))
+              {
+                values.emplace_back();
+                continue;
+              }
             const InterfaceLaw        &law   = *elements[points[p].element].law;
             const InterfacePointState &state = states[p * n_stations + s];
             const Tensor<1, 3> djump = local_jump(points[p], s, step_increment);
@@ -588,6 +573,7 @@ namespace thinlayer
             v.plastic                     = state.yielding;
             values.push_back(v);
           }
+        sum_over_ranks(values);
       }
     return result;
   }

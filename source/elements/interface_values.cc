@@ -1,12 +1,58 @@
+#include <deal.II/lac/vector.h>
+
 #include <thinlayer/base/text_format.h>
 #include <thinlayer/elements/interface_values.h>
+#include <thinlayer/parallel/mpi.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
 
 namespace thinlayer
 {
+  void
+  sum_over_ranks(std::vector<InterfaceValues> &values)
+  {
+    if (mpi::n_ranks() == 1)
+      return;
+    // Every member, the flag as 0 or 1: a sum of the owner's value and
+    // zeros is the owner's value.
+    constexpr unsigned int n = 10;
+    Vector<double>         packed(n * values.size());
+    for (unsigned int k = 0; k < values.size(); ++k)
+      {
+        const InterfaceValues &v      = values[k];
+        const double           row[n] = {v.slip,
+                                         v.slip_out_of_plane,
+                                         v.opening,
+                                         v.slip_increment,
+                                         v.opening_increment,
+                                         v.shear_traction,
+                                         v.shear_traction_out_of_plane,
+                                         v.normal_traction,
+                                         v.yield_ratio,
+                               v.plastic ? 1. : 0.};
+        std::copy(row, row + n, packed.begin() + n * k);
+      }
+    mpi::sum(packed);
+    for (unsigned int k = 0; k < values.size(); ++k)
+      {
+        const double *row = packed.begin() + n * k;
+        values[k]         = {row[0],
+                             row[1],
+                             row[2],
+                             row[3],
+                             row[4],
+                             row[5],
+                             row[6],
+                             row[7],
+                             row[8],
+                             row[9] != 0};
+      }
+  }
+
+
   std::string
   profile_csv(const Profile &profile, const Kinematics &kinematics)
   {

@@ -106,17 +106,17 @@ namespace thinlayer
                     const Kinematics                       &kinematics,
                     const unsigned int                      n_q,
                     const std::vector<const MaterialLaw *> &cell_law,
-                    const std::vector<PointHistory *>      &history)
+                    const std::vector<unsigned int>        &cells,
+                    std::vector<PointState>                &states)
   {
-    this->strain_operator      = &strain_operator;
-    this->kinematics           = &kinematics;
-    this->cell_law             = &cell_law;
-    this->history              = &history;
-    this->n_q                  = n_q;
-    const unsigned int n_cells = cell_law.size();
-    cells.resize(n_cells);
-    for (unsigned int c = 0; c < n_cells; ++c)
-      cells[c] = c;
+    this->strain_operator = &strain_operator;
+    this->kinematics      = &kinematics;
+    this->cell_law        = &cell_law;
+    this->states          = &states;
+    this->n_q             = n_q;
+    this->cells           = cells;
+    Assert(states.size() == point_index(cells.size(), 0, 0),
+           ExcMessage("One state per point and station of the loop's cells."));
 
     const unsigned int n_local =
       kinematics.n_modes() * strain_operator.dofs_per_cell();
@@ -125,23 +125,12 @@ namespace thinlayer
     scratch.mode_strain.resize(kinematics.n_modes() *
                                strain_operator.n_parts());
     chunk_scratch.assign(4 * MultithreadInfo::n_threads(), scratch);
-    set_cells(cells);
-  }
-
-
-  void
-  PointLoop::set_cells(const std::vector<unsigned int> &cells)
-  {
-    if (&cells != &this->cells)
-      this->cells = cells;
-    const std::size_t n_local =
-      kinematics->n_modes() * strain_operator->dofs_per_cell();
-    cell_body_loads.assign(this->cells.size() * n_local, 0.);
-    cell_internal_forces.assign(this->cells.size() * n_local, 0.);
-    cell_has_body_loads.assign(this->cells.size(), 0);
+    cell_body_loads.assign(cells.size() * n_local, 0.);
+    cell_internal_forces.assign(cells.size() * n_local, 0.);
+    cell_has_body_loads.assign(cells.size(), 0);
     // A few chunks per thread balance the plastic zone's extra work.
-    chunks = std::min<unsigned int>(4 * MultithreadInfo::n_threads(),
-                                    this->cells.size());
+    chunks =
+      std::min<unsigned int>(4 * MultithreadInfo::n_threads(), cells.size());
     tasks.reserve(chunks);
   }
 
@@ -264,7 +253,7 @@ namespace thinlayer
 
             for (unsigned int s = 0; s < n_stations; ++s)
               {
-                PointState           &state = (*history)[p]->stations[s];
+                PointState &state = (*states)[point_index(position, q, s)];
                 SymmetricTensor<2, 3> strain;
                 for (unsigned int m = 0; m < n_modes; ++m)
                   {
@@ -301,7 +290,7 @@ namespace thinlayer
                 n_yielding += rule(law,
                                    state,
                                    strain,
-                                   tangent_index(position, q, s),
+                                   point_index(position, q, s),
                                    add_body_load,
                                    add_force);
               }
@@ -320,8 +309,9 @@ namespace thinlayer
     const unsigned int    n       = B.dofs_per_cell();
     const unsigned int    n_modes = k.n_modes();
     std::vector<double>   cell_forces(n_modes * n);
-    for (const unsigned int c : cells)
+    for (unsigned int position = 0; position < cells.size(); ++position)
       {
+        const unsigned int c = cells[position];
         std::fill(cell_forces.begin(), cell_forces.end(), 0.);
         for (unsigned int q = 0; q < n_q; ++q)
           {
@@ -329,7 +319,7 @@ namespace thinlayer
             for (unsigned int s = 0; s < k.n_stations(); ++s)
               {
                 const SymmetricTensor<2, 3> sigma =
-                  (*history)[p]->stations[s].stress *
+                  (*states)[point_index(position, q, s)].stress *
                   (k.station_weight(s) * B.point_weight(p));
                 for (unsigned int m = 0; m < n_modes; ++m)
                   for (unsigned int part = 0; part < B.n_parts(); ++part)

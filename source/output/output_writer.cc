@@ -207,6 +207,14 @@ namespace thinlayer
     const std::vector<LayerProfile> &interfaces,
     const bool                       with_vtu)
   {
+    // Every rank takes part: each holds the points of its own cells.
+    std::vector<NamedProfile> profiles;
+    for (const LayerProfile &interface : interfaces)
+      profiles.push_back(
+        {"interface-" + std::to_string(interface.get_material_id()),
+         interface.profile(analysis)});
+    for (NamedProfile &profile : analysis.profiles())
+      profiles.push_back(std::move(profile));
     if (!writes)
       return;
     const Kinematics &kinematics = analysis.get_kinematics();
@@ -225,10 +233,7 @@ namespace thinlayer
       DataOutBase::write_pvd_record(pvd, records);
       write_file(base + ".pvd", pvd.str());
     };
-    for (const LayerProfile &interface : interfaces)
-      write("interface-" + std::to_string(interface.get_material_id()),
-            interface.profile(analysis));
-    for (const NamedProfile &profile : analysis.profiles())
+    for (const NamedProfile &profile : profiles)
       write(profile.name, profile.profile);
   }
 
@@ -239,11 +244,13 @@ namespace thinlayer
                                     const Analysis<2> &analysis,
                                     const unsigned int slices)
   {
+    // Every rank takes part: each holds the points of its own cells.
+    const CellFields fields(analysis);
     if (!writes)
       return;
     std::ostringstream name;
     name << "revolved-" << std::setw(4) << std::setfill('0') << step << ".vtu";
-    write_file(name.str(), revolved_view_vtu(analysis, slices));
+    write_file(name.str(), revolved_view_vtu(analysis, fields, slices));
     revolved_records.emplace_back(load_factor, name.str());
     std::ostringstream pvd;
     DataOutBase::write_pvd_record(pvd, revolved_records);

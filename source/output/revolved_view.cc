@@ -1,7 +1,6 @@
 #include <deal.II/base/data_out_base.h>
 
 #include <thinlayer/output/revolved_view.h>
-#include <thinlayer/postprocess/cell_fields.h>
 
 #include <cmath>
 #include <sstream>
@@ -28,11 +27,12 @@ namespace thinlayer
 
 
   RevolvedView
-  revolved_view(const Analysis<2> &analysis, const unsigned int slices)
+  revolved_view(const Analysis<2> &analysis,
+                const CellFields  &fields,
+                const unsigned int slices)
   {
     const Kinematics &kinematics  = analysis.get_kinematics();
     const auto       &dof_handler = analysis.get_dof_handler();
-    const CellFields  fields(analysis);
 
     // Data: the displacement (3), six stress components, the equivalent
     // stress, the plastic strain, the yield ratio, the material id.
@@ -120,9 +120,11 @@ namespace thinlayer
 
 
   std::string
-  revolved_view_vtu(const Analysis<2> &analysis, const unsigned int slices)
+  revolved_view_vtu(const Analysis<2> &analysis,
+                    const CellFields  &fields,
+                    const unsigned int slices)
   {
-    const RevolvedView view = revolved_view(analysis, slices);
+    const RevolvedView view = revolved_view(analysis, fields, slices);
     std::ostringstream vtu;
     DataOutBase::write_vtu(
       view.patches,

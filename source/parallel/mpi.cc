@@ -165,47 +165,5 @@ namespace thinlayer
       MPI_Abort(communicator(), status);
     }
 
-
-    void
-    share_from_owners(
-      const std::vector<unsigned int>                       &owner,
-      const std::size_t                                      bytes,
-      const std::function<void(unsigned int, char *)>       &pack,
-      const std::function<void(unsigned int, const char *)> &unpack)
-    {
-      const unsigned int n = n_ranks();
-      if (n == 1)
-        return;
-      const unsigned int me = rank();
-      std::vector<int>   counts(n, 0), offsets(n, 0);
-      for (const unsigned int r : owner)
-        counts[r] += static_cast<int>(bytes);
-      for (unsigned int r = 1; r < n; ++r)
-        offsets[r] = offsets[r - 1] + counts[r - 1];
-      std::vector<char> mine(counts[me]), all(offsets[n - 1] + counts[n - 1]);
-      std::size_t       at = 0;
-      for (unsigned int i = 0; i < owner.size(); ++i)
-        if (owner[i] == me)
-          {
-            pack(i, mine.data() + at);
-            at += bytes;
-          }
-      const int ierr = MPI_Allgatherv(mine.data(),
-                                      counts[me],
-                                      MPI_BYTE,
-                                      all.data(),
-                                      counts.data(),
-                                      offsets.data(),
-                                      MPI_BYTE,
-                                      communicator());
-      AssertThrowMPI(ierr);
-      std::vector<std::size_t> next(offsets.begin(), offsets.end());
-      for (unsigned int i = 0; i < owner.size(); ++i)
-        {
-          if (owner[i] != me)
-            unpack(i, all.data() + next[owner[i]]);
-          next[owner[i]] += bytes;
-        }
-    }
   } // namespace mpi
 } // namespace thinlayer

@@ -1,4 +1,5 @@
 #include <thinlayer/materials/elasticity.h>
+#include <thinlayer/parallel/mpi.h>
 #include <thinlayer/postprocess/cell_fields.h>
 
 #include <cmath>
@@ -23,7 +24,11 @@ namespace thinlayer
     material.reinit(n_cells);
     for (const auto &cell : tria.active_cell_iterators())
       {
-        const unsigned int c   = cell->active_cell_index();
+        const unsigned int c = cell->active_cell_index();
+        material[c]          = cell->material_id();
+        // Another rank's points: their averages come from it.
+        if (!analysis.cells().owns(c))
+          continue;
         const MaterialLaw &law = analysis.material_law(c);
         for (unsigned int s = 0; s < n_s; ++s)
           {
@@ -47,7 +52,15 @@ namespace thinlayer
                     std::max(yield_ratio[s][c], law.yield_ratio(state.stress));
               }
           }
-        material[c] = cell->material_id();
+      }
+    // Each cell's averages are its owner's, the others' zeros.
+    for (unsigned int s = 0; s < n_s; ++s)
+      {
+        for (auto &component : stress[s])
+          mpi::sum(component);
+        mpi::sum(equivalent[s]);
+        mpi::sum(plastic_strain[s]);
+        mpi::sum(yield_ratio[s]);
       }
   }
 

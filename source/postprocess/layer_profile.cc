@@ -255,6 +255,12 @@ namespace thinlayer
     values.reserve(samples.size());
     for (const Sample &s : samples)
       {
+        // The points of another rank's cell: their values come from it.
+        if (!analysis.cells().owns(s.cell->active_cell_index()))
+          {
+            values.emplace_back();
+            continue;
+          }
         s.cell->get_dof_indices(dofs);
         const Tensor<1, 3> t3({s.tangent[0], s.tangent[1], 0});
         const Tensor<1, 3> n3({s.normal[0], s.normal[1], 0});
@@ -291,6 +297,7 @@ namespace thinlayer
         v.normal_traction             = traction * n3;
         values.push_back(v);
       }
+    sum_over_ranks(values);
     return values;
   }
 

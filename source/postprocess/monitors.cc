@@ -4,6 +4,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <thinlayer/base/input_error.h>
+#include <thinlayer/parallel/mpi.h>
 #include <thinlayer/postprocess/monitors.h>
 
 #include <cmath>
@@ -97,7 +98,8 @@ namespace thinlayer
     double             integral = 0, area = 0;
     for (const auto &cell :
          analysis.get_dof_handler().get_triangulation().active_cell_iterators())
-      if (cell->material_id() == parameters.load_material_id)
+      if (cell->material_id() == parameters.load_material_id &&
+          analysis.cells().owns(cell->active_cell_index()))
         for (unsigned int q = 0; q < n_q; ++q)
           {
             const unsigned int c = cell->active_cell_index();
@@ -105,6 +107,15 @@ namespace thinlayer
             integral += analysis.point_state(c, q).stress[i][j] * w;
             area += w;
           }
+    // Each rank's cells' share.
+    if (mpi::n_ranks() > 1)
+      {
+        Vector<double> sums(2);
+        sums[0] = integral;
+        sums[1] = area;
+        mpi::sum(sums);
+        return {sums[0], sums[1]};
+      }
     return {integral, area};
   }
 

@@ -15,8 +15,14 @@
 //    factor, lambda = c / (tau - p tan(phi)) = 0.23660. The bracket of
 //    each run (last converged, first failed load factor) must contain the
 //    value and be at most 1% wide.
+// Run on 2 ranks (interface_elements.mpirun=2.output), where each rank
+// holds the points of its own elements, the same truths hold for the
+// profiles rank 0 writes; rank 0 prints.
+#include <deal.II/base/mpi.h>
+
 #include <thinlayer/app/command_line.h>
 #include <thinlayer/elements/interface_values.h>
+#include <thinlayer/parallel/mpi.h>
 
 #include <cmath>
 #include <cstdio>
@@ -181,8 +187,13 @@ namespace
 
 
 int
-main()
+main(int argc, char **argv)
 {
+  dealii::Utilities::MPI::MPI_InitFinalize mpi_session(argc, argv, 1);
+  // Every rank reads the same files; rank 0 prints.
+  if (!thinlayer::mpi::is_root() &&
+      std::freopen("/dev/null", "w", stdout) == nullptr)
+    return 1;
   const std::string elastic = "  set Slip criterion = elastic\n";
   const std::string one_step =
     "subsection Loading\n  set Load increments = 1\nend\n";

@@ -15,7 +15,17 @@
 // (r, z), and the base's radial displacement nu p r / E. Only eps_yy
 // enters, d being vertical.
 // Also: one run along the band, from the left, its arc length increasing
-// through the band's length.
+// through the band's length; and the cell averages of the fields
+// (CellFields) of every cell the uniform stress, sigma_zz = nu (sigma_xx +
+// sigma_yy) in plane strain.
+// Run on 2 ranks (layer_profile.mpirun=2.output), where each rank holds
+// the points of its own cells, the same truths hold for the values every
+// rank receives; rank 0 prints, and says over how many ranks the band's
+// cells lie.
+#include <deal.II/base/mpi.h>
+
+#include <thinlayer/parallel/mpi.h>
+#include <thinlayer/postprocess/cell_fields.h>
 #include <thinlayer/postprocess/layer_profile.h>
 
 #include <algorithm>
@@ -62,7 +72,8 @@ namespace
   void
   check(const std::string &title,
         const std::string &prm,
-        const double       eps_vertical)
+        const double       eps_vertical,
+        const double       sigma_zz)
   {
     std::cout << title << '\n';
     thinlayer_tests::with_solved_step(
@@ -135,20 +146,49 @@ namespace
                     rightwards ? "yes" : "NO",
                     1 / std::cos(a),
                     first > 0 && last < 1 / std::cos(a) ? "yes" : "NO");
+
+        // Every cell's averages: sigma_yy = -1, sigma_zz as given, the
+        // other components zero.
+        const thinlayer::CellFields fields(analysis);
+        const double                exact_stress[4] = {0, -1, sigma_zz, 0};
+        double                      field_error     = 0;
+        for (unsigned int k = 0; k < 4; ++k)
+          for (const double value : fields.stress[0][k])
+            field_error =
+              std::max(field_error, std::abs(value - exact_stress[k]));
+        std::printf("  every cell's average stress (0, -1, %.2f, 0): %s\n",
+                    sigma_zz,
+                    field_error < 1e-8 ? "yes" : "NO");
+
+        bool holds_band = false;
+        for (const auto &cell :
+             analysis.get_dof_handler().active_cell_iterators())
+          holds_band =
+            holds_band || (cell->material_id() == 2 &&
+                           analysis.cells().owns(cell->active_cell_index()));
+        if (thinlayer::mpi::n_ranks() > 1)
+          std::printf("  the band's cells on %u ranks\n",
+                      thinlayer::mpi::sum(holds_band ? 1u : 0u));
       });
   }
 } // namespace
 
 
 int
-main()
+main(int argc, char **argv)
 {
-  check("Plane strain:", column("", "", "0.39*x; 0", "0; -1"), -0.91);
+  dealii::Utilities::MPI::MPI_InitFinalize mpi_session(argc, argv, 1);
+  // Every rank checks the same values; rank 0 prints.
+  if (!thinlayer::mpi::is_root() &&
+      std::freopen("/dev/null", "w", stdout) == nullptr)
+    return 1;
+  check("Plane strain:", column("", "", "0.39*x; 0", "0; -1"), -0.91, -0.3);
   check("Fourier, harmonic 0, revolved as a hollow cylinder:",
         column(", x0=1",
                "subsection Kinematics\n  set Type = fourier\n  set Harmonics "
                "= 0\n  set Stations = 0\nend\n",
                "0.3*r*cos(theta); 0.3*r*sin(theta); 0",
                "0; 0; -1"),
-        -1);
+        -1,
+        0);
 }

@@ -7,7 +7,9 @@
 //    contiguous ranges in rank order, each DoF on a cell of its rank.
 // 2. A summed vector is the exact sum of every rank's values, bit for bit
 //    the same on every rank.
-// 3. Shared items: every rank's copy of each item becomes its owner's.
+// 3. Profile values (sum_over_ranks()): every rank receives each sample's
+//    values from the rank that computed them, every member and the flag,
+//    a NaN yield ratio too.
 // 4. An InputError met by rank 0 in on_root() is thrown on every rank with
 //    the same file, entry and expectation; rank 0's text reaches all.
 // Each rank checks; rank 0 prints whether every rank's check held.
@@ -18,12 +20,14 @@
 #include <deal.II/grid/grid_generator.h>
 
 #include <thinlayer/base/input_error.h>
+#include <thinlayer/elements/interface_values.h>
 #include <thinlayer/parallel/cell_partition.h>
 #include <thinlayer/parallel/mpi.h>
 
 #include <algorithm>
-#include <cstring>
+#include <cmath>
 #include <iostream>
+#include <limits>
 #include <sstream>
 
 #include "../common/truths.h"
@@ -141,31 +145,49 @@ main(int argc, char **argv)
   }
 
   if (mpi::is_root())
-    std::cout << "3. Shared items\n";
+    std::cout << "3. Profile values from their owners\n";
   {
-    const unsigned int        n_items = 50;
-    std::vector<unsigned int> owner(n_items);
-    std::vector<double>       items(2 * n_items, -1.);
-    for (unsigned int i = 0; i < n_items; ++i)
-      {
-        owner[i] = (7 * i) % n;
-        if (owner[i] == me)
-          items[2 * i] = items[2 * i + 1] = 100. * i + owner[i];
-      }
-    mpi::share_from_owners(
-      owner,
-      2 * sizeof(double),
-      [&](const unsigned int i, char *buffer) {
-        std::memcpy(buffer, &items[2 * i], 2 * sizeof(double));
-      },
-      [&](const unsigned int i, const char *buffer) {
-        std::memcpy(&items[2 * i], buffer, 2 * sizeof(double));
-      });
+    const unsigned int n_samples = 50;
+    const auto owner = [n](const unsigned int k) { return (7 * k) % n; };
+    // Sample k's values at its owner: k + j / 10 for member j, the flag
+    // set for odd k, the yield ratio NaN for every fifth.
+    const auto expected = [](const unsigned int k) {
+      const double    x = k;
+      InterfaceValues v{x + 0.0,
+                        x + 0.1,
+                        x + 0.2,
+                        x + 0.3,
+                        x + 0.4,
+                        x + 0.5,
+                        x + 0.6,
+                        x + 0.7,
+                        k % 5 == 0 ? std::numeric_limits<double>::quiet_NaN()
+                                   : x + 0.8,
+                        k % 2 == 1};
+      return v;
+    };
+    std::vector<InterfaceValues> values(n_samples);
+    for (unsigned int k = 0; k < n_samples; ++k)
+      if (owner(k) == me)
+        values[k] = expected(k);
+    sum_over_ranks(values);
     bool owners = true;
-    for (unsigned int i = 0; i < n_items; ++i)
-      owners = owners && items[2 * i] == 100. * i + owner[i] &&
-               items[2 * i + 1] == items[2 * i];
-    expect_everywhere(owners, "every copy is its owner's");
+    for (unsigned int k = 0; k < n_samples; ++k)
+      {
+        const InterfaceValues &v = values[k], e = expected(k);
+        owners =
+          owners && v.slip == e.slip &&
+          v.slip_out_of_plane == e.slip_out_of_plane &&
+          v.opening == e.opening && v.slip_increment == e.slip_increment &&
+          v.opening_increment == e.opening_increment &&
+          v.shear_traction == e.shear_traction &&
+          v.shear_traction_out_of_plane == e.shear_traction_out_of_plane &&
+          v.normal_traction == e.normal_traction &&
+          (k % 5 == 0 ? std::isnan(v.yield_ratio)
+                      : v.yield_ratio == e.yield_ratio) &&
+          v.plastic == e.plastic;
+      }
+    expect_everywhere(owners, "every sample's values are its owner's");
   }
 
   if (mpi::is_root())

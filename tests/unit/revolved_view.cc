@@ -36,7 +36,9 @@ namespace
       "view.prm",
       [&](const thinlayer::Analysis<2> &analysis,
           const thinlayer::Parameters &) {
-        view = thinlayer::revolved_view(analysis, slices);
+        view = thinlayer::revolved_view(analysis,
+                                        thinlayer::CellFields(analysis),
+                                        slices);
       });
     return view;
   }

@@ -355,11 +355,6 @@ namespace thinlayer
     void
     compute_internal_forces();
 
-    /// Give every rank the point states their owners computed (once after
-    /// the point rules last ran).
-    void
-    share_states();
-
     const Parameters         &parameters;
     const Triangulation<dim> &tria;
     const Kinematics          kinematics;
@@ -386,9 +381,6 @@ namespace thinlayer
     std::vector<IndexSet> owned_per_rank;
     /// On many ranks: this rank's part of a body-load change, summed.
     ModeVectors rank_loads;
-    /// Whether every rank's point states are the owners' (see
-    /// ElementGroup::share_states()).
-    bool states_shared = true;
 
     /// The component of every DoF.
     std::vector<unsigned int> dof_component;

@@ -2,7 +2,6 @@
 #define thinlayer_elements_continuum_cells_h
 
 #include <deal.II/base/quadrature.h>
-#include <deal.II/base/quadrature_point_data.h>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
@@ -14,6 +13,7 @@
 #include <thinlayer/elements/point_loop.h>
 #include <thinlayer/materials/material_law.h>
 #include <thinlayer/materials/point_history.h>
+#include <thinlayer/parallel/cell_partition.h>
 #include <thinlayer/parameters/scene_sections.h>
 
 #include <map>
@@ -26,9 +26,9 @@ namespace thinlayer
 
   /**
    * The continuum: every active cell of the mesh with its material law,
-   * its Gauss points (the strain-displacement cache StrainOperator and one
-   * PointHistory per point, with a PointState per station), and the point
-   * loop over them (PointLoop). As an ElementGroup it assembles the
+   * its Gauss points (the strain-displacement cache StrainOperator and a
+   * PointState per point and station), and the point loop over them
+   * (PointLoop). As an ElementGroup it assembles the
    * cells' elastic stiffness, K_m = int (c1 B1^T D B1 + c2 B2^T D B2) dA_r
    * (the exact integral over the circle, with which the harmonics
    * decouple), runs the point rules, and assembles Newton's consistent
@@ -47,6 +47,8 @@ namespace thinlayer
     /**
      * The cells of @p dof_handler's triangulation, with @p quadrature's
      * points, the laws of @p materials by material id, and @p kinematics.
+     * The points, their states and the point rules are those of the cells
+     * that @p partition gives this rank (all cells where it has no owners).
      * The objects are referenced, not copied.
      */
     ContinuumCells(
@@ -54,7 +56,8 @@ namespace thinlayer
       const Mapping<dim>                                     &mapping,
       const Quadrature<dim>                                  &quadrature,
       const Kinematics                                       &kinematics,
-      const std::map<types::material_id, MaterialParameters> &materials);
+      const std::map<types::material_id, MaterialParameters> &materials,
+      const CellPartition                                    &partition);
 
     /// @name The ElementGroup interface
     /// @{
@@ -82,12 +85,6 @@ namespace thinlayer
 
     void
     add_internal_forces(ModeVectors &internal_forces) const override;
-
-    void
-    distribute(const CellPartition &partition) override;
-
-    void
-    share_states() override;
 
     void
     accept() override;
@@ -118,8 +115,12 @@ namespace thinlayer
     unsigned int
     n_quadrature_points() const;
 
-    /// The state at Gauss point @p q of active cell @p cell and station
-    /// @p station.
+    /// Whether this rank holds the points of active cell @p cell.
+    bool
+    owns(const unsigned int cell) const;
+
+    /// The state at Gauss point @p q of active cell @p cell (one this rank
+    /// owns()) and station @p station.
     const PointState &
     point_state(const unsigned int cell,
                 const unsigned int q,
@@ -164,17 +165,20 @@ namespace thinlayer
     /// The law of every active cell.
     std::vector<const MaterialLaw *> cell_law;
     StrainOperator                   strain_operator;
-    CellDataStorage<typename Triangulation<dim>::cell_iterator, PointHistory>
-                                history_storage;
-    std::vector<PointHistory *> history;
-    PointLoop                   point_loop;
-    /// The rank of every cell (empty: all this rank's).
-    std::vector<unsigned int> cell_owner;
+    /// Whether this rank holds every cell's points (one rank).
+    const bool all_cells;
+    /// Where each active cell is among the point loop's cells
+    /// (invalid_unsigned_int: another rank's); empty with all_cells.
+    std::vector<unsigned int> cell_position;
+    /// The state of every point and station of the point loop's cells, at
+    /// PointLoop::point_index().
+    std::vector<PointState> states;
+    PointLoop               point_loop;
 
     /// Newton's state for the point loop's cells (this rank's), by their
     /// position in its list, allocated by add_coupled_sparsity(): the
     /// consistent tangent at every point and station
-    /// (PointLoop::tangent_index()), each cell's matrix, and whether that
+    /// (PointLoop::point_index()), each cell's matrix, and whether that
     /// matrix is the elastic one (a cell elastic again needs it
     /// recomputed; one elastic throughout, never).
     std::vector<SymmetricTensor<4, 3>> tangents;
@@ -209,12 +213,24 @@ namespace thinlayer
 
 
   template <int dim>
+  inline bool
+  ContinuumCells<dim>::owns(const unsigned int cell) const
+  {
+    return all_cells || cell_position[cell] != numbers::invalid_unsigned_int;
+  }
+
+
+  template <int dim>
   inline const PointState &
   ContinuumCells<dim>::point_state(const unsigned int cell,
                                    const unsigned int q,
                                    const unsigned int station) const
   {
-    return history[cell * n_q + q]->stations[station];
+    Assert(owns(cell),
+           ExcMessage("The points of cell " + std::to_string(cell) +
+                      " are another rank's."));
+    return states[point_loop.point_index(
+      all_cells ? cell : cell_position[cell], q, station)];
   }
 
 

@@ -80,13 +80,14 @@ namespace thinlayer
    * Every group works on the DoFs of the analysis's one DoFHandler, one
    * copy per mode (ModeVectors), and holds its own point states and laws.
    *
-   * On many ranks (thinlayer::mpi) the sparsity, the elastic matrices,
-   * the point rules and Newton's tangent are of the cells and elements
-   * this rank owns (distribute()); what they add to vectors and matrices
-   * is summed or distributed over the ranks by the Analysis, and
-   * share_states() gives every rank the owners' states at the end of an
-   * attempt. The internal forces of the current stresses, accept(),
-   * reject() and the state check run everywhere on every rank.
+   * On many ranks (thinlayer::mpi) a group is built for the cells and
+   * elements the partition gives this rank (an interface element goes
+   * with the cell on its plus side): its sparsity, elastic matrices, point
+   * states and rules, internal forces, state check and Newton's tangent
+   * are theirs alone. What they add to vectors and matrices is summed or
+   * distributed over the ranks by the Analysis, which also combines the
+   * ranks' state checks; what reads the states of other ranks' points (a
+   * profile, the fields) combines every rank's share of them.
    *
    * To add a family: derive from this class in a new file pair under
    * elements/, and construct it in create_element_groups().
@@ -151,17 +152,6 @@ namespace thinlayer
     virtual void
     add_internal_forces(ModeVectors &internal_forces) const = 0;
 
-    /// Run the point rules and Newton's tangent only at the points of the
-    /// cells that @p partition gives this rank (an interface element goes
-    /// with the cell on its plus side). Without a call, at every point.
-    virtual void
-    distribute(const CellPartition &partition) = 0;
-
-    /// Give every rank the point states their owners computed: all of a
-    /// rank's copies are then current. Nothing on one rank.
-    virtual void
-    share_states() = 0;
-
     /// Make the current stresses the converged ones, and the step's
     /// plastic strain part of the total.
     virtual void
@@ -171,7 +161,8 @@ namespace thinlayer
     virtual void
     reject() = 0;
 
-    /// Take the current state's finiteness and yield ratios into @p check.
+    /// Take the current state's finiteness and yield ratios (of this
+    /// rank's points) into @p check.
     virtual void
     check_state(StateCheck &check) const = 0;
 
@@ -197,8 +188,9 @@ namespace thinlayer
     /**
      * The profiles the group writes along its lines, of the state with
      * displacements @p solution plus, where @p pending, the step's
-     * @p step_increment. None by default: the cells' fields are written
-     * whole.
+     * @p step_increment. On many ranks every rank calls it, and receives
+     * every sample's values from the rank that holds its points. None by
+     * default: the cells' fields are written whole.
      */
     virtual std::vector<NamedProfile>
     profiles(const ModeVectors &solution,
@@ -211,7 +203,9 @@ namespace thinlayer
    * The element groups of the scene that @p parameters describe, on the
    * DoFs of @p dof_handler: the continuum cells first (with @p quadrature),
    * then the interface elements along the Interface curve sections, if
-   * any. The one place that knows every element family. Throws InputError
+   * any; each with the points of the cells that @p partition gives this
+   * rank (every cell where it names no owners). The one place that knows
+   * every element family. Throws InputError
    * (naming the parameter file and its section) where a group cannot be
    * built as the parameters ask.
    */
@@ -221,7 +215,8 @@ namespace thinlayer
                         const DoFHandler<dim> &dof_handler,
                         const Mapping<dim>    &mapping,
                         const Quadrature<dim> &quadrature,
-                        const Kinematics      &kinematics);
+                        const Kinematics      &kinematics,
+                        const CellPartition   &partition);
 } // namespace thinlayer
 
 #endif

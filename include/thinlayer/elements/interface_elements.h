@@ -65,7 +65,9 @@ namespace thinlayer
   {
   public:
     /**
-     * Pair the faces of every curve of @p curves. Throws InputError
+     * Pair the faces of every curve of @p curves; the elements whose plus
+     * side is a cell that @p partition gives this rank (all, where it names
+     * no owners) are this rank's to run. Throws InputError
      * (naming @p parameter_file and the curve's section) where a face of a
      * curve has no facing partner, or where an interface stiffness exceeds
      * max_stiffness_ratio E / h of the cells beside it (@p materials).
@@ -77,6 +79,7 @@ namespace thinlayer
       const Kinematics    &kinematics,
       const std::map<types::boundary_id, InterfaceElementParameters> &curves,
       const std::map<types::material_id, MaterialParameters>         &materials,
+      const CellPartition                                            &partition,
       const std::string &parameter_file);
 
     /**
@@ -138,12 +141,6 @@ namespace thinlayer
     /// factorisation.
     void
     add_coupled_tangent(const CellMatrixSink &add) override;
-
-    void
-    distribute(const CellPartition &partition) override;
-
-    void
-    share_states() override;
 
     /// One profile per curve, "interface-curve-<id>".
     std::vector<NamedProfile>
@@ -249,6 +246,8 @@ namespace thinlayer
     std::vector<Element>                                        elements;
     std::vector<IntegrationPoint>                               points;
     /// Point-major: points[p] at station s is states[p * n_stations + s].
+    /// Every point has a slot (the points lie along curves, a small share
+    /// of the body's), but only this rank's are ever computed or read.
     std::vector<InterfacePointState> states;
     std::vector<Tensor<2, 3>>        tangents;
     /// The rank of every element and point (empty: all this rank's), and

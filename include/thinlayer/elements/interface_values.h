@@ -65,6 +65,15 @@ namespace thinlayer
 
 
   /**
+   * On many ranks, where each rank has computed the values of the samples
+   * whose points it holds and left the others zero (InterfaceValues{}):
+   * every rank receives every sample's values. Nothing on one rank.
+   */
+  void
+  sum_over_ranks(std::vector<InterfaceValues> &values);
+
+
+  /**
    * The CSV of a profile (thin layer or zero-thickness elements): one row
    * per sample and station, the run, arc length, position, station angle
    * (degrees) and the values.

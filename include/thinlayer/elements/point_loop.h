@@ -37,19 +37,20 @@ namespace thinlayer
    * global vectors are zeroed and summed every iteration. Everything is
    * allocated in reinit(): an iteration allocates nothing.
    *
-   * On many ranks each loop runs over the cells this rank owns
-   * (set_cells()); what they add is then summed over the ranks by the
-   * Analysis. Every per-cell slot is kept only for those cells, by their
-   * position in get_cells(): a rank's memory for them falls with the
-   * number of ranks.
+   * On many ranks each loop runs over the cells this rank owns; what they
+   * add is then summed over the ranks by the Analysis. The point states
+   * and every per-cell slot are kept only for those cells, by their
+   * position in get_cells() (point_index()): a rank's memory for them
+   * falls with the number of ranks.
    */
   class PointLoop
   {
   public:
     /**
-     * Set up for the active cells described by @p strain_operator, with
-     * @p n_q points per cell, the law of every cell and the history of
-     * every point (point p = c * n_q + q). The objects are referenced, not
+     * Set up for the active cells @p cells (ascending: on many ranks, the
+     * cells this rank owns) of @p strain_operator, with @p n_q points per
+     * cell, the law of every active cell, and the states of the loop's
+     * points and stations (point_index()). The objects are referenced, not
      * copied.
      */
     void
@@ -57,14 +58,8 @@ namespace thinlayer
            const Kinematics                       &kinematics,
            const unsigned int                      n_q,
            const std::vector<const MaterialLaw *> &cell_law,
-           const std::vector<PointHistory *>      &history);
-
-    /**
-     * Run the point rules over the active cells @p cells only (ascending):
-     * on many ranks, the cells this rank owns. Without a call, every cell.
-     */
-    void
-    set_cells(const std::vector<unsigned int> &cells);
+           const std::vector<unsigned int>        &cells,
+           std::vector<PointState>                &states);
 
     /// The cells the point rules run over (ascending).
     const std::vector<unsigned int> &
@@ -84,9 +79,9 @@ namespace thinlayer
 
     /**
      * Return mapping at every point and station. With @p tangents (one per
-     * point and station of the loop's cells, point-major in the order of
-     * get_cells(): tangent_index()), the consistent tangents are stored
-     * there. Returns the number of yielding points and stations.
+     * point and station of the loop's cells, at point_index()), the
+     * consistent tangents are stored there. Returns the number of yielding
+     * points and stations.
      */
     unsigned int
     return_mapping_update(const ModeVectors                  &step_increment,
@@ -99,13 +94,13 @@ namespace thinlayer
     void
     add_internal_forces(ModeVectors &internal_forces) const;
 
-    /// Where the tangent of point @p q, station @p s of the cell at
-    /// position @p i in get_cells() is kept in return_mapping_update()'s
-    /// @p tangents.
+    /// Where the state (and the tangent of return_mapping_update()'s
+    /// @p tangents) of point @p q, station @p s of the cell at position
+    /// @p i in get_cells() is kept: point-major, in the order of the cells.
     std::size_t
-    tangent_index(const unsigned int i,
-                  const unsigned int q,
-                  const unsigned int s) const
+    point_index(const unsigned int i,
+                const unsigned int q,
+                const unsigned int s) const
     {
       return (std::size_t(i) * n_q + q) * kinematics->n_stations() + s;
     }
@@ -176,7 +171,7 @@ namespace thinlayer
     const StrainOperator                   *strain_operator = nullptr;
     const Kinematics                       *kinematics      = nullptr;
     const std::vector<const MaterialLaw *> *cell_law        = nullptr;
-    const std::vector<PointHistory *>      *history         = nullptr;
+    std::vector<PointState>                *states          = nullptr;
     unsigned int                            n_q             = 0;
     unsigned int                            chunks          = 0;
     /// The cells the point rules run over.

@@ -3,8 +3,6 @@
 
 #include <deal.II/base/symmetric_tensor.h>
 
-#include <vector>
-
 namespace thinlayer
 {
   using namespace dealii;
@@ -33,15 +31,6 @@ namespace thinlayer
     SymmetricTensor<2, 3> pending_plastic_strain;
     /// F > 0 at the last evaluation.
     bool yielding = false;
-  };
-
-  /**
-   * Everything stored at one Gauss point: one PointState per station. Kept
-   * in a CellDataStorage so that it follows the cells.
-   */
-  struct PointHistory
-  {
-    std::vector<PointState> stations;
   };
 } // namespace thinlayer
 

@@ -4,6 +4,7 @@
 #include <deal.II/base/data_out_base.h>
 
 #include <thinlayer/analysis/analysis.h>
+#include <thinlayer/postprocess/cell_fields.h>
 
 #include <string>
 #include <vector>
@@ -25,6 +26,7 @@ namespace thinlayer
    * by the series' symmetry (for the symmetric series the shear stresses
    * with theta change sign there, for the antisymmetric one the others
    * do). A view, not an analysis: nothing is computed between stations.
+   * The cell averages are @p fields, those of @p analysis.
    */
   struct RevolvedView
   {
@@ -36,11 +38,15 @@ namespace thinlayer
   };
 
   RevolvedView
-  revolved_view(const Analysis<2> &analysis, const unsigned int slices);
+  revolved_view(const Analysis<2> &analysis,
+                const CellFields  &fields,
+                const unsigned int slices);
 
   /// revolved_view() as the text of a VTU file.
   std::string
-  revolved_view_vtu(const Analysis<2> &analysis, const unsigned int slices);
+  revolved_view_vtu(const Analysis<2> &analysis,
+                    const CellFields  &fields,
+                    const unsigned int slices);
 } // namespace thinlayer
 
 #endif

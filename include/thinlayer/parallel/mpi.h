@@ -100,18 +100,6 @@ namespace thinlayer
      */
     void
     abort_all(const int status);
-
-    /**
-     * Make every rank's copy of the items i = 0, 1, ... (owner.size() of
-     * them, @p bytes bytes each) that of the rank owner[i]: @p pack writes
-     * item i into a buffer, @p unpack reads it back. Nothing on one rank.
-     */
-    void
-    share_from_owners(
-      const std::vector<unsigned int>                       &owner,
-      const std::size_t                                      bytes,
-      const std::function<void(unsigned int, char *)>       &pack,
-      const std::function<void(unsigned int, const char *)> &unpack);
   } // namespace mpi
 } // namespace thinlayer
 

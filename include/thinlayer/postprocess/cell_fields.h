@@ -19,6 +19,9 @@ namespace thinlayer
    * harmonics), the equivalent stress, the equivalent plastic strain and
    * the yield ratio. The yield ratio is the cell's maximum, to show where
    * drift into illegal stress space is.
+   *
+   * On many ranks every rank constructs it: each computes its own cells'
+   * averages and receives the others' from their owners.
    */
   struct CellFields
   {

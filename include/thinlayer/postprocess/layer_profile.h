@@ -55,17 +55,20 @@ namespace thinlayer
     unsigned int
     n_points() const;
 
-    /// The values at every sample, at station @p station.
+    /// The values at every sample, at station @p station. On many ranks
+    /// every rank calls it, and receives the values of the samples in
+    /// other ranks' cells from them.
     std::vector<InterfaceValues>
     evaluate(const Analysis<2> &analysis, const unsigned int station) const;
 
-    /// The values at every sample and station.
+    /// The values at every sample and station (every rank calls it).
     Profile
     profile(const Analysis<2> &analysis) const;
 
     /**
      * Cell averages of slip, opening, shear and normal traction at station
-     * @p station, over all active cells (zero off the layer), for the VTU.
+     * @p station, over all active cells (zero off the layer), for the VTU
+     * (every rank calls it).
      */
     std::vector<Vector<double>>
     cell_fields(const Analysis<2> &analysis, const unsigned int station) const;

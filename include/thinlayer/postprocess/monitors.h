@@ -43,7 +43,8 @@ namespace thinlayer
 
   private:
     /// The integral of the load's stress component over its material id,
-    /// and the area of that material id.
+    /// and the area of that material id: on many ranks, summed over the
+    /// ranks' cells (every rank calls it).
     std::pair<double, double>
     stress_integral() const;
 
