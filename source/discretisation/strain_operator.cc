@@ -62,18 +62,21 @@ namespace thinlayer
     n_cell_dofs                = n;
     n_q                        = quadrature.size();
 
-    dofs.resize(std::size_t(n_cells) * n);
-    std::vector<types::global_dof_index> cell_dof_indices(n);
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        cell->get_dof_indices(cell_dof_indices);
-        std::copy(cell_dof_indices.begin(),
-                  cell_dof_indices.end(),
-                  dofs.begin() + std::size_t(cell->active_cell_index()) * n);
-      }
     cell_slot.assign(n_cells, numbers::invalid_unsigned_int);
     for (unsigned int k = 0; k < cells.size(); ++k)
       cell_slot[cells[k]] = k;
+    dofs.resize(std::size_t(cells.size()) * n);
+    std::vector<types::global_dof_index> cell_dof_indices(n);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        const unsigned int slot = cell_slot[cell->active_cell_index()];
+        if (slot == numbers::invalid_unsigned_int)
+          continue;
+        cell->get_dof_indices(cell_dof_indices);
+        std::copy(cell_dof_indices.begin(),
+                  cell_dof_indices.end(),
+                  dofs.begin() + std::size_t(slot) * n);
+      }
 
     // The strain parts of every shape function in every mode at one point,
     // [(m * n + i) * parts + part].

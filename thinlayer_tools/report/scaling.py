@@ -7,9 +7,9 @@ measurements and shown beside them, and the model's forecast for 10^6 to
 The model (N unknowns, P ranks, plane strain):
   memory per rank  M = M_program + a N + b N log2(N) / P
       the loaded program (libraries, MPI; measured before the mesh is
-      read), what every rank holds whole (mesh, point states, vectors) and
-      what is split (the matrix rows and the factor, whose fill grows as
-      N log N for a 2D nested-dissection ordering);
+      read), what every rank holds whole (mesh, DoF maps, vectors) and
+      what is split (the point states, the matrix rows and the factor,
+      whose fill grows as N log N for a 2D nested-dissection ordering);
   time per iteration  T = c N / P + d N + e N log2(N) / P + h [P > 1]
       the point rules split over the ranks, the work on whole vectors every
       rank does (sums over the ranks, constraints, the solution gathered
@@ -190,9 +190,9 @@ def sections(runs, quick):
         "ones, whose factors do not, as the forecast's will not. "
         "Its forecast below extrapolates far beyond the two ranks and the sizes measured, and "
         "is read for its limits: every rank still holds %.2f kB per unknown whole (mesh, "
-        "point states, vectors), so above some 10^7 unknowns a run exceeds a rank's %d MB (a "
+        "DoF maps, vectors), so above some 10^7 unknowns a run exceeds a rank's %d MB (a "
         "cluster core's share) whatever the ranks%s; the next floor of the issue (a "
-        "distributed mesh, states and vectors) removes that. %s" % (
+        "distributed mesh and vectors) removes that. %s" % (
             largest, time_ratio, memory_ratio, program, above_program,
             program, memory[0] * 1024, memory[1] * 1024,
             rest[0] * 1e6, rest[1] * 1e6, substitution[0] * 1e6, substitution[1] * 1e6,

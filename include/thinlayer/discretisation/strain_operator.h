@@ -49,10 +49,10 @@ namespace thinlayer
            const Kinematics      &kinematics);
 
     /**
-     * The same, keeping the operator and weights only at the points of the
-     * active cells @p cells (ascending; a rank's own cells), which are then
-     * the only points to ask for: on several ranks each rank's points are
-     * its share of the memory. The DoFs of every cell are kept.
+     * The same, keeping the operator, weights and DoFs only of the active
+     * cells @p cells (ascending; a rank's own cells), which are then the
+     * only cells and points to ask for: on several ranks each rank's cells
+     * are its share of the memory.
      */
     template <int dim>
     void
@@ -79,7 +79,7 @@ namespace thinlayer
     const types::global_dof_index *
     cell_dofs(const unsigned int c) const
     {
-      return &dofs[std::size_t(c) * n_cell_dofs];
+      return &dofs[kept_cell(c) * n_cell_dofs];
     }
 
     /// The area weight of point @p point.
@@ -173,13 +173,21 @@ namespace thinlayer
       std::array<unsigned int, 7> component_begin;
     };
 
+    /// Where active cell @p c is among the kept ones.
+    std::size_t
+    kept_cell(const unsigned int c) const
+    {
+      Assert(cell_slot.empty() || cell_slot[c] != numbers::invalid_unsigned_int,
+             ExcMessage("Cell " + std::to_string(c) + " is not kept here."));
+      return cell_slot.empty() ? c : cell_slot[c];
+    }
+
     /// Where point @p point (c * n_q + q) is kept.
     std::size_t
     kept_point(const unsigned int point) const
     {
-      return cell_slot.empty()
-               ? point
-               : std::size_t(cell_slot[point / n_q]) * n_q + point % n_q;
+      return cell_slot.empty() ? point
+                               : kept_cell(point / n_q) * n_q + point % n_q;
     }
 
     const double *
@@ -188,9 +196,10 @@ namespace thinlayer
       return &values[kept_point(point) * entries_per_point];
     }
 
-    unsigned int                         parts       = 1;
-    unsigned int                         n_cell_dofs = 0;
-    unsigned int                         n_q         = 0;
+    unsigned int parts       = 1;
+    unsigned int n_cell_dofs = 0;
+    unsigned int n_q         = 0;
+    /// The DoFs of each kept cell.
     std::vector<types::global_dof_index> dofs;
     /// The place of each active cell among the kept ones (empty: every
     /// cell is kept, in order).
