@@ -1,19 +1,17 @@
 #!/usr/bin/python3
 """Fourier harmonics on several ranks: each harmonic's stiffness split over
-all ranks (what thinlayer does: MUMPS on every rank for every harmonic)
-against the harmonics spread over the ranks, each factorised whole on one
-rank (CHOLMOD on one core), which the harmonics' independence would allow.
+all ranks (MUMPS on every rank for every harmonic; Solver/Spread harmonics
+over ranks = false) against the harmonics spread over the ranks, each
+factorised whole on one rank and substituted at the same time as the
+others' (CHOLMOD; the default).
 
 Case 3 (the circular footing, harmonics 1 and 3, the paper's method) on a
-mesh refined 4 times the paper's. Rows: one rank (CHOLMOD, both harmonics,
-the node's cores as threads); two ranks (each harmonic split by MUMPS);
-and the spread emulated: two one-rank runs at once, each of one harmonic
-on one core (DEAL_II_NUM_THREADS = OPENBLAS_NUM_THREADS = 1), whose
-substitutions are what a rank of the spread would do each iteration (the
-solution's broadcast, ~0.5 MB, not counted). Per row: the substitution
-time of an iteration (every harmonic the row's process solves; the
-emulation's is the larger of its two), the time per iteration and the
-peak memory per rank, medians of REPEAT runs.
+mesh refined 4 times the paper's, on one rank (CHOLMOD, both harmonics,
+the node's cores as threads) and on two, split and spread. Per row: the
+substitution time of an iteration (every harmonic), the time per
+iteration and the peak memory per rank, medians of REPEAT runs of one
+load step (half the paper's collapse load, at most 250 iterations), and
+the step's displacement against one rank's.
 
     /usr/bin/python3 -m benchmarks.harmonics [--repeat 3]
 
@@ -33,27 +31,20 @@ GEOMETRY = ("half_width=1, width=5, depth=3, aspect_ratio=10, n_footing=32, "
 STATIONS = "0, 45, 90, 135, 180"
 
 
-def start(ranks, harmonics, directory, one_core=False):
+def run(ranks, spread, directory):
     command = mpirun(ranks) + [
         THINLAYER, os.path.join(TOP, "prm", "case3-circular-footing.prm"),
         "-s", "Mesh/Geometry parameters=" + GEOMETRY,
-        "-s", "Kinematics/Harmonics=" + harmonics,
         "-s", "Kinematics/Stations=" + STATIONS,
-        "-s", "Loading/Load increments=0.5, 0.1",
+        "-s", "Solver/Spread harmonics over ranks=" + ("true" if spread else "false"),
+        # One load step of at most 250 iterations: what is timed is an
+        # iteration, not the run to collapse.
+        "-s", "Loading/Load increments=0.5",
+        "-s", "Loading/Collapse resolution=0",
         "-s", "Output/Directory=" + directory,
         "-s", "Output/Write VTU=false",
         "-s", "Output/Print timing=false"]
-    env = dict(os.environ)
-    if one_core:
-        env.update(DEAL_II_NUM_THREADS="1", OPENBLAS_NUM_THREADS="1", OMP_NUM_THREADS="1")
-    return subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
-                            text=True, env=env)
-
-
-def summary(process, directory):
-    _, err = process.communicate()
-    if process.returncode != 0:
-        raise SystemExit("run in %s failed: %s" % (directory, err))
+    subprocess.run(command, capture_output=True, text=True, check=True)
     with open(os.path.join(directory, "summary.json")) as f:
         return json.load(f)
 
@@ -62,34 +53,26 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeat", type=int, default=3)
     args = parser.parse_args()
-    runs = {"one rank, both harmonics": [], "two ranks, each harmonic split": [],
-            "spread: one harmonic per rank (emulated)": []}
+    layouts = [("one rank, both harmonics", 1, True),
+               ("two ranks, each harmonic split (MUMPS)", 2, False),
+               ("two ranks, one harmonic each (spread)", 2, True)]
+    runs = {label: [] for label, _, _ in layouts}
     for k in range(args.repeat):
-        for label, ranks in (("one rank, both harmonics", 1),
-                             ("two ranks, each harmonic split", 2)):
-            directory = os.path.join(OUT, "runs", "harmonics-%d-%d" % (ranks, k))
-            s = summary(start(ranks, "1, 3", directory), directory)
-            runs[label].append((s["seconds_per_substitution"], s["seconds_per_iteration"],
-                                s["peak_memory_mb_per_rank"], s["equations"]))
-        directories = [os.path.join(OUT, "runs", "harmonics-spread-%s-%d" % (h, k))
-                       for h in ("1", "3")]
-        processes = [start(1, h, d, one_core=True) for h, d in zip(("1", "3"), directories)]
-        spread = [summary(p, d) for p, d in zip(processes, directories)]
-        # Harmonic 3 alone carries no load here: its run's iteration time is
-        # no iteration's; harmonic 1's run iterates as a rank would.
-        runs["spread: one harmonic per rank (emulated)"].append(
-            (max(s["seconds_per_substitution"] for s in spread),
-             spread[0]["seconds_per_iteration"],
-             max(s["peak_memory_mb_per_rank"] for s in spread),
-             sum(s["equations"] for s in spread)))
+        for label, ranks, spread in layouts:
+            directory = os.path.join(OUT, "runs", "harmonics-%d-%s-%d" % (
+                ranks, "spread" if spread else "split", k))
+            runs[label].append(run(ranks, spread, directory))
+    one = runs[layouts[0][0]][0]["final_displacement"]
     header = ("| layout | equations | substitution ms per iteration | ms per iteration "
-              "| peak MB per rank |")
-    lines = [header, "|---|---|---|---|---|"]
+              "| peak MB per rank | displacement vs 1 rank |")
+    lines = [header, "|---|---|---|---|---|---|"]
     for label, rows in runs.items():
-        lines.append("| %s | %d | %.1f | %.1f | %.0f |" % (
-            label, rows[0][3], 1e3 * statistics.median(r[0] for r in rows),
-            1e3 * statistics.median(r[1] for r in rows),
-            statistics.median(r[2] for r in rows)))
+        lines.append("| %s | %d | %.1f | %.1f | %.0f | %.1e |" % (
+            label, rows[0]["equations"],
+            1e3 * statistics.median(r["seconds_per_substitution"] for r in rows),
+            1e3 * statistics.median(r["seconds_per_iteration"] for r in rows),
+            statistics.median(r["peak_memory_mb_per_rank"] for r in rows),
+            abs(rows[0]["final_displacement"] - one) / abs(one)))
     os.makedirs(OUT, exist_ok=True)
     with open(os.path.join(OUT, "harmonics.md"), "w") as f:
         f.write("\n".join(lines) + "\n")

@@ -104,6 +104,20 @@ namespace thinlayer
     }
 
 
+    void
+    broadcast(Vector<double> &v, const unsigned int root)
+    {
+      if (n_ranks() == 1 || v.size() == 0)
+        return;
+      const int ierr = MPI_Bcast(v.data(),
+                                 static_cast<int>(v.size()),
+                                 MPI_DOUBLE,
+                                 static_cast<int>(root),
+                                 communicator());
+      AssertThrowMPI(ierr);
+    }
+
+
     std::string
     broadcast(const std::string &text)
     {

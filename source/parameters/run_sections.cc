@@ -224,6 +224,17 @@ namespace thinlayer
                       Patterns::Integer(1),
                       "amg cg: the iteration limit of a solve; a solve that "
                       "reaches it ends the run with an error.");
+    prm.declare_entry("Spread harmonics over ranks",
+                      "true",
+                      Patterns::Bool(),
+                      "On several ranks, a Fourier scene with at least as "
+                      "many harmonics as ranks: each rank factorises its "
+                      "harmonics' elastic stiffness whole (the m-th on rank "
+                      "m mod ranks) and substitutes them at the same time "
+                      "as the others (true; faster, some 20% more memory "
+                      "per rank), or every harmonic is split over all ranks "
+                      "by MUMPS (false). Fewer harmonics than ranks are "
+                      "always split.");
     prm.declare_entry("Continue after failure",
                       "false",
                       Patterns::Bool(),
@@ -285,6 +296,7 @@ namespace thinlayer
                        "right-hand side's residual a solve reaches; got " +
                          prm.get("Linear solver tolerance"));
     linear_solver_iterations = prm.get_integer("Linear solver iterations");
+    spread_harmonics         = prm.get_bool("Spread harmonics over ranks");
     prm.leave_subsection();
   }
 

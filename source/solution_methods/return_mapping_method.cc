@@ -221,11 +221,10 @@ namespace thinlayer
   ReturnMappingMethod<dim>::elastic_corrections()
   {
     for (unsigned int m = 0; m < analysis.n_modes(); ++m)
-      {
-        correction[m] = residual[m];
-        analysis.elastic_solve(m, correction[m]);
-        analysis.mode_system(m).constraints.distribute(correction[m]);
-      }
+      correction[m] = residual[m];
+    analysis.elastic_solve(correction);
+    for (unsigned int m = 0; m < analysis.n_modes(); ++m)
+      analysis.mode_system(m).constraints.distribute(correction[m]);
   }
 
 

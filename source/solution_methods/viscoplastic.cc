@@ -28,17 +28,22 @@ namespace thinlayer
 
   template <int dim>
   void
-  ViscoplasticMethod<dim>::solve_increment(const unsigned int m,
-                                           const double       dlambda)
+  ViscoplasticMethod<dim>::solve_increments(const double dlambda)
   {
-    const ModeSystem &mode      = analysis.mode_system(m);
-    Vector<double>   &increment = analysis.step_increment()[m];
-    increment                   = body_loads[m];
-    increment.add(dlambda, mode.unit_rhs);
-    mode.constraints.condense(increment);
-    analysis.elastic_solve(m, increment);
-    mode.constraints.distribute(increment);
-    increment.add(dlambda, mode.unit_prescribed_displacement);
+    ModeVectors &increments = analysis.step_increment();
+    for (unsigned int m = 0; m < analysis.n_modes(); ++m)
+      {
+        increments[m] = body_loads[m];
+        increments[m].add(dlambda, analysis.mode_system(m).unit_rhs);
+        analysis.mode_system(m).constraints.condense(increments[m]);
+      }
+    analysis.elastic_solve(increments);
+    for (unsigned int m = 0; m < analysis.n_modes(); ++m)
+      {
+        const ModeSystem &mode = analysis.mode_system(m);
+        mode.constraints.distribute(increments[m]);
+        increments[m].add(dlambda, mode.unit_prescribed_displacement);
+      }
   }
 
 
@@ -66,9 +71,9 @@ namespace thinlayer
         for (unsigned int m = 0; m < n_modes; ++m)
           {
             previous_increment[m] = analysis.step_increment()[m];
-            solve_increment(m, dlambda);
-            body_load_change[m] = 0;
+            body_load_change[m]   = 0;
           }
+        solve_increments(dlambda);
 
         result.plastic_points = analysis.viscoplastic_update(body_load_change);
 
@@ -78,7 +83,7 @@ namespace thinlayer
           {
             const Vector<double> &increment = analysis.step_increment()[m];
             // The body loads are kept condensed (condensing is linear, and
-            // idempotent, so solve_increment() may condense them again):
+            // idempotent, so solve_increments() may condense them again):
             // the criterion reads them with no copy.
             analysis.mode_system(m).constraints.condense(body_load_change[m]);
             body_loads[m] += body_load_change[m];

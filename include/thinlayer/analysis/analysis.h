@@ -98,6 +98,11 @@ namespace thinlayer
     void
     elastic_solve(const unsigned int m, Vector<double> &rhs);
 
+    /// The same for every mode m with @p rhs[m]: where the harmonics are
+    /// spread over the ranks, their substitutions run at the same time.
+    void
+    elastic_solve(ModeVectors &rhs);
+
     /// The displacements of the last accepted state, per mode.
     const ModeVectors &
     solution() const;

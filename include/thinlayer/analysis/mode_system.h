@@ -4,8 +4,10 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/petsc_sparse_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
+#include <thinlayer/parallel/mpi.h>
 #include <thinlayer/solvers/amg_conjugate_gradient.h>
 #include <thinlayer/solvers/distributed_factorisation.h>
 #include <thinlayer/solvers/factorised_stiffness.h>
@@ -26,9 +28,13 @@ namespace thinlayer
    *
    * On one rank the stiffness is a SparseMatrix, factorised by CHOLMOD or
    * UMFPACK. On several, the condensed stiffness is a PETSc matrix
-   * distributed by rows and factorised by MUMPS (DistributedFactorisation),
-   * and the raw stiffness is not kept: each rank adds its cells' part of
-   * K u_prescribed to unit_rhs while assembling.
+   * distributed by rows, and the raw stiffness is not kept: each rank adds
+   * its cells' part of K u_prescribed to unit_rhs while assembling. That
+   * matrix is then either split, factorised by MUMPS over every rank
+   * (DistributedFactorisation), or, where the harmonics are spread over
+   * the ranks, gathered whole on the harmonic's rank (owner) and
+   * factorised there as on one rank; a solve is then that rank's
+   * substitution, broadcast.
    */
   struct ModeSystem
   {
@@ -58,8 +64,24 @@ namespace thinlayer
     /// own copy of the condensed stiffness).
     std::unique_ptr<AmgConjugateGradient> iterative;
 
-    /// Replace @p rhs (condensed) by the solution with the elastic factors
-    /// (or the iterative solver).
+    /// On the rank that holds a spread mode's whole factor: the pattern of
+    /// the gathered stiffness (whose values are freed once factorised).
+    SparsityPattern whole_sparsity;
+
+    /// On several ranks with the harmonics spread: the rank that holds
+    /// this mode's whole factor (factorisation); else invalid.
+    unsigned int owner = numbers::invalid_unsigned_int;
+
+    /// Whether this mode's factor is whole on one of several ranks.
+    bool
+    spread() const
+    {
+      return owner != numbers::invalid_unsigned_int;
+    }
+
+    /// Replace @p rhs (condensed, the same on every rank) by the solution
+    /// with the elastic factors (or the iterative solver): on several
+    /// ranks a collective call.
     void
     solve(Vector<double> &rhs)
     {
@@ -67,6 +89,12 @@ namespace thinlayer
         iterative->solve(rhs);
       else if (distributed_factorisation)
         distributed_factorisation->solve(rhs);
+      else if (spread())
+        {
+          if (mpi::rank() == owner)
+            factorisation.solve(rhs);
+          mpi::broadcast(rhs, owner);
+        }
       else
         factorisation.solve(rhs);
     }

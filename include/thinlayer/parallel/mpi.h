@@ -78,6 +78,10 @@ namespace thinlayer
     void
     sum(Vector<double> &v);
 
+    /// Replace @p v by rank @p root's; nothing on one rank.
+    void
+    broadcast(Vector<double> &v, const unsigned int root);
+
     /// Rank 0's @p text, on every rank.
     std::string
     broadcast(const std::string &text);

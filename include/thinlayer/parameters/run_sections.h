@@ -98,6 +98,9 @@ namespace thinlayer
     /// AMG-CG: the residual reduction of a solve, and its iteration limit.
     double       linear_solver_tolerance;
     unsigned int linear_solver_iterations;
+    /// On several ranks: each Fourier harmonic factorised whole on one
+    /// rank (rather than split over all).
+    bool spread_harmonics;
 
     static void
     declare(ParameterHandler &prm);

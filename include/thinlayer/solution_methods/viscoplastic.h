@@ -39,10 +39,10 @@ namespace thinlayer
     solve_step(const double new_load_factor) override;
 
   private:
-    /// Mode @p m's step increment for the load increment @p dlambda and
+    /// Every mode's step increment for the load increment @p dlambda and
     /// the current body loads.
     void
-    solve_increment(const unsigned int m, const double dlambda);
+    solve_increments(const double dlambda);
 
     const SolverParameters &parameters;
     Analysis<dim>          &analysis;
