@@ -18,12 +18,10 @@ the step's displacement against one rank's.
 Writes output/benchmarks/harmonics.md and prints it.
 """
 import argparse
-import json
 import os
 import statistics
-import subprocess
 
-from thinlayer_tools import THINLAYER, TOP, mpirun
+from thinlayer_tools import THINLAYER, TOP, mpirun, run_for_summary
 
 OUT = os.path.join(TOP, "output", "benchmarks")
 GEOMETRY = ("half_width=1, width=5, depth=3, aspect_ratio=10, n_footing=32, "
@@ -44,9 +42,7 @@ def run(ranks, spread, directory):
         "-s", "Output/Directory=" + directory,
         "-s", "Output/Write VTU=false",
         "-s", "Output/Print timing=false"]
-    subprocess.run(command, capture_output=True, text=True, check=True)
-    with open(os.path.join(directory, "summary.json")) as f:
-        return json.load(f)
+    return run_for_summary(command, directory)
 
 
 def main():

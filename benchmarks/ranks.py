@@ -16,12 +16,10 @@ peak_memory_mb_per_rank, VmHWM) and of it the loaded program's
 Writes output/benchmarks/ranks.csv and ranks.md and prints the table.
 """
 import argparse
-import json
 import os
 import statistics
-import subprocess
 
-from thinlayer_tools import THINLAYER, TOP, mpirun
+from thinlayer_tools import THINLAYER, TOP, mpirun, run_for_summary
 from thinlayer_tools.cases import PAPER_FIXED_STEPS, PRANDTL_SIZES
 from thinlayer_tools.report.runs import DEFAULT, PAPER
 
@@ -43,9 +41,7 @@ def run_once(ranks, geometry, entries, directory):
                                "-s", "Output/Print timing=false"]
     for entry in entries:
         command += ["-s", entry]
-    subprocess.run(command, capture_output=True, text=True, check=True)
-    with open(os.path.join(directory, "summary.json")) as f:
-        return json.load(f)
+    return run_for_summary(command, directory)
 
 
 def main():

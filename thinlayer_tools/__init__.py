@@ -15,6 +15,7 @@ plots         one chart program per study
 report        the sections of the reproduction report, and its check in Chromium
 reproduce     the paper reproduced into one report
 """
+import json
 import os
 import subprocess
 
@@ -51,3 +52,11 @@ def run_module(module, arguments, **options):
     environment["PYTHONPATH"] = TOP + (os.pathsep + path if path else "")
     return subprocess.run(["/usr/bin/python3", "-m", module] + list(arguments),
                           env=environment, **options)
+
+
+def run_for_summary(command, directory):
+    """Run the thinlayer COMMAND (its Output/Directory DIRECTORY; an error
+    ends the caller) and return the run's summary.json."""
+    subprocess.run(command, capture_output=True, text=True, check=True)
+    with open(os.path.join(directory, "summary.json")) as f:
+        return json.load(f)
