@@ -19,7 +19,9 @@ namespace thinlayer
     // Every member, the flag as 0 or 1: a sum of the owner's value and
     // zeros is the owner's value.
     constexpr unsigned int n = 10;
-    Vector<double>         packed(n * values.size());
+    static_assert(sizeof(InterfaceValues) == n * sizeof(double),
+                  "every member of InterfaceValues is packed below");
+    Vector<double> packed(n * values.size());
     for (unsigned int k = 0; k < values.size(); ++k)
       {
         const InterfaceValues &v      = values[k];
