@@ -74,6 +74,7 @@ namespace thinlayer
                        "motion");
 
     setup_dofs_and_constraints();
+    setup_dof_partitioner();
     setup_mode_vectors();
     assemble_stiffness();
     factorise_stiffness();
@@ -159,9 +160,70 @@ namespace thinlayer
 
   template <int dim>
   void
+  Analysis<dim>::setup_dof_partitioner()
+  {
+    // Without mpirun MPI is never started: the serial layout needs none.
+    if (mpi::n_ranks() == 1)
+      {
+        dof_partitioner =
+          std::make_shared<Utilities::MPI::Partitioner>(dof_handler.n_dofs());
+        return;
+      }
+    const IndexSet &owned = owned_per_rank[mpi::rank()];
+    std::vector<types::global_dof_index> dofs;
+    for (const auto &group : groups)
+      group->add_dofs(dofs);
+    // The DoFs the rank's constraint lines name (a rigid footing's lines
+    // name one DoF anywhere in the mesh).
+    for (const auto &system : systems)
+      for (const auto &line : system->constraints.get_lines())
+        if (owned.is_element(line.index))
+          for (const auto &entry : line.entries)
+            dofs.push_back(entry.first);
+    std::sort(dofs.begin(), dofs.end());
+    dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+    IndexSet relevant(dof_handler.n_dofs());
+    relevant.add_indices(dofs.begin(), dofs.end());
+    relevant.add_indices(owned);
+    dof_partitioner = std::make_shared<Utilities::MPI::Partitioner>(
+      owned, relevant, mpi::communicator());
+  }
+
+
+  template <int dim>
+  ModeVectors
+  Analysis<dim>::new_mode_vectors() const
+  {
+    ModeVectors vectors(kinematics.n_modes());
+    for (ModeVector &v : vectors)
+      v.reinit(dof_partitioner);
+    return vectors;
+  }
+
+
+  template <int dim>
+  Vector<double>
+  Analysis<dim>::whole(const ModeVector &v) const
+  {
+    Vector<double> result;
+    mpi::all_gather(
+      make_array_view(v.begin(), v.begin() + v.locally_owned_size()), result);
+    return result;
+  }
+
+
+  template <int dim>
+  void
   Analysis<dim>::setup_mode_vectors()
   {
     const unsigned int n = dof_handler.n_dofs();
+    // The rank's own entries of a vector every rank computed whole.
+    const auto own_part = [this](const Vector<double> &whole, ModeVector &v) {
+      v.reinit(dof_partitioner);
+      for (unsigned int k = 0; k < v.locally_owned_size(); ++k)
+        v.local_element(k) =
+          whole[dof_partitioner->local_to_global(k)];
+    };
     for (unsigned int m = 0; m < kinematics.n_modes(); ++m)
       {
         ModeSystem &mode = *systems[m];
@@ -173,25 +235,21 @@ namespace thinlayer
 
         // Prescribed displacements at unit load factor; the nodes tied to
         // them (centre nodes, the axis) follow through the structural lines.
-        mode.unit_prescribed_displacement.reinit(n);
+        Vector<double> whole(n);
         for (const auto &[dof, value] :
              boundary_data.prescribed_values(mapping, dof_handler, m))
-          mode.unit_prescribed_displacement[dof] = value;
-        mode.structural_constraints.distribute(
-          mode.unit_prescribed_displacement);
+          whole[dof] = value;
+        mode.structural_constraints.distribute(whole);
+        own_part(whole, mode.unit_prescribed_displacement);
 
-        mode.unit_load.reinit(n);
-        boundary_data.assemble_load_vector(mapping,
-                                           dof_handler,
-                                           m,
-                                           mode.unit_load);
-        mode.unit_rhs.reinit(n);
+        whole = 0;
+        boundary_data.assemble_load_vector(mapping, dof_handler, m, whole);
+        own_part(whole, mode.unit_load);
+        mode.unit_rhs.reinit(dof_partitioner);
       }
     for (ModeVectors *vectors :
          {&solution_vectors, &increment_vectors, &internal_force_vectors})
-      vectors->assign(kinematics.n_modes(), Vector<double>(n));
-    if (mpi::n_ranks() > 1)
-      rank_loads.assign(kinematics.n_modes(), Vector<double>(n));
+      *vectors = new_mode_vectors();
   }
 
 
@@ -211,13 +269,18 @@ namespace thinlayer
                   mode.constraints.distribute_local_to_global(
                     matrix, dofs, mode.condensed_stiffness);
                 });
-            mode.stiffness.vmult(mode.unit_rhs,
-                                 mode.unit_prescribed_displacement);
+            // One rank owns every entry, in order.
+            Vector<double> u(mode.unit_prescribed_displacement.begin(),
+                             mode.unit_prescribed_displacement.end()),
+              Ku(u.size());
+            mode.stiffness.vmult(Ku, u);
+            std::copy(Ku.begin(), Ku.end(), mode.unit_rhs.begin());
           }
         else
           {
             // The raw stiffness is not kept: each rank adds its cells'
             // K u_prescribed.
+            const GhostValues ghosts(mode.unit_prescribed_displacement);
             Vector<double> u, Ku;
             for (const auto &group : groups)
               group->assemble_elastic(
@@ -233,7 +296,7 @@ namespace thinlayer
                     mode.unit_rhs[dofs[i]] += Ku[i];
                 });
             mode.distributed_stiffness->compress(VectorOperation::add);
-            mpi::sum(mode.unit_rhs);
+            mode.unit_rhs.compress(VectorOperation::add);
           }
         // f - K u_prescribed.
         mode.unit_rhs.sadd(-1, 1, mode.unit_load);
@@ -280,9 +343,9 @@ namespace thinlayer
       forces = 0;
     for (const auto &group : groups)
       group->add_internal_forces(internal_force_vectors);
-    // Each rank's cells' share.
+    // Each rank's cells' share, added into the DoFs' owners.
     for (auto &forces : internal_force_vectors)
-      mpi::sum(forces);
+      forces.compress(VectorOperation::add);
   }
 
 
@@ -327,15 +390,14 @@ namespace thinlayer
   double
   Analysis<dim>::secant_stiffness_ratio() const
   {
-    const double   dlambda      = current_lambda - accepted_lambda;
-    double         elastic_work = 0, work = 0;
-    Vector<double> load(dof_handler.n_dofs()),
-      elastic_increment(dof_handler.n_dofs());
+    const double dlambda      = current_lambda - accepted_lambda;
+    double       elastic_work = 0, work = 0;
+    ModeVector   load(dof_partitioner), elastic_increment(dof_partitioner);
     for (unsigned int m = 0; m < systems.size(); ++m)
       {
         load = systems[m]->unit_rhs;
         load *= dlambda;
-        systems[m]->constraints.condense(load);
+        systems[m]->condense(load);
         elastic_increment = load;
         systems[m]->solve(elastic_increment);
         elastic_work += load * elastic_increment;
@@ -351,21 +413,19 @@ namespace thinlayer
   unsigned int
   Analysis<dim>::viscoplastic_update(ModeVectors &body_load_change)
   {
-    // On many ranks each adds its points' loads, then the sum is added.
-    const bool   split      = mpi::n_ranks() > 1;
-    ModeVectors &loads      = split ? rank_loads : body_load_change;
+    // Each rank adds its points' loads, into its ghosts where another rank
+    // owns the DoF; compress() adds those to their owners.
     unsigned int n_yielding = 0;
-    if (split)
-      for (auto &v : rank_loads)
-        v = 0;
-    for (const auto &group : groups)
-      n_yielding += group->viscoplastic_update(increment_vectors, loads);
-    if (split)
-      for (unsigned int m = 0; m < systems.size(); ++m)
-        {
-          mpi::sum(rank_loads[m]);
-          body_load_change[m] += rank_loads[m];
-        }
+    {
+      const GhostValues ghosts(increment_vectors);
+      for (auto &v : body_load_change)
+        v.zero_out_ghost_values();
+      for (const auto &group : groups)
+        n_yielding +=
+          group->viscoplastic_update(increment_vectors, body_load_change);
+    }
+    for (auto &v : body_load_change)
+      v.compress(VectorOperation::add);
     return mpi::sum(n_yielding);
   }
 
@@ -381,15 +441,18 @@ namespace thinlayer
         stress_excess[m]          = 0;
       }
     unsigned int n_yielding = 0;
-    for (const auto &group : groups)
-      n_yielding += group->return_mapping_update(increment_vectors,
-                                                 with_tangents,
-                                                 internal_force_vectors,
-                                                 stress_excess);
+    {
+      const GhostValues ghosts(increment_vectors);
+      for (const auto &group : groups)
+        n_yielding += group->return_mapping_update(increment_vectors,
+                                                   with_tangents,
+                                                   internal_force_vectors,
+                                                   stress_excess);
+    }
     for (unsigned int m = 0; m < systems.size(); ++m)
       {
-        mpi::sum(internal_force_vectors[m]);
-        mpi::sum(stress_excess[m]);
+        internal_force_vectors[m].compress(VectorOperation::add);
+        stress_excess[m].compress(VectorOperation::add);
       }
     return mpi::sum(n_yielding);
   }
@@ -418,6 +481,9 @@ namespace thinlayer
   Analysis<dim>::profiles() const
   {
     std::vector<NamedProfile> result;
+    GhostValues               ghosts(solution_vectors);
+    for (const ModeVector &v : increment_vectors)
+      ghosts.add(v);
     for (const auto &group : groups)
       for (auto &profile :
            group->profiles(solution_vectors, increment_vectors, pending))
@@ -430,18 +496,40 @@ namespace thinlayer
   Vector<double>
   Analysis<dim>::displacement_at(const double theta, const bool increment) const
   {
+    return displacement_at(theta, whole_displacements(increment));
+  }
+
+
+  template <int dim>
+  std::vector<Vector<double>>
+  Analysis<dim>::whole_displacements(const bool increment) const
+  {
+    std::vector<Vector<double>> modes;
+    for (unsigned int m = 0; m < systems.size(); ++m)
+      {
+        modes.push_back(
+          whole(increment ? increment_vectors[m] : solution_vectors[m]));
+        // A pending step's state is the accepted one plus its increment.
+        if (pending && !increment)
+          modes.back() += whole(increment_vectors[m]);
+      }
+    return modes;
+  }
+
+
+  template <int dim>
+  Vector<double>
+  Analysis<dim>::displacement_at(
+    const double                       theta,
+    const std::vector<Vector<double>> &modes) const
+  {
     Vector<double> u(dof_handler.n_dofs());
     for (unsigned int m = 0; m < systems.size(); ++m)
       {
-        const Vector<double> &v =
-          increment ? increment_vectors[m] : solution_vectors[m];
         const double t1 = kinematics.T1_at(m, theta);
         const double t2 = kinematics.T2_at(m, theta);
-        // A pending step's state is the accepted one plus its increment.
-        const bool add_increment = pending && !increment;
         for (unsigned int i = 0; i < u.size(); ++i)
-          u[i] += (dof_component[i] < 2 ? t1 : t2) *
-                  (add_increment ? v[i] + increment_vectors[m][i] : v[i]);
+          u[i] += (dof_component[i] < 2 ? t1 : t2) * modes[m][i];
       }
     return u;
   }

@@ -18,6 +18,7 @@ namespace thinlayer
     : n_modes(mode_constraints.size())
     , n(n_dofs)
     , identity(owned_per_rank.empty() || mode_constraints.size() == 1)
+    , mode_constraints(mode_constraints)
   {
     Assert(n_modes > 0, ExcMessage("A system needs a mode."));
     if (owned_per_rank.empty())
@@ -64,7 +65,8 @@ namespace thinlayer
             constraints.set_inhomogeneity(row, line.inhomogeneity);
           }
     constraints.close();
-    vector.reinit(n_modes * n);
+    vector.reinit(factorisation ? n_modes * n
+                                : n_modes * n_owned[mpi::rank()]);
   }
 
 
@@ -164,16 +166,29 @@ namespace thinlayer
   void
   CoupledSystem::solve(const ModeVectors &residual, ModeVectors &correction)
   {
-    for (unsigned int m = 0; m < n_modes; ++m)
-      for (types::global_dof_index i = 0; i < n; ++i)
-        vector[index(m, i)] = residual[m][i];
     if (factorisation)
-      factorisation->solve(vector);
-    else
-      distributed_factorisation->solve(vector);
-    constraints.distribute(vector);
+      {
+        for (unsigned int m = 0; m < n_modes; ++m)
+          for (types::global_dof_index i = 0; i < n; ++i)
+            vector[index(m, i)] = residual[m][i];
+        factorisation->solve(make_array_view(vector));
+        constraints.distribute(vector);
+        for (unsigned int m = 0; m < n_modes; ++m)
+          for (types::global_dof_index i = 0; i < n; ++i)
+            correction[m][i] = vector[index(m, i)];
+        return;
+      }
+    // The rank's rows: its own DoFs of each mode in turn (index()).
+    const types::global_dof_index n_rows = n_owned[mpi::rank()];
     for (unsigned int m = 0; m < n_modes; ++m)
-      for (types::global_dof_index i = 0; i < n; ++i)
-        correction[m][i] = vector[index(m, i)];
+      for (types::global_dof_index k = 0; k < n_rows; ++k)
+        vector[m * n_rows + k] = residual[m].local_element(k);
+    distributed_factorisation->solve(make_array_view(vector));
+    for (unsigned int m = 0; m < n_modes; ++m)
+      {
+        for (types::global_dof_index k = 0; k < n_rows; ++k)
+          correction[m].local_element(k) = vector[m * n_rows + k];
+        distribute(*mode_constraints[m], correction[m]);
+      }
   }
 } // namespace thinlayer

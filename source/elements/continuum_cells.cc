@@ -63,6 +63,19 @@ namespace thinlayer
 
   template <int dim>
   void
+  ContinuumCells<dim>::add_dofs(
+    std::vector<types::global_dof_index> &dofs) const
+  {
+    for (const unsigned int c : point_loop.get_cells())
+      dofs.insert(dofs.end(),
+                  strain_operator.cell_dofs(c),
+                  strain_operator.cell_dofs(c) +
+                    strain_operator.dofs_per_cell());
+  }
+
+
+  template <int dim>
+  void
   ContinuumCells<dim>::add_sparsity(
     DynamicSparsityPattern          &dsp,
     const AffineConstraints<double> &constraints) const

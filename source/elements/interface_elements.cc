@@ -190,7 +190,7 @@ namespace thinlayer
     Tensor<1, 3>   jump; // (x, y, theta) summed over the modes
     for (unsigned int m = 0; m < vectors.size(); ++m)
       {
-        const Vector<double> &v  = vectors[m];
+        const ModeVector    &v  = vectors[m];
         const double          t1 = kinematics->T1(m, s);
         const double          t2 = kinematics->T2(m, s);
         for (const Entry &e : point.entries)
@@ -220,7 +220,7 @@ namespace thinlayer
                               traction[2]};
     for (unsigned int m = 0; m < target.size(); ++m)
       {
-        Vector<double> &v  = target[m];
+        ModeVector     &v  = target[m];
         const double    t1 = kinematics->T1(m, s);
         const double    t2 = kinematics->T2(m, s);
         for (const Entry &e : point.entries)
@@ -256,6 +256,15 @@ namespace thinlayer
               G(2, column) += t2 * e.value;
           }
       }
+  }
+
+
+  void
+  InterfaceElements::add_dofs(std::vector<types::global_dof_index> &dofs) const
+  {
+    for (unsigned int k = 0; k < elements.size(); ++k)
+      if (owns_element(k))
+        dofs.insert(dofs.end(), elements[k].dofs.begin(), elements[k].dofs.end());
   }
 
 

@@ -244,13 +244,15 @@ namespace thinlayer
                                     const Analysis<2> &analysis,
                                     const unsigned int slices)
   {
-    // Every rank takes part: each holds the points of its own cells.
-    const CellFields fields(analysis);
+    // Every rank takes part: each holds the points of its own cells and
+    // its own DoFs.
+    const CellFields                  fields(analysis);
+    const std::vector<Vector<double>> modes = analysis.whole_displacements();
     if (!writes)
       return;
     std::ostringstream name;
     name << "revolved-" << std::setw(4) << std::setfill('0') << step << ".vtu";
-    write_file(name.str(), revolved_view_vtu(analysis, fields, slices));
+    write_file(name.str(), revolved_view_vtu(analysis, fields, modes, slices));
     revolved_records.emplace_back(load_factor, name.str());
     std::ostringstream pvd;
     DataOutBase::write_pvd_record(pvd, revolved_records);
@@ -263,12 +265,13 @@ namespace thinlayer
   OutputWriter::write_displacements(const Analysis<dim> &analysis,
                                     const double         theta) const
   {
+    // Every rank takes part: each holds its own DoFs.
+    const Vector<double> u  = analysis.displacement_at(theta);
+    const Vector<double> du = analysis.displacement_at(theta, true);
     if (!writes)
       return;
-    const auto          &dof_handler = analysis.get_dof_handler();
-    const bool           fourier     = analysis.get_kinematics().is_fourier();
-    const Vector<double> u           = analysis.displacement_at(theta);
-    const Vector<double> du          = analysis.displacement_at(theta, true);
+    const auto &dof_handler = analysis.get_dof_handler();
+    const bool  fourier     = analysis.get_kinematics().is_fourier();
     // The Cartesian components in the cut at theta: x = u_r cos(theta) -
     // u_theta sin(theta) for Fourier, and y along the axis.
     const auto x_component = [&](const Vector<double>         &v,

@@ -27,9 +27,10 @@ namespace thinlayer
 
 
   RevolvedView
-  revolved_view(const Analysis<2> &analysis,
-                const CellFields  &fields,
-                const unsigned int slices)
+  revolved_view(const Analysis<2>                 &analysis,
+                const CellFields                  &fields,
+                const std::vector<Vector<double>> &modes,
+                const unsigned int                 slices)
   {
     const Kinematics &kinematics  = analysis.get_kinematics();
     const auto       &dof_handler = analysis.get_dof_handler();
@@ -65,7 +66,7 @@ namespace thinlayer
     for (unsigned int k = 0; k <= slices; ++k)
       {
         angles[k]       = 2 * numbers::PI * k / slices;
-        displacement[k] = analysis.displacement_at(angles[k]);
+        displacement[k] = analysis.displacement_at(angles[k], modes);
       }
 
     std::vector<DataOutBase::Patch<3, 3>> &patches = view.patches;
@@ -120,11 +121,12 @@ namespace thinlayer
 
 
   std::string
-  revolved_view_vtu(const Analysis<2> &analysis,
-                    const CellFields  &fields,
-                    const unsigned int slices)
+  revolved_view_vtu(const Analysis<2>                 &analysis,
+                    const CellFields                  &fields,
+                    const std::vector<Vector<double>> &modes,
+                    const unsigned int                 slices)
   {
-    const RevolvedView view = revolved_view(analysis, fields, slices);
+    const RevolvedView view = revolved_view(analysis, fields, modes, slices);
     std::ostringstream vtu;
     DataOutBase::write_vtu(
       view.patches,

@@ -5,6 +5,7 @@
 #include <thinlayer/base/interruption.h>
 #include <thinlayer/parallel/mpi.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <iostream>
 
@@ -89,6 +90,14 @@ namespace thinlayer
     }
 
 
+    double
+    sum(const double value)
+    {
+      return n_ranks() == 1 ? value
+                            : Utilities::MPI::sum(value, communicator());
+    }
+
+
     void
     sum(Vector<double> &v)
     {
@@ -104,16 +113,99 @@ namespace thinlayer
     }
 
 
-    void
-    broadcast(Vector<double> &v, const unsigned int root)
+    namespace
     {
-      if (n_ranks() == 1 || v.size() == 0)
-        return;
-      const int ierr = MPI_Bcast(v.data(),
-                                 static_cast<int>(v.size()),
-                                 MPI_DOUBLE,
-                                 static_cast<int>(root),
-                                 communicator());
+      /// Every rank's @p count, and where each starts, in rank order.
+      void
+      counts_and_offsets(const std::size_t count,
+                         std::vector<int> &counts,
+                         std::vector<int> &offsets)
+      {
+        const int n = static_cast<int>(count);
+        counts.assign(n_ranks(), 0);
+        const int ierr = MPI_Allgather(
+          &n, 1, MPI_INT, counts.data(), 1, MPI_INT, communicator());
+        AssertThrowMPI(ierr);
+        offsets.assign(n_ranks(), 0);
+        for (unsigned int r = 1; r < n_ranks(); ++r)
+          offsets[r] = offsets[r - 1] + counts[r - 1];
+      }
+    } // namespace
+
+
+    void
+    all_gather(const ArrayView<const double> &part, Vector<double> &whole)
+    {
+      if (n_ranks() == 1)
+        {
+          whole.reinit(part.size(), /*omit_zeroing_entries=*/true);
+          std::copy(part.begin(), part.end(), whole.begin());
+          return;
+        }
+      std::vector<int> counts, offsets;
+      counts_and_offsets(part.size(), counts, offsets);
+      whole.reinit(offsets.back() + counts.back(), true);
+      const int ierr = MPI_Allgatherv(part.data(),
+                                      static_cast<int>(part.size()),
+                                      MPI_DOUBLE,
+                                      whole.data(),
+                                      counts.data(),
+                                      offsets.data(),
+                                      MPI_DOUBLE,
+                                      communicator());
+      AssertThrowMPI(ierr);
+    }
+
+
+    void
+    gather(const ArrayView<const double> &part,
+           Vector<double>                &whole,
+           const unsigned int             root)
+    {
+      if (n_ranks() == 1)
+        {
+          all_gather(part, whole);
+          return;
+        }
+      std::vector<int> counts, offsets;
+      counts_and_offsets(part.size(), counts, offsets);
+      if (rank() == root)
+        whole.reinit(offsets.back() + counts.back(), true);
+      const int ierr = MPI_Gatherv(part.data(),
+                                   static_cast<int>(part.size()),
+                                   MPI_DOUBLE,
+                                   rank() == root ? whole.data() : nullptr,
+                                   counts.data(),
+                                   offsets.data(),
+                                   MPI_DOUBLE,
+                                   static_cast<int>(root),
+                                   communicator());
+      AssertThrowMPI(ierr);
+    }
+
+
+    void
+    scatter(const Vector<double>    &whole,
+            const ArrayView<double> &part,
+            const unsigned int       root)
+    {
+      if (n_ranks() == 1)
+        {
+          AssertDimension(whole.size(), part.size());
+          std::copy(whole.begin(), whole.end(), part.begin());
+          return;
+        }
+      std::vector<int> counts, offsets;
+      counts_and_offsets(part.size(), counts, offsets);
+      const int ierr = MPI_Scatterv(rank() == root ? whole.data() : nullptr,
+                                    counts.data(),
+                                    offsets.data(),
+                                    MPI_DOUBLE,
+                                    part.data(),
+                                    static_cast<int>(part.size()),
+                                    MPI_DOUBLE,
+                                    static_cast<int>(root),
+                                    communicator());
       AssertThrowMPI(ierr);
     }
 

@@ -122,14 +122,16 @@ namespace thinlayer
 
   template <int dim>
   double
-  Monitors<dim>::boundary_sum(const Vector<double> &forces,
-                              const unsigned int    component,
-                              const int             weight_by) const
+  Monitors<dim>::boundary_sum(const ModeVector  &forces,
+                              const unsigned int component,
+                              const int          weight_by) const
   {
+    // Each rank's own DoFs.
     double sum = 0;
     for (const auto &[dof, point] : reaction_dofs[component])
-      sum += forces[dof] * (weight_by < 0 ? 1. : point[weight_by]);
-    return sum;
+      if (forces.in_local_range(dof))
+        sum += forces[dof] * (weight_by < 0 ? 1. : point[weight_by]);
+    return mpi::sum(sum);
   }
 
 
@@ -149,9 +151,9 @@ namespace thinlayer
     unsigned int m = 0;
     while (kinematics.harmonic(m) != harmonic)
       ++m;
-    Vector<double> f(analysis.internal_forces()[m]);
+    ModeVector f(analysis.internal_forces()[m]);
     f.add(-analysis.load_factor(), analysis.mode_system(m).unit_load);
-    analysis.get_element_constraints().condense(f);
+    condense(analysis.get_element_constraints(), f);
 
     // Components: 0 x or r, 1 y or z, 2 theta; coordinates 0 x or r,
     // 1 y or z.

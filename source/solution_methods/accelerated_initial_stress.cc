@@ -1,3 +1,4 @@
+#include <thinlayer/parallel/mpi.h>
 #include <thinlayer/solution_methods/accelerated_initial_stress.h>
 
 namespace thinlayer
@@ -16,9 +17,17 @@ namespace thinlayer
   AcceleratedInitialStressMethod<dim>::initialize()
   {
     ReturnMappingMethod<dim>::initialize();
-    const unsigned int n = this->analysis.get_dof_handler().n_dofs();
-    stacked_increment.reinit(n * this->analysis.n_modes());
-    stacked_correction.reinit(n * this->analysis.n_modes());
+    // Each rank's rows of all modes, contiguous and in rank order.
+    const ModeVectors  zero    = this->analysis.new_mode_vectors();
+    const unsigned int n_modes = zero.size();
+    const auto [first, last]   = zero[0].get_partitioner()->local_range();
+    IndexSet owned(n_modes * zero[0].size());
+    owned.add_range(n_modes * first, n_modes * last);
+    for (ModeVector *v : {&stacked_increment, &stacked_correction})
+      if (mpi::n_ranks() == 1)
+        v->reinit(owned.size()); // no MPI without mpirun
+      else
+        v->reinit(owned, mpi::communicator());
   }
 
 
@@ -36,20 +45,23 @@ namespace thinlayer
                                                ResidualNorms &norms,
                                                StepResult & /*result*/)
   {
-    Analysis<dim>     &analysis = this->analysis;
-    const unsigned int n        = analysis.get_dof_handler().n_dofs();
+    Analysis<dim> &analysis = this->analysis;
     this->elastic_corrections();
     this->remember_increments();
+    const unsigned int n = analysis.step_increment()[0].locally_owned_size();
     for (unsigned int m = 0; m < analysis.n_modes(); ++m)
-      for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int k = 0; k < n; ++k)
         {
-          stacked_increment[m * n + i]  = analysis.step_increment()[m][i];
-          stacked_correction[m * n + i] = this->correction[m][i];
+          stacked_increment.local_element(m * n + k) =
+            analysis.step_increment()[m].local_element(k);
+          stacked_correction.local_element(m * n + k) =
+            this->correction[m].local_element(k);
         }
     anderson.update(stacked_increment, stacked_correction);
     for (unsigned int m = 0; m < analysis.n_modes(); ++m)
-      for (unsigned int i = 0; i < n; ++i)
-        analysis.step_increment()[m][i] = stacked_increment[m * n + i];
+      for (unsigned int k = 0; k < n; ++k)
+        analysis.step_increment()[m].local_element(k) =
+          stacked_increment.local_element(m * n + k);
     norms = this->evaluate_residual(target);
     return true;
   }

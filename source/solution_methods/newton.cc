@@ -88,7 +88,7 @@ namespace thinlayer
       {
         for (unsigned int m = 0; m < n_modes; ++m)
           {
-            Vector<double> &increment = analysis.step_increment()[m];
+            ModeVector &increment = analysis.step_increment()[m];
             increment                 = this->previous_increment[m];
             increment.add(scale, this->correction[m]);
           }

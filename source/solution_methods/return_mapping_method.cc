@@ -21,13 +21,13 @@ namespace thinlayer
   void
   ReturnMappingMethod<dim>::initialize()
   {
-    const Vector<double> zero(analysis.get_dof_handler().n_dofs());
-    correction.assign(analysis.n_modes(), zero);
-    previous_increment.assign(analysis.n_modes(), zero);
-    residual.assign(analysis.n_modes(), zero);
-    accepted_increment.assign(analysis.n_modes(), zero);
-    stress_excess.assign(analysis.n_modes(), zero);
-    condensed            = zero;
+    const ModeVectors zero = analysis.new_mode_vectors();
+    correction             = zero;
+    previous_increment     = zero;
+    residual               = zero;
+    accepted_increment     = zero;
+    stress_excess          = zero;
+    condensed              = zero[0];
     accepted_step        = 0;
     accepted_load_factor = analysis.accepted_load_factor();
   }
@@ -61,18 +61,18 @@ namespace thinlayer
     for (unsigned int m = 0; m < analysis.n_modes(); ++m)
       {
         const ModeSystem &mode = analysis.mode_system(m);
-        Vector<double>   &r    = residual[m];
+        ModeVector       &r    = residual[m];
         r                      = mode.unit_load;
         r *= target;
         norms.forces = std::max({norms.forces,
                                  r.linfty_norm(),
                                  analysis.internal_forces()[m].linfty_norm()});
         r -= analysis.internal_forces()[m];
-        mode.constraints.condense(r);
+        mode.condense(r);
         norms.max = std::max(norms.max, r.linfty_norm());
         norms.l2 += r.norm_sqr();
         condensed = stress_excess[m];
-        mode.constraints.condense(condensed);
+        mode.condense(condensed);
         norms.body_loads = std::max(norms.body_loads, condensed.linfty_norm());
       }
     norms.l2 = std::sqrt(norms.l2);
@@ -88,7 +88,7 @@ namespace thinlayer
     const double scale   = accepted_step != 0 ? dlambda / accepted_step : 0;
     for (unsigned int m = 0; m < analysis.n_modes(); ++m)
       {
-        Vector<double> &increment = analysis.step_increment()[m];
+        ModeVector &increment = analysis.step_increment()[m];
         if (scale > 0)
           {
             increment = accepted_increment[m];
@@ -204,7 +204,7 @@ namespace thinlayer
             double change = 0, size = 0;
             for (unsigned int m = 0; m < analysis.n_modes(); ++m)
               {
-                const Vector<double> &increment = analysis.step_increment()[m];
+                const ModeVector &increment = analysis.step_increment()[m];
                 previous_increment[m] -= increment;
                 change = std::max(change, previous_increment[m].linfty_norm());
                 size   = std::max(size, increment.linfty_norm());
@@ -224,7 +224,7 @@ namespace thinlayer
       correction[m] = residual[m];
     analysis.elastic_solve(correction);
     for (unsigned int m = 0; m < analysis.n_modes(); ++m)
-      analysis.mode_system(m).constraints.distribute(correction[m]);
+      analysis.mode_system(m).distribute(correction[m]);
   }
 
 

@@ -19,10 +19,9 @@ namespace thinlayer
   void
   ViscoplasticMethod<dim>::initialize()
   {
-    const Vector<double> zero(analysis.get_dof_handler().n_dofs());
-    previous_increment.assign(analysis.n_modes(), zero);
-    body_loads.assign(analysis.n_modes(), zero);
-    body_load_change.assign(analysis.n_modes(), zero);
+    previous_increment = analysis.new_mode_vectors();
+    body_loads         = analysis.new_mode_vectors();
+    body_load_change   = analysis.new_mode_vectors();
   }
 
 
@@ -35,13 +34,13 @@ namespace thinlayer
       {
         increments[m] = body_loads[m];
         increments[m].add(dlambda, analysis.mode_system(m).unit_rhs);
-        analysis.mode_system(m).constraints.condense(increments[m]);
+        analysis.mode_system(m).condense(increments[m]);
       }
     analysis.elastic_solve(increments);
     for (unsigned int m = 0; m < analysis.n_modes(); ++m)
       {
         const ModeSystem &mode = analysis.mode_system(m);
-        mode.constraints.distribute(increments[m]);
+        mode.distribute(increments[m]);
         increments[m].add(dlambda, mode.unit_prescribed_displacement);
       }
   }
@@ -81,11 +80,11 @@ namespace thinlayer
         double change = 0, size = 0;
         for (unsigned int m = 0; m < n_modes; ++m)
           {
-            const Vector<double> &increment = analysis.step_increment()[m];
+            const ModeVector &increment = analysis.step_increment()[m];
             // The body loads are kept condensed (condensing is linear, and
             // idempotent, so solve_increments() may condense them again):
             // the criterion reads them with no copy.
-            analysis.mode_system(m).constraints.condense(body_load_change[m]);
+            analysis.mode_system(m).condense(body_load_change[m]);
             body_loads[m] += body_load_change[m];
             if (body_load_criterion)
               {

@@ -178,10 +178,10 @@ namespace thinlayer
 
 
   void
-  AmgConjugateGradient::solve(Vector<double> &rhs) const
+  AmgConjugateGradient::solve(const ArrayView<double> &rows) const
   {
     Assert(solver, ExcMessage("initialize() first."));
-    solver->rows.scatter(rhs);
+    solver->rows.scatter(rows);
     KSPSolve(solver->ksp, solver->rows.rhs, solver->rows.solution);
     KSPConvergedReason reason;
     KSPGetConvergedReason(solver->ksp, &reason);
@@ -203,7 +203,7 @@ namespace thinlayer
           "); raise Solver/Linear solver iterations or use a direct solver");
       }
 
-    solver->rows.gather(rhs);
+    solver->rows.gather(rows);
   }
 
 

@@ -4,7 +4,23 @@
 
 namespace thinlayer
 {
-  AndersonAcceleration::AndersonAcceleration(const unsigned int depth)
+  namespace
+  {
+    /// @p dst = @p src, laid out as @p src first (a default-constructed
+    /// deal.II vector is no valid target).
+    template <typename VectorType>
+    void
+    assign(VectorType &dst, const VectorType &src)
+    {
+      dst.reinit(src, /*omit_zeroing_entries=*/true);
+      dst = src;
+    }
+  } // namespace
+
+
+  template <typename VectorType>
+  AndersonAcceleration<VectorType>::AndersonAcceleration(
+    const unsigned int depth)
     : depth(depth)
     , has_previous(false)
   {
@@ -14,8 +30,9 @@ namespace thinlayer
   }
 
 
+  template <typename VectorType>
   void
-  AndersonAcceleration::reset()
+  AndersonAcceleration<VectorType>::reset()
   {
     has_previous = false;
     dX.clear();
@@ -23,13 +40,14 @@ namespace thinlayer
   }
 
 
+  template <typename VectorType>
   void
-  AndersonAcceleration::update(Vector<double> &x, const Vector<double> &g)
+  AndersonAcceleration<VectorType>::update(VectorType &x, const VectorType &g)
   {
     if (has_previous)
       {
         // Recycle the oldest difference vectors once the history is full.
-        Vector<double> dx, dg;
+        VectorType dx, dg;
         if (dX.size() == depth)
           {
             dx.swap(dX.front());
@@ -37,15 +55,15 @@ namespace thinlayer
             dX.pop_front();
             dG.pop_front();
           }
-        dx = x;
+        assign(dx, x);
         dx -= previous_x;
-        dg = g;
+        assign(dg, g);
         dg -= previous_g;
         dX.push_back(std::move(dx));
         dG.push_back(std::move(dg));
       }
-    previous_x   = x;
-    previous_g   = g;
+    assign(previous_x, x);
+    assign(previous_g, g);
     has_previous = true;
 
     // Least squares by modified Gram-Schmidt on the columns of dG: dG = Q R,
@@ -59,8 +77,8 @@ namespace thinlayer
     R.assign(m * m, 0.);
     for (unsigned int j = 0; j < m; ++j)
       {
-        Vector<double> &q   = Q[kept.size()];
-        q                   = dG[j];
+        VectorType  &q      = Q[kept.size()];
+        assign(q, dG[j]);
         const double norm_0 = q.l2_norm();
         for (unsigned int k = 0; k < kept.size(); ++k)
           {
@@ -94,4 +112,9 @@ namespace thinlayer
         x.add(-gamma[i], dG[kept[i]]);
       }
   }
+
+
+  template class AndersonAcceleration<Vector<double>>;
+  // The stacked mode vectors of all modes, distributed over the ranks.
+  template class AndersonAcceleration<LinearAlgebra::distributed::Vector<double>>;
 } // namespace thinlayer

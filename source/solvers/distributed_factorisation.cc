@@ -182,12 +182,12 @@ namespace thinlayer
 
 
   void
-  DistributedFactorisation::solve(Vector<double> &rhs) const
+  DistributedFactorisation::solve(const ArrayView<double> &rows) const
   {
     Assert(solver && solver->factorised,
            ExcMessage("factorize() first, successfully."));
-    solver->rows.scatter(rhs);
+    solver->rows.scatter(rows);
     MatSolve(solver->factor, solver->rows.rhs, solver->rows.solution);
-    solver->rows.gather(rhs);
+    solver->rows.gather(rows);
   }
 } // namespace thinlayer

@@ -133,11 +133,14 @@ namespace thinlayer
 
 
   void
-  FactorisedStiffness::solve(Vector<double> &rhs)
+  FactorisedStiffness::solve(const ArrayView<double> &rhs)
   {
     if (method == Method::umfpack)
       {
-        umfpack.solve(rhs);
+        // deal.II's UMFPACK takes its own vector type.
+        Vector<double> v(rhs.begin(), rhs.end());
+        umfpack.solve(v);
+        std::copy(v.begin(), v.end(), rhs.begin());
         return;
       }
 

@@ -29,7 +29,7 @@ namespace
         const Increment         &increment,
         const std::vector<bool> &moving = {true})
   {
-    ModeVectors   m(moving.size(), Vector<double>(3));
+    ModeVectors   m(moving.size(), ModeVector(3));
     GrowthMonitor monitor;
     for (unsigned int k = 1; k <= iterations; ++k)
       {

@@ -38,6 +38,7 @@ namespace
           const thinlayer::Parameters &) {
         view = thinlayer::revolved_view(analysis,
                                         thinlayer::CellFields(analysis),
+                                        analysis.whole_displacements(),
                                         slices);
       });
     return view;

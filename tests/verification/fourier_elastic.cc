@@ -73,8 +73,9 @@ namespace
     DoFTools::map_dofs_to_support_points(analysis.get_mapping(),
                                          analysis.get_dof_handler(),
                                          support);
-    const auto &fe    = analysis.get_dof_handler().get_fe();
-    double      error = 0;
+    const auto          &fe    = analysis.get_dof_handler().get_fe();
+    const Vector<double> u     = analysis.get_solution(0);
+    double               error = 0;
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     for (const auto &cell : analysis.get_dof_handler().active_cell_iterators())
       {
@@ -83,8 +84,7 @@ namespace
           {
             const unsigned int c = fe.system_to_component_index(i).first;
             error                = std::max(error,
-                             std::abs(analysis.get_solution(0)[dofs[i]] -
-                                      exact(support[dofs[i]], c)));
+                             std::abs(u[dofs[i]] - exact(support[dofs[i]], c)));
           }
       }
     return error;

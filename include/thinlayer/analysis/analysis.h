@@ -94,14 +94,25 @@ namespace thinlayer
     mode_system(const unsigned int m) const;
 
     /// Solve K_m x = @p rhs in place with mode @p m's elastic factors
-    /// (@p rhs condensed with its constraints).
+    /// (@p rhs condensed with its constraints). A collective call.
     void
-    elastic_solve(const unsigned int m, Vector<double> &rhs);
+    elastic_solve(const unsigned int m, ModeVector &rhs);
 
     /// The same for every mode m with @p rhs[m]: where the harmonics are
     /// spread over the ranks, their substitutions run at the same time.
     void
     elastic_solve(ModeVectors &rhs);
+
+    /// One zero vector per mode, laid out as the state's (each rank's own
+    /// DoFs and its ghosts): what a solution method iterates with.
+    ModeVectors
+    new_mode_vectors() const;
+
+    /// @p v whole, its entries gathered from every rank (on one rank a
+    /// copy): for what reads DoFs anywhere, the outputs and the monitors. A
+    /// collective call.
+    Vector<double>
+    whole(const ModeVector &v) const;
 
     /// The displacements of the last accepted state, per mode.
     const ModeVectors &
@@ -234,6 +245,18 @@ namespace thinlayer
     Vector<double>
     displacement_at(const double theta, const bool increment = false) const;
 
+    /// The displacements of every mode, whole (see whole()): the current
+    /// state's (a pending step's includes its increment), or with
+    /// @p increment the last load step's increment. A collective call.
+    std::vector<Vector<double>>
+    whole_displacements(const bool increment = false) const;
+
+    /// displacement_at() of the modes @p modes of whole_displacements():
+    /// for many angles of one state, on one rank.
+    Vector<double>
+    displacement_at(const double                       theta,
+                    const std::vector<Vector<double>> &modes) const;
+
     /// The profiles every element group writes, of the current state.
     std::vector<NamedProfile>
     profiles() const;
@@ -291,8 +314,8 @@ namespace thinlayer
     const AffineConstraints<double> &
     get_element_constraints() const;
 
-    /// The displacement amplitudes of mode @p mode.
-    const Vector<double> &
+    /// The displacement amplitudes of mode @p mode, whole (see whole()).
+    Vector<double>
     get_solution(const unsigned int mode = 0) const;
 
     /// Displacement DoFs of the element's nodes per mode (for Q8 the
@@ -320,6 +343,10 @@ namespace thinlayer
   private:
     void
     setup_dofs_and_constraints();
+
+    /// The layout of the mode vectors: see dof_partitioner.
+    void
+    setup_dof_partitioner();
 
     /// Prescribed displacements and loads at unit load factor, and the
     /// state vectors.
@@ -384,8 +411,9 @@ namespace thinlayer
     /// (contiguous, see number_dofs_by_rank()).
     CellPartition         partition;
     std::vector<IndexSet> owned_per_rank;
-    /// On many ranks: this rank's part of a body-load change, summed.
-    ModeVectors rank_loads;
+    /// Each rank's DoFs and its ghosts: those of its own cells and
+    /// elements and those its own constraint lines name.
+    std::shared_ptr<const Utilities::MPI::Partitioner> dof_partitioner;
 
     /// The component of every DoF.
     std::vector<unsigned int> dof_component;
@@ -419,7 +447,7 @@ namespace thinlayer
 
   template <int dim>
   inline void
-  Analysis<dim>::elastic_solve(const unsigned int m, Vector<double> &rhs)
+  Analysis<dim>::elastic_solve(const unsigned int m, ModeVector &rhs)
   {
     systems[m]->solve(rhs);
   }
@@ -572,10 +600,10 @@ namespace thinlayer
 
 
   template <int dim>
-  inline const Vector<double> &
+  inline Vector<double>
   Analysis<dim>::get_solution(const unsigned int mode) const
   {
-    return solution_vectors[mode];
+    return whole(solution_vectors[mode]);
   }
 
 

@@ -93,6 +93,9 @@ namespace thinlayer
     /// Whether the system's numbering is the m * n + i one.
     bool identity;
 
+    /// Each mode's constraints, for a correction's lines on many ranks.
+    std::vector<const AffineConstraints<double> *> mode_constraints;
+
     AffineConstraints<double> constraints;
 
     SparsityPattern                      sparsity;

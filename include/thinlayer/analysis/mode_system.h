@@ -7,6 +7,8 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
+#include <thinlayer/discretisation/mode_vectors.h>
+
 #include <thinlayer/parallel/mpi.h>
 #include <thinlayer/solvers/amg_conjugate_gradient.h>
 #include <thinlayer/solvers/distributed_factorisation.h>
@@ -33,8 +35,14 @@ namespace thinlayer
    * matrix is then either split, factorised by MUMPS over every rank
    * (DistributedFactorisation), or, where the harmonics are spread over
    * the ranks, gathered whole on the harmonic's rank (owner) and
-   * factorised there as on one rank; a solve is then that rank's
-   * substitution, broadcast.
+   * factorised there as on one rank; a solve is then the right-hand side
+   * gathered on that rank, its substitution, and each rank's part sent
+   * back.
+   *
+   * The vectors are ModeVectors: each rank holds its own DoFs' entries. The
+   * constraints are kept whole on every rank; condense() and distribute()
+   * act on the lines a rank owns, reading the entries those lines name as
+   * ghosts (the analysis makes them ghosts).
    */
   struct ModeSystem
   {
@@ -49,10 +57,10 @@ namespace thinlayer
     SparseMatrix<double>      stiffness;
     SparseMatrix<double>      condensed_stiffness;
     FactorisedStiffness       factorisation;
-    Vector<double>            unit_prescribed_displacement;
-    Vector<double>            unit_load;
+    ModeVector                unit_prescribed_displacement;
+    ModeVector                unit_load;
     /// f - K u_prescribed at unit load factor.
-    Vector<double> unit_rhs;
+    ModeVector unit_rhs;
 
     /// On several ranks: the condensed stiffness (freed once factorised),
     /// and its factors (made only there: a PETSc object needs PETSc
@@ -79,25 +87,34 @@ namespace thinlayer
       return owner != numbers::invalid_unsigned_int;
     }
 
-    /// Replace @p rhs (condensed, the same on every rank) by the solution
-    /// with the elastic factors (or the iterative solver): on several
-    /// ranks a collective call.
+    /**
+     * Condense @p v, a vector of forces: add each constrained DoF's value to
+     * the DoFs its line names, then zero it. Its ghost values must be zero
+     * (as they are outside GhostValues). A collective call.
+     */
     void
-    solve(Vector<double> &rhs)
-    {
-      if (iterative)
-        iterative->solve(rhs);
-      else if (distributed_factorisation)
-        distributed_factorisation->solve(rhs);
-      else if (spread())
-        {
-          if (mpi::rank() == owner)
-            factorisation.solve(rhs);
-          mpi::broadcast(rhs, owner);
-        }
-      else
-        factorisation.solve(rhs);
-    }
+    condense(ModeVector &v) const;
+
+    /**
+     * Set each constrained DoF of @p v to its line's combination of the
+     * DoFs it names (plus the inhomogeneity). A collective call.
+     */
+    void
+    distribute(ModeVector &v) const;
+
+    /// Solve K x = @p rhs in place with the elastic stiffness (@p rhs
+    /// condensed). A collective call.
+    void
+    solve(ModeVector &rhs);
+
+    /// The first part of solve() for a spread mode: @p rhs whole on its
+    /// owner, in @p whole. Collective; see Analysis::elastic_solve().
+    void
+    gather_on_owner(const ModeVector &rhs, Vector<double> &whole) const;
+
+    /// The last part: the owner's solution @p whole back in @p rhs.
+    void
+    scatter_from_owner(const Vector<double> &whole, ModeVector &rhs) const;
   };
 } // namespace thinlayer
 

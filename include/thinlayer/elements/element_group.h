@@ -106,6 +106,12 @@ namespace thinlayer
     add_sparsity(DynamicSparsityPattern          &dsp,
                  const AffineConstraints<double> &constraints) const = 0;
 
+    /// Append the DoFs of every cell or element this rank owns to @p dofs
+    /// (in any order, repeated): the entries of the mode vectors the
+    /// group reads and adds to, which a rank holds as its own or as ghosts.
+    virtual void
+    add_dofs(std::vector<types::global_dof_index> &dofs) const = 0;
+
     /// Hand the elastic matrix of mode @p m of every cell or element this
     /// rank owns, in order, to @p add with its DoFs: the analysis puts
     /// them where its linear system wants them.

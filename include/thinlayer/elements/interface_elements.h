@@ -104,6 +104,9 @@ namespace thinlayer
                  const AffineConstraints<double> &constraints) const override;
 
     void
+    add_dofs(std::vector<types::global_dof_index> &dofs) const override;
+
+    void
     assemble_elastic(const unsigned int    m,
                      const CellMatrixSink &add) const override;
 

@@ -26,7 +26,9 @@ namespace thinlayer
    * by the series' symmetry (for the symmetric series the shear stresses
    * with theta change sign there, for the antisymmetric one the others
    * do). A view, not an analysis: nothing is computed between stations.
-   * The cell averages are @p fields, those of @p analysis.
+   * The cell averages are @p fields, those of @p analysis, and the
+   * displacements its @p modes (Analysis::whole_displacements()): both
+   * gathered by every rank, so that one may write the view.
    */
   struct RevolvedView
   {
@@ -38,15 +40,17 @@ namespace thinlayer
   };
 
   RevolvedView
-  revolved_view(const Analysis<2> &analysis,
-                const CellFields  &fields,
-                const unsigned int slices);
+  revolved_view(const Analysis<2>                 &analysis,
+                const CellFields                  &fields,
+                const std::vector<Vector<double>> &modes,
+                const unsigned int                 slices);
 
   /// revolved_view() as the text of a VTU file.
   std::string
-  revolved_view_vtu(const Analysis<2> &analysis,
-                    const CellFields  &fields,
-                    const unsigned int slices);
+  revolved_view_vtu(const Analysis<2>                 &analysis,
+                    const CellFields                  &fields,
+                    const std::vector<Vector<double>> &modes,
+                    const unsigned int                 slices);
 } // namespace thinlayer
 
 #endif

@@ -1,6 +1,7 @@
 #ifndef thinlayer_parallel_mpi_h
 #define thinlayer_parallel_mpi_h
 
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/vector.h>
 
@@ -74,13 +75,31 @@ namespace thinlayer
     unsigned int
     sum(const unsigned int value);
 
+    /// The sum over the ranks of @p value.
+    double
+    sum(const double value);
+
     /// Replace @p v by its sum over the ranks; nothing on one rank.
     void
     sum(Vector<double> &v);
 
-    /// Replace @p v by rank @p root's; nothing on one rank.
+    /// Every rank's @p part, in rank order, as @p whole on every rank
+    /// (resized): a distributed vector's owned parts made whole.
     void
-    broadcast(Vector<double> &v, const unsigned int root);
+    all_gather(const ArrayView<const double> &part, Vector<double> &whole);
+
+    /// The same on rank @p root only; @p whole is left alone elsewhere.
+    void
+    gather(const ArrayView<const double> &part,
+           Vector<double>                &whole,
+           const unsigned int             root);
+
+    /// The inverse of gather(): each rank's @p part taken from rank
+    /// @p root's @p whole.
+    void
+    scatter(const Vector<double>    &whole,
+            const ArrayView<double> &part,
+            const unsigned int       root);
 
     /// Rank 0's @p text, on every rank.
     std::string

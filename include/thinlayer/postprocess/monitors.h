@@ -66,11 +66,12 @@ namespace thinlayer
 
     /// The sum over the load boundary's DoFs of component @p component of
     /// @p forces, each times the support point's coordinate @p weight_by
-    /// (0: x or r, 1: y or z; -1: none).
+    /// (0: x or r, 1: y or z; -1: none), over all ranks (a collective
+    /// call).
     double
-    boundary_sum(const Vector<double> &forces,
-                 const unsigned int    component,
-                 const int             weight_by = -1) const;
+    boundary_sum(const ModeVector  &forces,
+                 const unsigned int component,
+                 const int          weight_by = -1) const;
 
     const MonitorParameters &parameters;
     const Analysis<dim>     &analysis;

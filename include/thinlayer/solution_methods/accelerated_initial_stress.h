@@ -37,11 +37,12 @@ namespace thinlayer
     start_attempt() override;
 
   private:
-    AndersonAcceleration anderson;
-    /// The step increments of all modes, one after the other, and their
-    /// corrections: the vectors Anderson acceleration works on.
-    Vector<double> stacked_increment;
-    Vector<double> stacked_correction;
+    AndersonAcceleration<ModeVector> anderson;
+    /// The step increments of all modes and their corrections, each rank's
+    /// own DoFs of every mode in turn (on one rank mode m's DoF i at
+    /// m * n_dofs + i): the vectors Anderson acceleration works on.
+    ModeVector stacked_increment;
+    ModeVector stacked_correction;
   };
 } // namespace thinlayer
 

@@ -145,7 +145,7 @@ namespace thinlayer
     /// Per mode: the nodal forces of the stress excess (trial less
     /// returned stresses); and a work vector.
     ModeVectors    stress_excess;
-    Vector<double> condensed;
+    ModeVector     condensed;
 
     /// The increment an attempt to @p target starts from.
     void

@@ -1,6 +1,7 @@
 #ifndef thinlayer_solvers_amg_conjugate_gradient_h
 #define thinlayer_solvers_amg_conjugate_gradient_h
 
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/index_set.h>
 #include <deal.II/lac/petsc_sparse_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
@@ -53,11 +54,12 @@ namespace thinlayer
                const std::vector<Vector<double>>      &near_null_space,
                const unsigned int                      block_size);
 
-    /// Replace @p rhs (whole, the same on every rank) by the solution of
-    /// K x = rhs (whole, on every rank). Throws std::runtime_error if CG
-    /// does not converge (naming the iterations and the residual).
+    /// Replace this rank's @p rows of a right-hand side by its rows of
+    /// the solution of K x = rhs (a collective call). Throws
+    /// LinearSolverFailure if CG does not converge (naming the iterations
+    /// and the residual).
     void
-    solve(Vector<double> &rhs) const;
+    solve(const ArrayView<double> &rows) const;
 
     /// CG iterations of all solves so far.
     unsigned long

@@ -1,6 +1,7 @@
 #ifndef thinlayer_solvers_anderson_acceleration_h
 #define thinlayer_solvers_anderson_acceleration_h
 
+#include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/vector.h>
 
 #include <deque>
@@ -24,6 +25,7 @@ namespace thinlayer
    * stiffness iterations creep with a rate near one, the least-squares
    * combination extrapolates along the creep, which is why it pays there.
    */
+  template <typename VectorType = Vector<double>>
   class AndersonAcceleration
   {
   public:
@@ -39,18 +41,18 @@ namespace thinlayer
      * next iterate.
      */
     void
-    update(Vector<double> &x, const Vector<double> &g);
+    update(VectorType &x, const VectorType &g);
 
   private:
     const unsigned int         depth;
-    Vector<double>             previous_x;
-    Vector<double>             previous_g;
-    bool                       has_previous;
-    std::deque<Vector<double>> dX;
-    std::deque<Vector<double>> dG;
+    VectorType             previous_x;
+    VectorType             previous_g;
+    bool                   has_previous;
+    std::deque<VectorType> dX;
+    std::deque<VectorType> dG;
     // Work space of the least-squares solve, kept so that an iteration
     // allocates nothing once the history is full.
-    std::vector<Vector<double>> Q;
+    std::vector<VectorType>     Q;
     std::vector<unsigned int>   kept;
     std::vector<double>         R;
     std::vector<double>         gamma;

@@ -1,6 +1,7 @@
 #ifndef thinlayer_solvers_distributed_factorisation_h
 #define thinlayer_solvers_distributed_factorisation_h
 
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/index_set.h>
 #include <deal.II/lac/petsc_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
@@ -50,10 +51,10 @@ namespace thinlayer
     factorize(const PETScWrappers::MPI::SparseMatrix &matrix,
               const std::vector<IndexSet>            &owned_per_rank);
 
-    /// Replace @p rhs (whole, the same on every rank) by the solution of
-    /// K x = rhs (whole, on every rank).
+    /// Replace this rank's @p rows of a right-hand side by its rows of
+    /// the solution of K x = rhs (a collective call).
     void
-    solve(Vector<double> &rhs) const;
+    solve(const ArrayView<double> &rows) const;
 
   private:
     /**

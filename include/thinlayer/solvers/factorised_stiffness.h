@@ -1,6 +1,7 @@
 #ifndef thinlayer_solvers_factorised_stiffness_h
 #define thinlayer_solvers_factorised_stiffness_h
 
+#include <deal.II/base/array_view.h>
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
@@ -47,7 +48,7 @@ namespace thinlayer
 
     /// Replace @p rhs by the solution of K x = rhs.
     void
-    solve(Vector<double> &rhs);
+    solve(const ArrayView<double> &rhs);
 
   private:
     const Method method;

@@ -1,9 +1,9 @@
 #ifndef thinlayer_solvers_row_distribution_h
 #define thinlayer_solvers_row_distribution_h
 
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/mpi.h>
-#include <deal.II/lac/vector.h>
 
 #include <vector>
 
@@ -14,10 +14,11 @@ namespace thinlayer
   using namespace dealii;
 
   /**
-   * How the rows of a matrix distributed over the ranks lie in the whole
-   * vectors every rank holds: each rank's contiguous range, in rank order.
-   * The PETSc solvers take each rank's rows of a whole right-hand side and
-   * give every rank the whole solution.
+   * A right-hand side and a solution in PETSc's layout for a matrix
+   * distributed over the ranks by rows: each rank's contiguous range, in
+   * rank order, which is also the range of DoFs a rank owns in a
+   * ModeVector. The PETSc solvers take each rank's rows of the right-hand
+   * side and give each rank its rows of the solution.
    *
    * The vectors are PETSc's own: deal.II's wrappers refuse to be made
    * while threads may run (deal.II's debug library asserts it), and
@@ -41,22 +42,20 @@ namespace thinlayer
     reinit(const std::vector<IndexSet> &owned_per_rank,
            const MPI_Comm               communicator);
 
-    /// Copy this rank's rows of @p whole into its part of @p rhs().
+    /// Copy this rank's @p rows of a right-hand side into its part of
+    /// @p rhs.
     void
-    scatter(const Vector<double> &whole) const;
+    scatter(const ArrayView<const double> &rows) const;
 
-    /// Every rank's part of solution(), gathered into @p whole on every
-    /// rank.
+    /// This rank's part of @p solution, copied into its @p rows.
     void
-    gather(Vector<double> &whole) const;
+    gather(const ArrayView<double> &rows) const;
 
     /// This rank's rows of a right-hand side and of a solution.
     Vec rhs = nullptr, solution = nullptr;
 
   private:
-    MPI_Comm         communicator = MPI_COMM_SELF;
-    std::vector<int> counts, offsets;
-    unsigned int     rank = 0;
+    PetscInt n_rows = 0;
   };
 } // namespace thinlayer
 

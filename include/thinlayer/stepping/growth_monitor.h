@@ -45,7 +45,7 @@ namespace thinlayer
     change(const ModeVectors &step_increment);
 
     ModeVectors    first;
-    Vector<double> work;
+    ModeVector     work;
     double         change_at_half = 0;
   };
 } // namespace thinlayer
