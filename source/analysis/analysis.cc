@@ -169,12 +169,13 @@ namespace thinlayer
           std::make_shared<Utilities::MPI::Partitioner>(dof_handler.n_dofs());
         return;
       }
-    const IndexSet &owned = owned_per_rank[mpi::rank()];
+    const IndexSet                      &owned = owned_per_rank[mpi::rank()];
     std::vector<types::global_dof_index> dofs;
     for (const auto &group : groups)
       group->add_dofs(dofs);
-    // The DoFs the rank's constraint lines name (a rigid footing's lines
-    // name one DoF anywhere in the mesh).
+    // The DoFs the rank's own constraint lines name: in the cell or at the
+    // node (serendipity, axis) in every scene so far, but a line may name
+    // any DoF.
     for (const auto &system : systems)
       for (const auto &line : system->constraints.get_lines())
         if (owned.is_element(line.index))
@@ -185,8 +186,10 @@ namespace thinlayer
     IndexSet relevant(dof_handler.n_dofs());
     relevant.add_indices(dofs.begin(), dofs.end());
     relevant.add_indices(owned);
-    dof_partitioner = std::make_shared<Utilities::MPI::Partitioner>(
-      owned, relevant, mpi::communicator());
+    dof_partitioner =
+      std::make_shared<Utilities::MPI::Partitioner>(owned,
+                                                    relevant,
+                                                    mpi::communicator());
   }
 
 
@@ -206,8 +209,9 @@ namespace thinlayer
   Analysis<dim>::whole(const ModeVector &v) const
   {
     Vector<double> result;
-    mpi::all_gather(
-      make_array_view(v.begin(), v.begin() + v.locally_owned_size()), result);
+    mpi::all_gather(make_array_view(v.begin(),
+                                    v.begin() + v.locally_owned_size()),
+                    result);
     return result;
   }
 
@@ -221,8 +225,7 @@ namespace thinlayer
     const auto own_part = [this](const Vector<double> &whole, ModeVector &v) {
       v.reinit(dof_partitioner);
       for (unsigned int k = 0; k < v.locally_owned_size(); ++k)
-        v.local_element(k) =
-          whole[dof_partitioner->local_to_global(k)];
+        v.local_element(k) = whole[dof_partitioner->local_to_global(k)];
     };
     for (unsigned int m = 0; m < kinematics.n_modes(); ++m)
       {
@@ -281,7 +284,7 @@ namespace thinlayer
             // The raw stiffness is not kept: each rank adds its cells'
             // K u_prescribed.
             const GhostValues ghosts(mode.unit_prescribed_displacement);
-            Vector<double> u, Ku;
+            Vector<double>    u, Ku;
             for (const auto &group : groups)
               group->assemble_elastic(
                 m, [&](const auto &dofs, const FullMatrix<double> &matrix) {
@@ -519,9 +522,8 @@ namespace thinlayer
 
   template <int dim>
   Vector<double>
-  Analysis<dim>::displacement_at(
-    const double                       theta,
-    const std::vector<Vector<double>> &modes) const
+  Analysis<dim>::displacement_at(const double                       theta,
+                                 const std::vector<Vector<double>> &modes) const
   {
     Vector<double> u(dof_handler.n_dofs());
     for (unsigned int m = 0; m < systems.size(); ++m)

@@ -65,8 +65,7 @@ namespace thinlayer
             constraints.set_inhomogeneity(row, line.inhomogeneity);
           }
     constraints.close();
-    vector.reinit(factorisation ? n_modes * n
-                                : n_modes * n_owned[mpi::rank()]);
+    vector.reinit(factorisation ? n_modes * n : n_modes * n_owned[mpi::rank()]);
   }
 
 

@@ -190,9 +190,9 @@ namespace thinlayer
     Tensor<1, 3>   jump; // (x, y, theta) summed over the modes
     for (unsigned int m = 0; m < vectors.size(); ++m)
       {
-        const ModeVector    &v  = vectors[m];
-        const double          t1 = kinematics->T1(m, s);
-        const double          t2 = kinematics->T2(m, s);
+        const ModeVector &v  = vectors[m];
+        const double      t1 = kinematics->T1(m, s);
+        const double      t2 = kinematics->T2(m, s);
         for (const Entry &e : point.entries)
           jump[e.component] += (e.component < 2 ? t1 : t2) * e.value *
                                v[element.dofs[e.local_dof]];
@@ -220,9 +220,9 @@ namespace thinlayer
                               traction[2]};
     for (unsigned int m = 0; m < target.size(); ++m)
       {
-        ModeVector     &v  = target[m];
-        const double    t1 = kinematics->T1(m, s);
-        const double    t2 = kinematics->T2(m, s);
+        ModeVector  &v  = target[m];
+        const double t1 = kinematics->T1(m, s);
+        const double t2 = kinematics->T2(m, s);
         for (const Entry &e : point.entries)
           v[element.dofs[e.local_dof]] += weight * (e.component < 2 ? t1 : t2) *
                                           e.value * global[e.component];
@@ -264,7 +264,9 @@ namespace thinlayer
   {
     for (unsigned int k = 0; k < elements.size(); ++k)
       if (owns_element(k))
-        dofs.insert(dofs.end(), elements[k].dofs.begin(), elements[k].dofs.end());
+        dofs.insert(dofs.end(),
+                    elements[k].dofs.begin(),
+                    elements[k].dofs.end());
   }
 
 

@@ -187,7 +187,7 @@ namespace thinlayer
     const unsigned int n_modes = step_increment.size();
     for (unsigned int m = 0; m < n_modes; ++m)
       {
-        ModeVector     &target = body_loads[m];
+        ModeVector &target = body_loads[m];
         for (unsigned int i = 0; i < cells.size(); ++i)
           {
             const types::global_dof_index *dofs =

@@ -89,7 +89,7 @@ namespace thinlayer
         for (unsigned int m = 0; m < n_modes; ++m)
           {
             ModeVector &increment = analysis.step_increment()[m];
-            increment                 = this->previous_increment[m];
+            increment             = this->previous_increment[m];
             increment.add(scale, this->correction[m]);
           }
         norms = this->evaluate_residual(target, /*tangents=*/true);

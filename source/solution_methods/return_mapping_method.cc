@@ -28,8 +28,8 @@ namespace thinlayer
     accepted_increment     = zero;
     stress_excess          = zero;
     condensed              = zero[0];
-    accepted_step        = 0;
-    accepted_load_factor = analysis.accepted_load_factor();
+    accepted_step          = 0;
+    accepted_load_factor   = analysis.accepted_load_factor();
   }
 
 

@@ -77,7 +77,7 @@ namespace thinlayer
     R.assign(m * m, 0.);
     for (unsigned int j = 0; j < m; ++j)
       {
-        VectorType  &q      = Q[kept.size()];
+        VectorType &q = Q[kept.size()];
         assign(q, dG[j]);
         const double norm_0 = q.l2_norm();
         for (unsigned int k = 0; k < kept.size(); ++k)
@@ -116,5 +116,6 @@ namespace thinlayer
 
   template class AndersonAcceleration<Vector<double>>;
   // The stacked mode vectors of all modes, distributed over the ranks.
-  template class AndersonAcceleration<LinearAlgebra::distributed::Vector<double>>;
+  template class AndersonAcceleration<
+    LinearAlgebra::distributed::Vector<double>>;
 } // namespace thinlayer

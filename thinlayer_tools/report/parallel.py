@@ -82,12 +82,13 @@ def sections(runs, quick):
                       "%.1e" % difference, "%.2f" % s["wall_seconds"],
                       "%.0f" % s["peak_memory_mb_per_rank"]])
     why = ("Each scene run on one rank and again under mpirun: the Gauss-point work split by "
-           "cells (METIS), each rank holding its own cells' point states, the forces summed over "
-           "the ranks, the elastic stiffness distributed by rows and factorised once by MUMPS "
+           "cells (METIS), each rank holding its own cells' point states and its own DoFs' entries of "
+           "the vectors (with ghosts for its cells' other DoFs), the forces added into their "
+           "owners, the elastic stiffness distributed by rows and factorised once by MUMPS "
            "(a Fourier scene with at least as many harmonics as ranks: each harmonic gathered "
            "and factorised whole on one rank, the ranks substituting at once), Newton's "
            "tangent distributed by rows and refactorised by MUMPS; every rank holds the whole "
-           "mesh and vectors. The runs "
+           "mesh and constraints. The runs "
            "marked AMG-CG solve the elastic stiffness by conjugate gradients with algebraic "
            "multigrid (Solver/Linear solver = amg cg, to a residual of 1e-10) instead of "
            "factors, on one rank and on two, and are compared with the one-rank direct run. "

@@ -7,14 +7,16 @@ measurements and shown beside them, and the model's forecast for 10^6 to
 The model (N unknowns, P ranks, plane strain):
   memory per rank  M = M_program + a N + b N log2(N) / P
       the loaded program (libraries, MPI; measured before the mesh is
-      read), what every rank holds whole (mesh, DoF maps, vectors) and
-      what is split (the point states, the matrix rows and the factor,
-      whose fill grows as N log N for a 2D nested-dissection ordering);
+      read), what every rank holds whole (mesh, DoF maps, constraints)
+      and what is split (the point states, the vectors, the matrix rows
+      and the factor, whose fill grows as N log N for a 2D
+      nested-dissection ordering);
   time per iteration  T = c N / P + d N + e N log2(N) / P + h [P > 1]
-      the point rules split over the ranks, the work on whole vectors every
-      rank does (sums over the ranks, constraints, the solution gathered
-      whole), the substitution with a factor split over the ranks, and the
-      latency of the exchanges a run on several ranks makes each iteration.
+      the point rules and vector operations split over the ranks, the work
+      every rank does on whole data (the displacement monitor gathers the
+      solution whole once a step), the substitution with a factor split
+      over the ranks, and the latency of the exchanges (ghost values,
+      reductions) a run on several ranks makes each iteration.
 The coefficients are non-negative least-squares fits to the runs of this
 section; the forecast extrapolates them, with the limits stated beside it.
 """
@@ -190,17 +192,17 @@ def sections(runs, quick):
         "ones, whose factors do not, as the forecast's will not. "
         "Its forecast below extrapolates far beyond the two ranks and the sizes measured, and "
         "is read for its limits: every rank still holds %.2f kB per unknown whole (mesh, "
-        "DoF maps, vectors), so above some 10^7 unknowns a run exceeds a rank's %d MB (a "
+        "DoF maps, constraints), so above some 10^7 unknowns a run exceeds a rank's %d MB (a "
         "cluster core's share) whatever the ranks%s; the next floor of the issue (a "
-        "distributed mesh and vectors) removes that. %s" % (
+        "distributed mesh and constraints) removes that. %s" % (
             largest, time_ratio, memory_ratio, program, above_program,
             program, memory[0] * 1024, memory[1] * 1024,
             rest[0] * 1e6, rest[1] * 1e6, substitution[0] * 1e6, substitution[1] * 1e6,
             substitution[2] * 1e3,
             100 * worst, worst_run, memory[0] * 1024, RANK_BUDGET_MB,
-            ", and the work on whole vectors (d N) bounds the time per iteration from below"
+            ", and the work on whole data (d N) bounds the time per iteration from below"
             if rest[1] > 0 else
-            " (these runs fit no time on whole vectors, d = 0: two ranks cannot tell it from "
+            " (these runs fit no time on whole data, d = 0: two ranks cannot tell it from "
             "the split work, so the forecast's times on many ranks are a lower bound)",
             "Every run on two ranks has its one-rank run's outcome and converged loads within "
             "%.0e." % LOAD_AGREEMENT if agree else

@@ -41,11 +41,19 @@ namespace thinlayer
    *   elements), which hold the point states and laws and do the work at
    *   the points. The analysis loops over them.
    *
-   * On many ranks (thinlayer::mpi) every rank holds the whole state and
-   * follows the same steps; the point rules and the elastic assembly are
-   * split by cells (partition_cells()), the forces and counts they produce
-   * are summed over the ranks before anyone reads them, and the elastic
-   * stiffness is distributed by rows and factorised by MUMPS (ModeSystem).
+   * On many ranks (thinlayer::mpi) every rank follows the same steps on
+   * its part: the cells are partitioned (partition_cells()), each rank
+   * owns a contiguous range of DoFs (number_dofs_by_rank()) and holds the
+   * point states of its own cells. The state vectors are ModeVectors:
+   * each rank stores its own DoFs' entries and, as ghosts, those of the
+   * DoFs its cells, elements and constraint lines touch. The point rules
+   * read the increments' ghosts and add their forces into ghosts, which
+   * compress() sums into the owners; norms and dot products reduce over
+   * the ranks. The elastic stiffness is distributed by rows and factorised
+   * by MUMPS (ModeSystem). Still whole on every rank: the mesh, the
+   * DoFHandler and the constraints (the lines a rank owns are the ones it
+   * uses); what reads DoFs anywhere (the outputs, the displacement
+   * monitor) gathers a vector whole (whole()).
    *
    * A solution method (owned by the stepping, see StepSolver) sets the
    * step increments and calls the point rules; the stepping then ends the

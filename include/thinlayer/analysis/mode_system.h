@@ -8,7 +8,6 @@
 #include <deal.II/lac/vector.h>
 
 #include <thinlayer/discretisation/mode_vectors.h>
-
 #include <thinlayer/parallel/mpi.h>
 #include <thinlayer/solvers/amg_conjugate_gradient.h>
 #include <thinlayer/solvers/distributed_factorisation.h>

@@ -144,8 +144,8 @@ namespace thinlayer
     double      accepted_load_factor = 0;
     /// Per mode: the nodal forces of the stress excess (trial less
     /// returned stresses); and a work vector.
-    ModeVectors    stress_excess;
-    ModeVector     condensed;
+    ModeVectors stress_excess;
+    ModeVector  condensed;
 
     /// The increment an attempt to @p target starts from.
     void

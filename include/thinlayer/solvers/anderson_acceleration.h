@@ -44,7 +44,7 @@ namespace thinlayer
     update(VectorType &x, const VectorType &g);
 
   private:
-    const unsigned int         depth;
+    const unsigned int     depth;
     VectorType             previous_x;
     VectorType             previous_g;
     bool                   has_previous;
@@ -52,10 +52,10 @@ namespace thinlayer
     std::deque<VectorType> dG;
     // Work space of the least-squares solve, kept so that an iteration
     // allocates nothing once the history is full.
-    std::vector<VectorType>     Q;
-    std::vector<unsigned int>   kept;
-    std::vector<double>         R;
-    std::vector<double>         gamma;
+    std::vector<VectorType>   Q;
+    std::vector<unsigned int> kept;
+    std::vector<double>       R;
+    std::vector<double>       gamma;
   };
 } // namespace thinlayer
 

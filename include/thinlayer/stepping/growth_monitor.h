@@ -44,9 +44,9 @@ namespace thinlayer
     double
     change(const ModeVectors &step_increment);
 
-    ModeVectors    first;
-    ModeVector     work;
-    double         change_at_half = 0;
+    ModeVectors first;
+    ModeVector  work;
+    double      change_at_half = 0;
   };
 } // namespace thinlayer
 

@@ -1,0 +1,214 @@
+// Truths checked for the distributed mode vectors (ModeVector, condense(),
+// distribute(), Analysis::whole()), on the elastic cylinder under Fourier
+// kinematics (harmonics 0, 1, 2: the axis lines of harmonic 1 tie u_r to
+// u_theta; Q8: each centre node tied to its cell's other nodes), run on one
+// rank and on three:
+// 1. Layout: every DoF is owned by exactly one rank, the ranks' ranges
+//    contiguous and in rank order; on several ranks a rank stores fewer
+//    entries (its own and its ghosts) than the whole vector.
+// 2. whole() gives every rank each DoF's value from its owner.
+// 3. GhostValues: while it lives every ghost holds its owner's value;
+//    afterwards the ghosts are zero again.
+// 4. condense() and distribute() on the distributed vector give what
+//    deal.II's AffineConstraints gives on the whole vector on one process,
+//    to 1e-14 of the vector's largest entry (the contributions a line adds
+//    to another rank's DoF are summed in another order).
+// 5. The elastic solve of the distributed right-hand side has the residual
+//    of the whole one: |K u - f| <= 1e-10 |f| with K assembled whole.
+// Each rank checks; rank 0 prints whether every rank's check held.
+#include <deal.II/base/mpi.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_matrix.h>
+
+#include <thinlayer/analysis/analysis.h>
+#include <thinlayer/mesh/scene.h>
+#include <thinlayer/parallel/mpi.h>
+#include <thinlayer/parameters/parameter_reader.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+
+#include "../common/scene_test_utilities.h"
+#include "../common/truths.h"
+
+using namespace thinlayer;
+
+namespace
+{
+  /// Whether @p holds on every rank, printed by rank 0.
+  void
+  expect_everywhere(const bool holds, const std::string &what)
+  {
+    const bool all =
+      Utilities::MPI::min(holds ? 1 : 0, mpi::communicator()) == 1;
+    if (mpi::is_root())
+      truths::expect(all, what);
+    else
+      truths::failures += all ? 0 : 1;
+  }
+
+
+  /// A value for DoF @p i that no two DoFs share.
+  double
+  value_of(const types::global_dof_index i)
+  {
+    return std::sin(1. + 0.37 * i) + 0.001 * i;
+  }
+
+
+  /// @p v with value_of() at each owned DoF, its ghosts zero.
+  void
+  fill(ModeVector &v)
+  {
+    for (unsigned int k = 0; k < v.locally_owned_size(); ++k)
+      v.local_element(k) = value_of(v.get_partitioner()->local_to_global(k));
+  }
+
+
+  double
+  largest_difference(const Vector<double> &a, const Vector<double> &b)
+  {
+    double result = a.size() == b.size() ? 0 : 1e300;
+    for (unsigned int i = 0; i < std::min(a.size(), b.size()); ++i)
+      result = std::max(result, std::abs(a[i] - b[i]));
+    return result;
+  }
+} // namespace
+
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi_session(argc, argv, 1);
+  const std::string                prm = thinlayer_tests::elastic_cylinder(
+    "  set Harmonics = 0, 1, 2\n  set Stations = 0, 45, 90, 135, 180\n",
+    "subsection Boundary 1\n"
+                   "  set Constrained components = r, z, theta\n"
+                   "end\n"
+                   "subsection Boundary 3\n"
+                   "  set Traction = 1; -2; 0.5\n"
+                   "end\n");
+  const Parameters   p = ParameterReader().read_from_string(prm, "vectors.prm");
+  std::ostringstream quiet;
+  const Scene        scene(p, quiet);
+  Analysis<2>        analysis(p, scene.triangulation());
+  analysis.setup();
+  const types::global_dof_index n       = analysis.get_dof_handler().n_dofs();
+  ModeVectors                   vectors = analysis.new_mode_vectors();
+
+  if (mpi::is_root())
+    std::cout << "1. Layout\n";
+  {
+    const ModeVector &v      = vectors[0];
+    const auto [first, last] = v.get_partitioner()->local_range();
+    const auto firsts = Utilities::MPI::all_gather(mpi::communicator(), first);
+    const auto lasts  = Utilities::MPI::all_gather(mpi::communicator(), last);
+    bool       contiguous = firsts.front() == 0 && lasts.back() == n;
+    for (unsigned int r = 1; r < firsts.size(); ++r)
+      contiguous = contiguous && firsts[r] == lasts[r - 1];
+    expect_everywhere(contiguous,
+                      "the ranks own contiguous ranges in rank order, "
+                      "together every DoF once");
+    const std::size_t stored =
+      v.locally_owned_size() + v.get_partitioner()->n_ghost_indices();
+    expect_everywhere(mpi::n_ranks() == 1 ? stored == n : stored < n,
+                      "on several ranks a rank stores less than the whole "
+                      "vector");
+  }
+
+  if (mpi::is_root())
+    std::cout << "2. whole()\n";
+  {
+    fill(vectors[0]);
+    const Vector<double> whole = analysis.whole(vectors[0]);
+    bool                 right = whole.size() == n;
+    for (unsigned int i = 0; right && i < n; ++i)
+      right = whole[i] == value_of(i);
+    expect_everywhere(right, "every DoF's value from its owner, on every rank");
+  }
+
+  if (mpi::is_root())
+    std::cout << "3. Ghost values\n";
+  {
+    const ModeVector &v        = vectors[0];
+    const IndexSet   &ghost    = v.get_partitioner()->ghost_indices();
+    bool              imported = true, zeroed = true;
+    {
+      const GhostValues ghosts(v);
+      for (const auto g : ghost)
+        imported = imported && v(g) == value_of(g);
+    }
+    for (const auto g : ghost)
+      zeroed = zeroed && v(g) == 0;
+    expect_everywhere(imported, "while imported, each ghost is its owner's");
+    expect_everywhere(zeroed, "afterwards each ghost is zero");
+  }
+
+  if (mpi::is_root())
+    std::cout << "4. condense() and distribute() against deal.II's, whole\n";
+  {
+    double condensed = 0, distributed = 0, scale = 0;
+    for (unsigned int m = 0; m < analysis.n_modes(); ++m)
+      {
+        const AffineConstraints<double> &constraints =
+          analysis.mode_system(m).constraints;
+        ModeVector &v = vectors[m];
+        fill(v);
+        Vector<double> serial = analysis.whole(v);
+        scale                 = std::max(scale, serial.linfty_norm());
+        constraints.condense(serial);
+        condense(constraints, v);
+        condensed =
+          std::max(condensed, largest_difference(analysis.whole(v), serial));
+
+        fill(v);
+        serial = analysis.whole(v);
+        constraints.distribute(serial);
+        distribute(constraints, v);
+        distributed =
+          std::max(distributed, largest_difference(analysis.whole(v), serial));
+      }
+    expect_everywhere(condensed <= 1e-14 * scale, "condense(): the same");
+    expect_everywhere(distributed <= 1e-14 * scale, "distribute(): the same");
+  }
+
+  if (mpi::is_root())
+    std::cout << "5. The elastic solve\n";
+  {
+    // The condensed stiffness K of each mode as its factors have it: each
+    // rank's cells' part, assembled as the analysis assembles it; K u is
+    // the sum over the ranks of each part times the whole solution.
+    bool small = true;
+    for (unsigned int m = 0; m < analysis.n_modes(); ++m)
+      {
+        const ModeSystem &mode = analysis.mode_system(m);
+        ModeVector        u(mode.unit_rhs);
+        condense(mode.constraints, u);
+        const Vector<double> f = analysis.whole(u);
+        analysis.elastic_solve(m, u);
+        const Vector<double> x = analysis.whole(u);
+
+        DynamicSparsityPattern dsp(n);
+        DoFTools::make_sparsity_pattern(analysis.get_dof_handler(),
+                                        dsp,
+                                        mode.constraints,
+                                        /*keep_constrained_dofs=*/true);
+        SparsityPattern pattern;
+        pattern.copy_from(dsp);
+        SparseMatrix<double> K(pattern);
+        analysis.cells().assemble_elastic(
+          m, [&](const auto &dofs, const FullMatrix<double> &matrix) {
+            mode.constraints.distribute_local_to_global(matrix, dofs, K);
+          });
+        Vector<double> r(n);
+        K.vmult(r, x);
+        mpi::sum(r);
+        r -= f;
+        small = small && r.linfty_norm() <= 1e-10 * f.linfty_norm();
+      }
+    expect_everywhere(small, "|K u - f| <= 1e-10 |f| for every harmonic");
+  }
+  return mpi::is_root() ? truths::conclude() : (truths::failures > 0);
+}
