@@ -30,26 +30,13 @@
 #include <cmath>
 #include <iostream>
 
+#include "../common/parallel_truths.h"
 #include "../common/scene_test_utilities.h"
-#include "../common/truths.h"
 
 using namespace thinlayer;
 
 namespace
 {
-  /// Whether @p holds on every rank, printed by rank 0.
-  void
-  expect_everywhere(const bool holds, const std::string &what)
-  {
-    const bool all =
-      Utilities::MPI::min(holds ? 1 : 0, mpi::communicator()) == 1;
-    if (mpi::is_root())
-      truths::expect(all, what);
-    else
-      truths::failures += all ? 0 : 1;
-  }
-
-
   /// A value for DoF @p i that no two DoFs share.
   double
   value_of(const types::global_dof_index i)
@@ -108,14 +95,15 @@ main(int argc, char **argv)
     bool       contiguous = firsts.front() == 0 && lasts.back() == n;
     for (unsigned int r = 1; r < firsts.size(); ++r)
       contiguous = contiguous && firsts[r] == lasts[r - 1];
-    expect_everywhere(contiguous,
-                      "the ranks own contiguous ranges in rank order, "
-                      "together every DoF once");
+    truths::expect_everywhere(contiguous,
+                              "the ranks own contiguous ranges in rank order, "
+                              "together every DoF once");
     const std::size_t stored =
       v.locally_owned_size() + v.get_partitioner()->n_ghost_indices();
-    expect_everywhere(mpi::n_ranks() == 1 ? stored == n : stored < n,
-                      "on several ranks a rank stores less than the whole "
-                      "vector");
+    truths::expect_everywhere(
+      mpi::n_ranks() == 1 ? stored == n : stored < n,
+      "on several ranks a rank stores less than the whole "
+      "vector");
   }
 
   if (mpi::is_root())
@@ -126,7 +114,8 @@ main(int argc, char **argv)
     bool                 right = whole.size() == n;
     for (unsigned int i = 0; right && i < n; ++i)
       right = whole[i] == value_of(i);
-    expect_everywhere(right, "every DoF's value from its owner, on every rank");
+    truths::expect_everywhere(
+      right, "every DoF's value from its owner, on every rank");
   }
 
   if (mpi::is_root())
@@ -145,8 +134,10 @@ main(int argc, char **argv)
     zeroed = !v.has_ghost_elements();
     for (unsigned int k = 0; k < ghost.n_elements(); ++k)
       zeroed = zeroed && v.begin()[v.locally_owned_size() + k] == 0;
-    expect_everywhere(imported, "while imported, each ghost is its owner's");
-    expect_everywhere(zeroed, "afterwards the ghosts are zero, not imported");
+    truths::expect_everywhere(imported,
+                              "while imported, each ghost is its owner's");
+    truths::expect_everywhere(zeroed,
+                              "afterwards the ghosts are zero, not imported");
   }
 
   if (mpi::is_root())
@@ -173,8 +164,10 @@ main(int argc, char **argv)
         distributed =
           std::max(distributed, largest_difference(analysis.whole(v), serial));
       }
-    expect_everywhere(condensed <= 1e-14 * scale, "condense(): the same");
-    expect_everywhere(distributed <= 1e-14 * scale, "distribute(): the same");
+    truths::expect_everywhere(condensed <= 1e-14 * scale,
+                              "condense(): the same");
+    truths::expect_everywhere(distributed <= 1e-14 * scale,
+                              "distribute(): the same");
   }
 
   if (mpi::is_root())
@@ -211,7 +204,8 @@ main(int argc, char **argv)
         r -= f;
         small = small && r.linfty_norm() <= 1e-10 * f.linfty_norm();
       }
-    expect_everywhere(small, "|K u - f| <= 1e-10 |f| for every harmonic");
+    truths::expect_everywhere(small,
+                              "|K u - f| <= 1e-10 |f| for every harmonic");
   }
   return mpi::is_root() ? truths::conclude() : (truths::failures > 0);
 }

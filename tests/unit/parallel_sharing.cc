@@ -30,24 +30,9 @@
 #include <limits>
 #include <sstream>
 
-#include "../common/truths.h"
+#include "../common/parallel_truths.h"
 
 using namespace thinlayer;
-
-namespace
-{
-  /// Whether @p holds on every rank, printed by rank 0.
-  void
-  expect_everywhere(const bool holds, const std::string &what)
-  {
-    const bool all =
-      Utilities::MPI::min(holds ? 1 : 0, mpi::communicator()) == 1;
-    if (mpi::is_root())
-      truths::expect(all, what);
-    else
-      truths::failures += all ? 0 : 1;
-  }
-} // namespace
 
 
 int
@@ -71,18 +56,19 @@ main(int argc, char **argv)
         ++count[r];
       else
         valid = false;
-    expect_everywhere(valid, "every cell has one rank of the run");
+    truths::expect_everywhere(valid, "every cell has one rank of the run");
     const std::vector<unsigned int> roots =
       Utilities::MPI::broadcast(mpi::communicator(), partition.owner, 0);
-    expect_everywhere(roots == partition.owner, "the same on every rank");
+    truths::expect_everywhere(roots == partition.owner,
+                              "the same on every rank");
     const double equal = 144. / n;
-    expect_everywhere(*std::min_element(count.begin(), count.end()) >=
-                          0.8 * equal &&
-                        *std::max_element(count.begin(), count.end()) <=
-                          1.2 * equal,
-                      "every rank's share within 20% of an equal one");
-    expect_everywhere(partition.owned_cells().size() == count[me],
-                      "owned_cells() lists this rank's cells");
+    truths::expect_everywhere(*std::min_element(count.begin(), count.end()) >=
+                                  0.8 * equal &&
+                                *std::max_element(count.begin(), count.end()) <=
+                                  1.2 * equal,
+                              "every rank's share within 20% of an equal one");
+    truths::expect_everywhere(partition.owned_cells().size() == count[me],
+                              "owned_cells() lists this rank's cells");
     DoFHandler<2> dof_handler(tria);
     dof_handler.distribute_dofs(FESystem<2>(FE_Q<2>(2), 2));
     const std::vector<IndexSet> owned =
@@ -95,8 +81,8 @@ main(int argc, char **argv)
                      (set.n_elements() == 0 || *set.begin() == next);
         next += set.n_elements();
       }
-    expect_everywhere(contiguous && next == dof_handler.n_dofs(),
-                      "the DoFs of each rank one range, in rank order");
+    truths::expect_everywhere(contiguous && next == dof_handler.n_dofs(),
+                              "the DoFs of each rank one range, in rank order");
     std::vector<bool> on_own_cell(dof_handler.n_dofs(), false);
     std::vector<types::global_dof_index> dofs(
       dof_handler.get_fe().n_dofs_per_cell());
@@ -107,15 +93,17 @@ main(int argc, char **argv)
           if (owned[partition.owner[cell->active_cell_index()]].is_element(i))
             on_own_cell[i] = true;
       }
-    expect_everywhere(std::all_of(on_own_cell.begin(),
-                                  on_own_cell.end(),
-                                  [](const bool b) { return b; }),
-                      "every DoF on a cell of its rank");
+    truths::expect_everywhere(std::all_of(on_own_cell.begin(),
+                                          on_own_cell.end(),
+                                          [](const bool b) { return b; }),
+                              "every DoF on a cell of its rank");
     const CellPartition one = partition_cells(tria, 1, 0);
-    expect_everywhere(std::all_of(one.owner.begin(),
-                                  one.owner.end(),
-                                  [](const unsigned int r) { return r == 0; }),
-                      "on one rank, every cell is rank 0's");
+    truths::expect_everywhere(std::all_of(one.owner.begin(),
+                                          one.owner.end(),
+                                          [](const unsigned int r) {
+                                            return r == 0;
+                                          }),
+                              "on one rank, every cell is rank 0's");
   }
 
   if (mpi::is_root())
@@ -133,15 +121,16 @@ main(int argc, char **argv)
           expected += (r + 1) * 0.1 * (i + 1);
         exact = exact && std::abs(v[i] - expected) <= 1e-12 * expected;
       }
-    expect_everywhere(exact, "the sum of every rank's values (to 1e-12)");
+    truths::expect_everywhere(exact,
+                              "the sum of every rank's values (to 1e-12)");
     const Vector<double> roots =
       Utilities::MPI::broadcast(mpi::communicator(), v, 0);
     bool same = true;
     for (unsigned int i = 0; i < v.size(); ++i)
       same = same && roots[i] == v[i];
-    expect_everywhere(same, "bit for bit the same on every rank");
-    expect_everywhere(mpi::sum(me + 1) == n * (n + 1) / 2,
-                      "counts summed exactly");
+    truths::expect_everywhere(same, "bit for bit the same on every rank");
+    truths::expect_everywhere(mpi::sum(me + 1) == n * (n + 1) / 2,
+                              "counts summed exactly");
   }
 
   if (mpi::is_root())
@@ -187,7 +176,7 @@ main(int argc, char **argv)
                       : v.yield_ratio == e.yield_ratio) &&
           v.plastic == e.plastic;
       }
-    expect_everywhere(owners, "every sample's values are its owner's");
+    truths::expect_everywhere(owners, "every sample's values are its owner's");
   }
 
   if (mpi::is_root())
@@ -205,11 +194,12 @@ main(int argc, char **argv)
         same_error = e.file == "scene.prm" && e.entry == "Mesh/File" &&
                      e.expected == "a .geo";
       }
-    expect_everywhere(same_error,
-                      "rank 0's InputError is thrown on every rank");
+    truths::expect_everywhere(same_error,
+                              "rank 0's InputError is thrown on every rank");
     const std::string text =
       mpi::on_root([]() { return std::string("staging-1"); });
-    expect_everywhere(text == "staging-1", "rank 0's text reaches every rank");
+    truths::expect_everywhere(text == "staging-1",
+                              "rank 0's text reaches every rank");
   }
 
   const int failures =
