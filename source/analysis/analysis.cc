@@ -167,6 +167,7 @@ namespace thinlayer
       {
         dof_partitioner =
           std::make_shared<Utilities::MPI::Partitioner>(dof_handler.n_dofs());
+        dof_parts = mpi::parts(dof_handler.n_dofs());
         return;
       }
     const IndexSet                      &owned = owned_per_rank[mpi::rank()];
@@ -190,6 +191,7 @@ namespace thinlayer
       std::make_shared<Utilities::MPI::Partitioner>(owned,
                                                     relevant,
                                                     mpi::communicator());
+    dof_parts = mpi::parts(owned.n_elements());
   }
 
 
@@ -209,9 +211,7 @@ namespace thinlayer
   Analysis<dim>::whole(const ModeVector &v) const
   {
     Vector<double> result;
-    mpi::all_gather(make_array_view(v.begin(),
-                                    v.begin() + v.locally_owned_size()),
-                    result);
+    mpi::all_gather(dof_parts, owned_entries(v), result);
     return result;
   }
 

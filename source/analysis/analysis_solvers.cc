@@ -75,18 +75,17 @@ namespace thinlayer
     // Spread harmonics: each right-hand side gathered on its harmonic's
     // rank, the ranks substituting their own at once, and each rank's part
     // of the solutions sent back.
-    std::vector<Vector<double>> whole(systems.size());
     for (unsigned int m = 0; m < systems.size(); ++m)
       if (!systems[m]->spread())
         systems[m]->solve(rhs[m]);
       else
-        systems[m]->gather_on_owner(rhs[m], whole[m]);
-    for (unsigned int m = 0; m < systems.size(); ++m)
-      if (systems[m]->spread() && systems[m]->owner == mpi::rank())
-        systems[m]->factorisation.solve(make_array_view(whole[m]));
+        systems[m]->gather_on_owner(rhs[m]);
+    for (auto &system : systems)
+      if (system->spread())
+        system->substitute_on_owner();
     for (unsigned int m = 0; m < systems.size(); ++m)
       if (systems[m]->spread())
-        systems[m]->scatter_from_owner(whole[m], rhs[m]);
+        systems[m]->scatter_from_owner(rhs[m]);
   }
 
 
@@ -157,6 +156,8 @@ namespace thinlayer
             else if (spread)
               {
                 mode.owner = m % mpi::n_ranks();
+                mode.parts =
+                  mpi::parts(owned_per_rank[mpi::rank()].n_elements());
                 gather_whole(*mode.distributed_stiffness,
                              mode.owner,
                              mode.whole_sparsity,

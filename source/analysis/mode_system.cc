@@ -2,24 +2,6 @@
 
 namespace thinlayer
 {
-  namespace
-  {
-    /// The entries @p v owns, in order.
-    ArrayView<double>
-    owned_entries(ModeVector &v)
-    {
-      return make_array_view(v.begin(), v.begin() + v.locally_owned_size());
-    }
-
-
-    ArrayView<const double>
-    owned_entries(const ModeVector &v)
-    {
-      return make_array_view(v.begin(), v.begin() + v.locally_owned_size());
-    }
-  } // namespace
-
-
   void
   ModeSystem::condense(ModeVector &v) const
   {
@@ -43,11 +25,9 @@ namespace thinlayer
       distributed_factorisation->solve(owned_entries(rhs));
     else if (spread())
       {
-        Vector<double> whole;
-        gather_on_owner(rhs, whole);
-        if (mpi::rank() == owner)
-          factorisation.solve(make_array_view(whole));
-        scatter_from_owner(whole, rhs);
+        gather_on_owner(rhs);
+        substitute_on_owner();
+        scatter_from_owner(rhs);
       }
     else
       factorisation.solve(owned_entries(rhs));
@@ -55,17 +35,23 @@ namespace thinlayer
 
 
   void
-  ModeSystem::gather_on_owner(const ModeVector &rhs,
-                              Vector<double>   &whole) const
+  ModeSystem::gather_on_owner(const ModeVector &rhs)
   {
-    mpi::gather(owned_entries(rhs), whole, owner);
+    mpi::gather(parts, owned_entries(rhs), whole_rhs, owner);
   }
 
 
   void
-  ModeSystem::scatter_from_owner(const Vector<double> &whole,
-                                 ModeVector           &rhs) const
+  ModeSystem::substitute_on_owner()
   {
-    mpi::scatter(whole, owned_entries(rhs), owner);
+    if (mpi::rank() == owner)
+      factorisation.solve(make_array_view(whole_rhs));
+  }
+
+
+  void
+  ModeSystem::scatter_from_owner(ModeVector &rhs) const
+  {
+    mpi::scatter(parts, whole_rhs, owned_entries(rhs), owner);
   }
 } // namespace thinlayer

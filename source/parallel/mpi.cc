@@ -113,44 +113,43 @@ namespace thinlayer
     }
 
 
-    namespace
+    Parts
+    parts(const std::size_t count)
     {
-      /// Every rank's @p count, and where each starts, in rank order.
-      void
-      counts_and_offsets(const std::size_t count,
-                         std::vector<int> &counts,
-                         std::vector<int> &offsets)
-      {
-        const int n = static_cast<int>(count);
-        counts.assign(n_ranks(), 0);
-        const int ierr = MPI_Allgather(
-          &n, 1, MPI_INT, counts.data(), 1, MPI_INT, communicator());
-        AssertThrowMPI(ierr);
-        offsets.assign(n_ranks(), 0);
-        for (unsigned int r = 1; r < n_ranks(); ++r)
-          offsets[r] = offsets[r - 1] + counts[r - 1];
-      }
-    } // namespace
+      const int n = static_cast<int>(count);
+      Parts     result;
+      result.counts.assign(n_ranks(), n);
+      if (n_ranks() > 1)
+        {
+          const int ierr = MPI_Allgather(
+            &n, 1, MPI_INT, result.counts.data(), 1, MPI_INT, communicator());
+          AssertThrowMPI(ierr);
+        }
+      result.offsets.assign(n_ranks(), 0);
+      for (unsigned int r = 1; r < n_ranks(); ++r)
+        result.offsets[r] = result.offsets[r - 1] + result.counts[r - 1];
+      return result;
+    }
 
 
     void
-    all_gather(const ArrayView<const double> &part, Vector<double> &whole)
+    all_gather(const Parts                   &parts,
+               const ArrayView<const double> &part,
+               Vector<double>                &whole)
     {
+      AssertDimension(part.size(), parts.counts[rank()]);
+      whole.reinit(parts.size(), /*omit_zeroing_entries=*/true);
       if (n_ranks() == 1)
         {
-          whole.reinit(part.size(), /*omit_zeroing_entries=*/true);
           std::copy(part.begin(), part.end(), whole.begin());
           return;
         }
-      std::vector<int> counts, offsets;
-      counts_and_offsets(part.size(), counts, offsets);
-      whole.reinit(offsets.back() + counts.back(), true);
       const int ierr = MPI_Allgatherv(part.data(),
                                       static_cast<int>(part.size()),
                                       MPI_DOUBLE,
                                       whole.data(),
-                                      counts.data(),
-                                      offsets.data(),
+                                      parts.counts.data(),
+                                      parts.offsets.data(),
                                       MPI_DOUBLE,
                                       communicator());
       AssertThrowMPI(ierr);
@@ -158,25 +157,25 @@ namespace thinlayer
 
 
     void
-    gather(const ArrayView<const double> &part,
+    gather(const Parts                   &parts,
+           const ArrayView<const double> &part,
            Vector<double>                &whole,
            const unsigned int             root)
     {
       if (n_ranks() == 1)
         {
-          all_gather(part, whole);
+          all_gather(parts, part, whole);
           return;
         }
-      std::vector<int> counts, offsets;
-      counts_and_offsets(part.size(), counts, offsets);
+      AssertDimension(part.size(), parts.counts[rank()]);
       if (rank() == root)
-        whole.reinit(offsets.back() + counts.back(), true);
+        whole.reinit(parts.size(), /*omit_zeroing_entries=*/true);
       const int ierr = MPI_Gatherv(part.data(),
                                    static_cast<int>(part.size()),
                                    MPI_DOUBLE,
                                    rank() == root ? whole.data() : nullptr,
-                                   counts.data(),
-                                   offsets.data(),
+                                   parts.counts.data(),
+                                   parts.offsets.data(),
                                    MPI_DOUBLE,
                                    static_cast<int>(root),
                                    communicator());
@@ -185,21 +184,20 @@ namespace thinlayer
 
 
     void
-    scatter(const Vector<double>    &whole,
+    scatter(const Parts             &parts,
+            const Vector<double>    &whole,
             const ArrayView<double> &part,
             const unsigned int       root)
     {
+      AssertDimension(part.size(), parts.counts[rank()]);
       if (n_ranks() == 1)
         {
-          AssertDimension(whole.size(), part.size());
           std::copy(whole.begin(), whole.end(), part.begin());
           return;
         }
-      std::vector<int> counts, offsets;
-      counts_and_offsets(part.size(), counts, offsets);
       const int ierr = MPI_Scatterv(rank() == root ? whole.data() : nullptr,
-                                    counts.data(),
-                                    offsets.data(),
+                                    parts.counts.data(),
+                                    parts.offsets.data(),
                                     MPI_DOUBLE,
                                     part.data(),
                                     static_cast<int>(part.size()),

@@ -4,20 +4,6 @@
 
 namespace thinlayer
 {
-  namespace
-  {
-    /// @p dst = @p src, laid out as @p src first (a default-constructed
-    /// deal.II vector is no valid target).
-    template <typename VectorType>
-    void
-    assign(VectorType &dst, const VectorType &src)
-    {
-      dst.reinit(src, /*omit_zeroing_entries=*/true);
-      dst = src;
-    }
-  } // namespace
-
-
   template <typename VectorType>
   AndersonAcceleration<VectorType>::AndersonAcceleration(
     const unsigned int depth)
@@ -55,15 +41,15 @@ namespace thinlayer
             dX.pop_front();
             dG.pop_front();
           }
-        assign(dx, x);
+        dx = x;
         dx -= previous_x;
-        assign(dg, g);
+        dg = g;
         dg -= previous_g;
         dX.push_back(std::move(dx));
         dG.push_back(std::move(dg));
       }
-    assign(previous_x, x);
-    assign(previous_g, g);
+    previous_x   = x;
+    previous_g   = g;
     has_previous = true;
 
     // Least squares by modified Gram-Schmidt on the columns of dG: dG = Q R,
@@ -77,8 +63,8 @@ namespace thinlayer
     R.assign(m * m, 0.);
     for (unsigned int j = 0; j < m; ++j)
       {
-        VectorType &q = Q[kept.size()];
-        assign(q, dG[j]);
+        VectorType &q       = Q[kept.size()];
+        q                   = dG[j];
         const double norm_0 = q.l2_norm();
         for (unsigned int k = 0; k < kept.size(); ++k)
           {

@@ -422,6 +422,8 @@ namespace thinlayer
     /// Each rank's DoFs and its ghosts: those of its own cells and
     /// elements and those its own constraint lines name.
     std::shared_ptr<const Utilities::MPI::Partitioner> dof_partitioner;
+    /// Where each rank's DoFs lie in a whole vector (whole()).
+    mpi::Parts dof_parts;
 
     /// The component of every DoF.
     std::vector<unsigned int> dof_component;

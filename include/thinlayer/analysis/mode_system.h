@@ -87,16 +87,15 @@ namespace thinlayer
     }
 
     /**
-     * Condense @p v, a vector of forces: add each constrained DoF's value to
-     * the DoFs its line names, then zero it. Its ghost values must be zero
-     * (as they are outside GhostValues). A collective call.
+     * Condense @p v, a vector of forces, with constraints (see
+     * thinlayer::condense()). A collective call.
      */
     void
     condense(ModeVector &v) const;
 
     /**
-     * Set each constrained DoF of @p v to its line's combination of the
-     * DoFs it names (plus the inhomogeneity). A collective call.
+     * Set each constrained DoF of @p v by its line of constraints (see
+     * thinlayer::distribute()). A collective call.
      */
     void
     distribute(ModeVector &v) const;
@@ -107,13 +106,23 @@ namespace thinlayer
     solve(ModeVector &rhs);
 
     /// The first part of solve() for a spread mode: @p rhs whole on its
-    /// owner, in @p whole. Collective; see Analysis::elastic_solve().
+    /// owner, in whole_rhs. Collective; see Analysis::elastic_solve(),
+    /// which lets the owners substitute at once.
     void
-    gather_on_owner(const ModeVector &rhs, Vector<double> &whole) const;
+    gather_on_owner(const ModeVector &rhs);
 
-    /// The last part: the owner's solution @p whole back in @p rhs.
+    /// The second part: the owner substitutes whole_rhs.
     void
-    scatter_from_owner(const Vector<double> &whole, ModeVector &rhs) const;
+    substitute_on_owner();
+
+    /// The last part: each rank's rows of the owner's solution in @p rhs.
+    void
+    scatter_from_owner(ModeVector &rhs) const;
+
+    /// For a spread mode: where each rank's rows lie in the whole, and the
+    /// whole right-hand side (then solution) on the owner.
+    mpi::Parts     parts;
+    Vector<double> whole_rhs;
   };
 } // namespace thinlayer
 

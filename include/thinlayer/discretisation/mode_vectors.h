@@ -1,6 +1,7 @@
 #ifndef thinlayer_discretisation_mode_vectors_h
 #define thinlayer_discretisation_mode_vectors_h
 
+#include <deal.II/base/array_view.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/la_parallel_vector.h>
 
@@ -29,6 +30,22 @@ namespace thinlayer
    * what its vectors mean; the type says only how they are laid out.
    */
   using ModeVectors = std::vector<ModeVector>;
+
+
+  /// The entries of the DoFs @p v owns, in order: what the solvers and the
+  /// gathers take of it.
+  inline ArrayView<double>
+  owned_entries(ModeVector &v)
+  {
+    return make_array_view(v.begin(), v.begin() + v.locally_owned_size());
+  }
+
+
+  inline ArrayView<const double>
+  owned_entries(const ModeVector &v)
+  {
+    return make_array_view(v.begin(), v.begin() + v.locally_owned_size());
+  }
 
 
   /**

@@ -83,21 +83,45 @@ namespace thinlayer
     void
     sum(Vector<double> &v);
 
-    /// Every rank's @p part, in rank order, as @p whole on every rank
-    /// (resized): a distributed vector's owned parts made whole.
+    /// Where each rank's part of a whole vector lies: every rank's count,
+    /// and where it starts, in rank order.
+    struct Parts
+    {
+      std::vector<int> counts, offsets;
+
+      /// The size of the whole.
+      std::size_t
+      size() const
+      {
+        return counts.empty() ? 0 : offsets.back() + counts.back();
+      }
+    };
+
+    /// The Parts of a whole of which this rank holds @p count entries (a
+    /// collective call; kept by whoever gathers the same layout often).
+    Parts
+    parts(const std::size_t count);
+
+    /// Every rank's @p part (laid out as @p parts), in rank order, as
+    /// @p whole on every rank (resized): a distributed vector's owned parts
+    /// made whole.
     void
-    all_gather(const ArrayView<const double> &part, Vector<double> &whole);
+    all_gather(const Parts                   &parts,
+               const ArrayView<const double> &part,
+               Vector<double>                &whole);
 
     /// The same on rank @p root only; @p whole is left alone elsewhere.
     void
-    gather(const ArrayView<const double> &part,
+    gather(const Parts                   &parts,
+           const ArrayView<const double> &part,
            Vector<double>                &whole,
            const unsigned int             root);
 
     /// The inverse of gather(): each rank's @p part taken from rank
     /// @p root's @p whole.
     void
-    scatter(const Vector<double>    &whole,
+    scatter(const Parts             &parts,
+            const Vector<double>    &whole,
             const ArrayView<double> &part,
             const unsigned int       root);
 
