@@ -8,12 +8,14 @@
 #include <thinlayer/base/input_error.h>
 #include <thinlayer/discretisation/mode_constraints.h>
 #include <thinlayer/discretisation/serendipity_constraints.h>
+#include <thinlayer/mesh/interface_pairing.h>
 #include <thinlayer/parallel/cell_partition.h>
 #include <thinlayer/parallel/mpi.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <set>
 
 namespace thinlayer
 {
@@ -88,7 +90,10 @@ namespace thinlayer
     dof_handler.distribute_dofs(fe);
     if (mpi::n_ranks() > 1)
       {
-        partition      = partition_cells(tria, mpi::n_ranks(), mpi::rank());
+        partition      = partition_cells(tria,
+                                    mpi::n_ranks(),
+                                    mpi::rank(),
+                                    interface_element_cells());
         owned_per_rank = number_dofs_by_rank(dof_handler, partition);
       }
     dof_component.resize(dof_handler.n_dofs());
@@ -155,6 +160,26 @@ namespace thinlayer
                                                 dsp,
                                                 mpi::communicator());
       }
+  }
+
+
+  template <int dim>
+  std::vector<std::pair<unsigned int, unsigned int>>
+  Analysis<dim>::interface_element_cells() const
+  {
+    std::vector<std::pair<unsigned int, unsigned int>> cells;
+    if constexpr (dim == 2)
+      if (!parameters.interface_elements.empty())
+        {
+          std::set<types::boundary_id> curves;
+          for (const auto &[id, curve] : parameters.interface_elements)
+            curves.insert(id);
+          for (const FacingSides &pair : pair_facing_sides(
+                 dof_handler, curves, parameters.parameter_file))
+            cells.emplace_back(pair.plus_cell->active_cell_index(),
+                               pair.minus_cell->active_cell_index());
+        }
+    return cells;
   }
 
 

@@ -5,6 +5,9 @@
 //    is rank 0's.
 //    The DoFs numbered rank by rank: every DoF in one rank's set, the sets
 //    contiguous ranges in rank order, each DoF on a cell of its rank.
+//    Joined cells (the sides of zero-thickness elements) share a rank,
+//    directly or through another, also when there are fewer cells than
+//    ranks.
 // 2. A summed vector is the exact sum of every rank's values, bit for bit
 //    the same on every rank.
 // 3. Profile values (sum_over_ranks()): every rank receives each sample's
@@ -104,6 +107,25 @@ main(int argc, char **argv)
                                             return r == 0;
                                           }),
                               "on one rank, every cell is rank 0's");
+
+    // Opposite corners, joined; the far corner also to a middle cell, so
+    // that the three go together; and a mesh of fewer cells than ranks.
+    const std::vector<std::pair<unsigned int, unsigned int>> joined = {
+      {0, 143}, {143, 78}, {5, 100}};
+    const CellPartition together = partition_cells(tria, n, me, joined);
+    truths::expect_everywhere(
+      together.owner[0] == together.owner[143] &&
+        together.owner[143] == together.owner[78] &&
+        together.owner[5] == together.owner[100],
+      "joined cells on one rank, directly or through another");
+    Triangulation<2> two;
+    GridGenerator::subdivided_hyper_rectangle(two,
+                                              {2, 1},
+                                              Point<2>(0, 0),
+                                              Point<2>(2, 1));
+    const CellPartition few = partition_cells(two, n, me, {{1, 0}});
+    truths::expect_everywhere(few.owner[0] == few.owner[1],
+                              "joined on one rank with fewer cells than ranks");
   }
 
   if (mpi::is_root())

@@ -352,6 +352,11 @@ namespace thinlayer
     void
     setup_dofs_and_constraints();
 
+    /// The two cells of every zero-thickness interface element, which the
+    /// partition keeps on one rank.
+    std::vector<std::pair<unsigned int, unsigned int>>
+    interface_element_cells() const;
+
     /// The layout of the mode vectors: see dof_partitioner.
     void
     setup_dof_partitioner();

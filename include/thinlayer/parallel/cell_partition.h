@@ -5,6 +5,7 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/grid/tria.h>
 
+#include <utility>
 #include <vector>
 
 namespace thinlayer
@@ -35,12 +36,20 @@ namespace thinlayer
    * size with short boundaries (METIS on the graph of cells that share a
    * face); the same split on every rank. On one rank every cell is
    * rank 0's.
+   *
+   * The cells of each pair in @p joined go to one rank: the two sides of a
+   * zero-thickness interface element share no vertex, yet the rank that
+   * runs the element needs both cells' DoFs and, on a distributed mesh,
+   * both cells. A pair is an edge of METIS's graph as well, so the split
+   * rarely has to move a cell to keep it.
    */
   template <int dim>
   CellPartition
-  partition_cells(const Triangulation<dim> &tria,
-                  const unsigned int        n_ranks,
-                  const unsigned int        rank);
+  partition_cells(
+    const Triangulation<dim>                                 &tria,
+    const unsigned int                                        n_ranks,
+    const unsigned int                                        rank,
+    const std::vector<std::pair<unsigned int, unsigned int>> &joined = {});
 
 
   /**
