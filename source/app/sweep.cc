@@ -7,12 +7,14 @@
 #include <thinlayer/base/text_format.h>
 #include <thinlayer/output/reference_check.h>
 #include <thinlayer/output/results_directory.h>
+#include <thinlayer/parallel/mpi.h>
 #include <thinlayer/parameters/parameter_reader.h>
 
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <sstream>
 
 namespace thinlayer
@@ -175,7 +177,8 @@ namespace thinlayer
         {
           // While meshing: this run has nothing, the runs before it stay.
           std::error_code error;
-          std::filesystem::remove_all(directory, error);
+          if (mpi::is_root())
+            std::filesystem::remove_all(directory, error);
           csv << ',' << RunSummary::csv_error_row() << ','
               << text_format::csv_field(e.what()) << '\n';
           out << e.what() << std::endl;
@@ -189,7 +192,8 @@ namespace thinlayer
       catch (const std::exception &e)
         {
           std::error_code error;
-          std::filesystem::remove_all(directory, error);
+          if (mpi::is_root())
+            std::filesystem::remove_all(directory, error);
           csv << ',' << RunSummary::csv_error_row() << ','
               << text_format::csv_field(e.what()) << '\n';
           out << "error: " << e.what() << std::endl;
@@ -234,11 +238,19 @@ namespace thinlayer
       }
 
     // The whole sweep is one run of its directory: written aside, put in
-    // place at the end.
-    ResultsDirectory  results(base.output.directory, file);
-    const std::string staging  = results.staging();
-    const std::string csv_path = staging + "/sweep.csv";
-    std::ofstream     csv(csv_path);
+    // place at the end. Rank 0 writes it (every rank writes its pieces of
+    // the fields into the same runs' directories).
+    std::unique_ptr<ResultsDirectory> results;
+    const std::string                 staging = mpi::on_root([&]() {
+      results = std::make_unique<ResultsDirectory>(base.output.directory, file);
+      return results->staging();
+    });
+    std::ofstream                     csv_file;
+    std::ostringstream                elsewhere;
+    if (results)
+      csv_file.open(staging + "/sweep.csv");
+    std::ostream &csv = results ? static_cast<std::ostream &>(csv_file)
+                                : static_cast<std::ostream &>(elsewhere);
     csv << "run";
     for (const auto &[name, values] : sweep.values)
       csv << ',' << text_format::csv_field(name);
@@ -279,11 +291,14 @@ namespace thinlayer
             break;
           }
       }
-    csv.close();
-    if (!csv)
-      throw WriteError("cannot write sweep.csv (Output/Directory '" +
-                       base.output.directory + "')");
-    results.commit();
+    if (results)
+      {
+        csv_file.close();
+        if (!csv_file)
+          throw WriteError("cannot write sweep.csv (Output/Directory '" +
+                           base.output.directory + "')");
+        results->commit();
+      }
     out << "  results in " << base.output.directory << "/sweep.csv"
         << std::endl;
     return result;
