@@ -10,6 +10,7 @@
 #include <thinlayer/discretisation/serendipity_constraints.h>
 #include <thinlayer/mesh/interface_pairing.h>
 #include <thinlayer/parallel/cell_partition.h>
+#include <thinlayer/parallel/distributed_mesh.h>
 #include <thinlayer/parallel/mpi.h>
 
 #include <algorithm>
@@ -77,6 +78,7 @@ namespace thinlayer
 
     setup_dofs_and_constraints();
     setup_dof_partitioner();
+    setup_dof_components();
     setup_mode_vectors();
     assemble_stiffness();
     factorise_stiffness();
@@ -87,26 +89,49 @@ namespace thinlayer
   void
   Analysis<dim>::setup_dofs_and_constraints()
   {
-    dof_handler.distribute_dofs(fe);
+    // What needs the whole mesh is found on it before it is split: the
+    // facing sides of the interface elements (their runs and arc lengths
+    // span the ranks), and the partition, which keeps each element's two
+    // cells on one rank.
+    DoFHandler<dim>          whole_mesh(tria);
+    std::vector<FacingSides> sides;
+    if constexpr (dim == 2)
+      if (!parameters.interface_elements.empty())
+        {
+          std::set<types::boundary_id> curves;
+          for (const auto &[id, curve] : parameters.interface_elements)
+            curves.insert(id);
+          sides =
+            pair_facing_sides(whole_mesh, curves, parameters.parameter_file);
+        }
     if (mpi::n_ranks() > 1)
       {
-        partition      = partition_cells(tria,
-                                    mpi::n_ranks(),
-                                    mpi::rank(),
-                                    interface_element_cells());
-        owned_per_rank = number_dofs_by_rank(dof_handler, partition);
+        std::vector<std::pair<unsigned int, unsigned int>> joined;
+        for (const FacingSides &pair : sides)
+          joined.emplace_back(pair.plus_cell->active_cell_index(),
+                              pair.minus_cell->active_cell_index());
+        whole_partition =
+          partition_cells(tria, mpi::n_ranks(), mpi::rank(), joined);
+        distributed_tria = distribute_mesh(tria, whole_partition);
+        dof_handler.reinit(*distributed_tria);
+        partition =
+          partition_of(*distributed_tria, mpi::n_ranks(), mpi::rank());
       }
-    dof_component.resize(dof_handler.n_dofs());
-    for (unsigned int c = 0; c < kinematics.n_components(); ++c)
-      {
-        std::vector<bool> mask(kinematics.n_components(), false);
-        mask[c] = true;
-        for (const auto dof :
-             DoFTools::extract_dofs(dof_handler, ComponentMask(mask)))
-          dof_component[dof] = c;
-      }
+    dof_handler.distribute_dofs(fe);
 
-    element_constraints.clear();
+    if (mpi::n_ranks() > 1)
+      {
+        owned_per_rank =
+          Utilities::MPI::all_gather(mpi::communicator(),
+                                     dof_handler.locally_owned_dofs());
+        relevant_dofs = DoFTools::extract_locally_relevant_dofs(dof_handler);
+        element_constraints.reinit(relevant_dofs);
+      }
+    else
+      {
+        relevant_dofs = complete_index_set(dof_handler.n_dofs());
+        element_constraints.clear();
+      }
     if (parameters.discretisation.serendipity)
       make_serendipity_constraints(dof_handler, element_constraints);
     element_constraints.close();
@@ -128,29 +153,41 @@ namespace thinlayer
                               systems[m]->structural_constraints,
                               systems[m]->constraints);
       }
+    count_constrained_dofs();
 
     // On many ranks, each holds and runs the points of its part of the
     // mesh.
-    groups = create_element_groups(
-      parameters, dof_handler, mapping, quadrature, kinematics, partition);
+    groups    = create_element_groups(parameters,
+                                   dof_handler,
+                                   mapping,
+                                   quadrature,
+                                   kinematics,
+                                   partition,
+                                   sides,
+                                   whole_partition);
     continuum = dynamic_cast<const ContinuumCells<dim> *>(groups[0].get());
     Assert(continuum != nullptr,
            ExcMessage("The first element group must be the continuum."));
 
-    DynamicSparsityPattern dsp(dof_handler.n_dofs());
-    for (const auto &group : groups)
-      for (const auto &system : systems)
-        group->add_sparsity(dsp, system->constraints);
     if (mpi::n_ranks() == 1)
-      sparsity.copy_from(dsp);
+      {
+        DynamicSparsityPattern dsp(dof_handler.n_dofs());
+        for (const auto &group : groups)
+          for (const auto &system : systems)
+            group->add_sparsity(dsp, system->constraints);
+        sparsity.copy_from(dsp);
+      }
     else
       {
         // Each rank's rows, from every rank's cells.
+        DynamicSparsityPattern dsp(relevant_dofs);
+        for (const auto &group : groups)
+          for (const auto &system : systems)
+            group->add_sparsity(dsp, system->constraints);
         SparsityTools::distribute_sparsity_pattern(dsp,
                                                    owned_per_rank[mpi::rank()],
                                                    mpi::communicator(),
-                                                   complete_index_set(
-                                                     dof_handler.n_dofs()));
+                                                   relevant_dofs);
         for (auto &system : systems)
           system->distributed_stiffness =
             std::make_unique<PETScWrappers::MPI::SparseMatrix>();
@@ -164,22 +201,26 @@ namespace thinlayer
 
 
   template <int dim>
-  std::vector<std::pair<unsigned int, unsigned int>>
-  Analysis<dim>::interface_element_cells() const
+  void
+  Analysis<dim>::count_constrained_dofs()
   {
-    std::vector<std::pair<unsigned int, unsigned int>> cells;
-    if constexpr (dim == 2)
-      if (!parameters.interface_elements.empty())
-        {
-          std::set<types::boundary_id> curves;
-          for (const auto &[id, curve] : parameters.interface_elements)
-            curves.insert(id);
-          for (const FacingSides &pair : pair_facing_sides(
-                 dof_handler, curves, parameters.parameter_file))
-            cells.emplace_back(pair.plus_cell->active_cell_index(),
-                               pair.minus_cell->active_cell_index());
-        }
-    return cells;
+    // Each rank counts the lines of its own DoFs.
+    const IndexSet &owned   = dof_handler.locally_owned_dofs();
+    const auto      n_owned = [&owned](const AffineConstraints<double> &c) {
+      types::global_dof_index n = 0;
+      for (const auto &line : c.get_lines())
+        if (owned.is_element(line.index))
+          ++n;
+      return n;
+    };
+    std::vector<types::global_dof_index> counts = {
+      n_owned(element_constraints)};
+    for (const auto &system : systems)
+      counts.push_back(n_owned(system->constraints));
+    for (auto &count : counts)
+      count = mpi::sum(count);
+    n_element_constrained = counts[0];
+    n_constrained.assign(counts.begin() + 1, counts.end());
   }
 
 
@@ -221,6 +262,28 @@ namespace thinlayer
 
 
   template <int dim>
+  void
+  Analysis<dim>::setup_dof_components()
+  {
+    // Every DoF a rank stores is on one of the cells it holds.
+    const unsigned int n_local = dof_partitioner->locally_owned_size() +
+                                 dof_partitioner->n_ghost_indices();
+    dof_component.assign(n_local, numbers::invalid_unsigned_int);
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (!cell->is_artificial())
+        {
+          cell->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            if (dof_partitioner->in_local_range(dofs[i]) ||
+                dof_partitioner->is_ghost_entry(dofs[i]))
+              dof_component[dof_partitioner->global_to_local(dofs[i])] =
+                fe.system_to_component_index(i).first;
+        }
+  }
+
+
+  template <int dim>
   ModeVectors
   Analysis<dim>::new_mode_vectors() const
   {
@@ -245,13 +308,6 @@ namespace thinlayer
   void
   Analysis<dim>::setup_mode_vectors()
   {
-    const unsigned int n = dof_handler.n_dofs();
-    // The rank's own entries of a vector every rank computed whole.
-    const auto own_part = [this](const Vector<double> &whole, ModeVector &v) {
-      v.reinit(dof_partitioner);
-      for (unsigned int k = 0; k < v.locally_owned_size(); ++k)
-        v.local_element(k) = whole[dof_partitioner->local_to_global(k)];
-    };
     for (unsigned int m = 0; m < kinematics.n_modes(); ++m)
       {
         ModeSystem &mode = *systems[m];
@@ -263,16 +319,19 @@ namespace thinlayer
 
         // Prescribed displacements at unit load factor; the nodes tied to
         // them (centre nodes, the axis) follow through the structural lines.
-        Vector<double> whole(n);
+        ModeVector &u = mode.unit_prescribed_displacement;
+        u.reinit(dof_partitioner);
         for (const auto &[dof, value] :
              boundary_data.prescribed_values(mapping, dof_handler, m))
-          whole[dof] = value;
-        mode.structural_constraints.distribute(whole);
-        own_part(whole, mode.unit_prescribed_displacement);
+          if (u.in_local_range(dof))
+            u(dof) = value;
+        distribute(mode.structural_constraints, u);
 
-        whole = 0;
-        boundary_data.assemble_load_vector(mapping, dof_handler, m, whole);
-        own_part(whole, mode.unit_load);
+        mode.unit_load.reinit(dof_partitioner);
+        boundary_data.assemble_load_vector(mapping,
+                                           dof_handler,
+                                           m,
+                                           mode.unit_load);
         mode.unit_rhs.reinit(dof_partitioner);
       }
     for (ModeVectors *vectors :
@@ -521,43 +580,49 @@ namespace thinlayer
 
 
   template <int dim>
-  Vector<double>
+  ModeVector
   Analysis<dim>::displacement_at(const double theta, const bool increment) const
   {
-    return displacement_at(theta, whole_displacements(increment));
+    return displacement_at(theta, displacements(increment));
   }
 
 
   template <int dim>
-  std::vector<Vector<double>>
-  Analysis<dim>::whole_displacements(const bool increment) const
+  ModeVectors
+  Analysis<dim>::displacements(const bool increment) const
   {
-    std::vector<Vector<double>> modes;
+    // Sized first: a copy of a vector (as a growing std::vector makes)
+    // drops its ghost values.
+    ModeVectors modes(systems.size());
     for (unsigned int m = 0; m < systems.size(); ++m)
       {
-        modes.push_back(
-          whole(increment ? increment_vectors[m] : solution_vectors[m]));
+        modes[m] = increment ? increment_vectors[m] : solution_vectors[m];
         // A pending step's state is the accepted one plus its increment.
         if (pending && !increment)
-          modes.back() += whole(increment_vectors[m]);
+          modes[m] += increment_vectors[m];
+        modes[m].update_ghost_values();
       }
     return modes;
   }
 
 
   template <int dim>
-  Vector<double>
-  Analysis<dim>::displacement_at(const double                       theta,
-                                 const std::vector<Vector<double>> &modes) const
+  ModeVector
+  Analysis<dim>::displacement_at(const double       theta,
+                                 const ModeVectors &modes) const
   {
-    Vector<double> u(dof_handler.n_dofs());
+    // Entry by entry, ghosts too: each rank has what its cells read.
+    ModeVector         u(dof_partitioner);
+    const unsigned int n = dof_component.size();
     for (unsigned int m = 0; m < systems.size(); ++m)
       {
         const double t1 = kinematics.T1_at(m, theta);
         const double t2 = kinematics.T2_at(m, theta);
-        for (unsigned int i = 0; i < u.size(); ++i)
-          u[i] += (dof_component[i] < 2 ? t1 : t2) * modes[m][i];
+        for (unsigned int k = 0; k < n; ++k)
+          u.local_element(k) +=
+            (dof_component[k] < 2 ? t1 : t2) * modes[m].local_element(k);
       }
+    u.set_ghost_state(true);
     return u;
   }
 
@@ -588,8 +653,26 @@ namespace thinlayer
   std::string
   Analysis<dim>::warnings() const
   {
+    // Each rank found those at the nodes it holds, each naming the first
+    // node (in parentheses) where it met them: the lowest rank's stands.
+    std::vector<std::string> all = boundary_data.get_warnings();
+    if (mpi::n_ranks() > 1)
+      {
+        all.clear();
+        const auto what = [](const std::string &w) {
+          return w.substr(0, w.find('('));
+        };
+        for (const auto &part :
+             Utilities::MPI::all_gather(mpi::communicator(),
+                                        boundary_data.get_warnings()))
+          for (const auto &w : part)
+            if (std::none_of(all.begin(), all.end(), [&](const auto &seen) {
+                  return what(seen) == what(w);
+                }))
+              all.push_back(w);
+      }
     std::string text;
-    for (const auto &w : boundary_data.get_warnings())
+    for (const auto &w : all)
       text += (text.empty() ? "" : "; ") + w;
     return text;
   }

@@ -90,6 +90,34 @@ namespace thinlayer
 
 
   template <int dim>
+  OwnedDofPlaces
+  Analysis<dim>::owned_dof_places() const
+  {
+    static_assert(dim == 2, "The rigid motions are those of the plane.");
+    OwnedDofPlaces places;
+    places.owned         = dof_handler.locally_owned_dofs();
+    const unsigned int n = places.owned.n_elements();
+    if (mpi::n_ranks() == 1)
+      {
+        places.points.resize(n);
+        DoFTools::map_dofs_to_support_points(mapping,
+                                             dof_handler,
+                                             places.points);
+      }
+    else
+      {
+        std::map<types::global_dof_index, Point<dim>> points;
+        DoFTools::map_dofs_to_support_points(mapping, dof_handler, points);
+        for (const auto i : places.owned)
+          places.points.push_back(points.at(i));
+      }
+    // The owned DoFs come first in the mode vectors' layout.
+    places.components.assign(dof_component.begin(), dof_component.begin() + n);
+    return places;
+  }
+
+
+  template <int dim>
   void
   Analysis<dim>::check_supports_and_load() const
   {
@@ -106,16 +134,13 @@ namespace thinlayer
 
     if (kinematics.is_fourier())
       return;
-    std::vector<Point<dim>> points(dof_handler.n_dofs());
-    DoFTools::map_dofs_to_support_points(mapping, dof_handler, points);
-    const std::string motion =
+    const OwnedDofPlaces places = owned_dof_places();
+    const std::string    motion =
       mpi::n_ranks() == 1
-        ? free_rigid_body_motion(points,
-                                 dof_component,
+           ? free_rigid_body_motion(places,
                                  systems[0]->constraints,
                                  systems[0]->condensed_stiffness)
-        : free_rigid_body_motion(points,
-                                 dof_component,
+           : free_rigid_body_motion(places,
                                  systems[0]->constraints,
                                  *systems[0]->distributed_stiffness);
     if (!motion.empty())
@@ -205,29 +230,30 @@ namespace thinlayer
   void
   Analysis<dim>::set_up_iterative_solvers()
   {
-    std::vector<Point<dim>> points(dof_handler.n_dofs());
-    DoFTools::map_dofs_to_support_points(mapping, dof_handler, points);
-    const auto motions =
-      rigid_body_motions(points, dof_component, kinematics.n_components());
+    const OwnedDofPlaces places = owned_dof_places();
+    const auto motions = rigid_body_motions(places, kinematics.n_components());
     // PETSc's aggregation groups a node's unknowns where they follow one
     // another in component order (deal.II numbers a node's together) and
     // no rank splits a node.
     unsigned int block_size = kinematics.n_components();
-    for (unsigned int i = 0; i < dof_component.size(); ++i)
-      if (dof_component[i] != i % block_size)
+    for (unsigned int k = 0; k < places.components.size(); ++k)
+      if (places.components[k] != places.owned.nth_index_in_set(k) % block_size)
         block_size = 1;
     for (const IndexSet &owned : owned_per_rank)
       if (owned.n_elements() % block_size != 0)
         block_size = 1;
+    if (mpi::n_ranks() > 1)
+      block_size = Utilities::MPI::min(block_size, mpi::communicator());
     for (auto &system : systems)
       {
         // The condensed stiffness keeps a constrained DoF apart, on its
         // diagonal: a motion is nearly free only where it is zero there.
         auto free_motions = motions;
         for (auto &motion : free_motions)
-          for (unsigned int i = 0; i < motion.size(); ++i)
-            if (system->constraints.is_constrained(i))
-              motion[i] = 0;
+          for (unsigned int k = 0; k < motion.size(); ++k)
+            if (system->constraints.is_constrained(
+                  places.owned.nth_index_in_set(k)))
+              motion[k] = 0;
         system->iterative = std::make_unique<AmgConjugateGradient>(
           parameters.solver.linear_solver_tolerance,
           parameters.solver.linear_solver_iterations);

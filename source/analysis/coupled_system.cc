@@ -28,8 +28,8 @@ namespace thinlayer
           : FactorisedStiffness::Method::umfpack);
     else
       {
-        // Each rank's DoFs are contiguous and in rank order
-        // (number_dofs_by_rank()).
+        // Each rank's DoFs are contiguous and in rank order (as a
+        // distributed DoFHandler numbers them).
         types::global_dof_index next = 0;
         for (const IndexSet &owned : owned_per_rank)
           {

@@ -1,3 +1,5 @@
+#include <deal.II/base/partitioner.h>
+#include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/vector.h>
 
@@ -8,6 +10,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
+#include <memory>
 
 #include <petscmat.h>
 
@@ -17,103 +21,97 @@ namespace thinlayer
   {
     using Motions = std::array<Vector<double>, 3>;
 
-    /// The centre of the bounding box of @p points, and half its diagonal
-    /// (at least 1e-300).
+    /// The centre of the bounding box of every rank's @p points, and half
+    /// its diagonal (at least 1e-300).
     void
     bounding_box_centre(const std::vector<Point<2>> &points,
                         Point<2>                    &centre,
                         double                      &size)
     {
-      Point<2> low = points[0], high = points[0];
+      const double infinity = std::numeric_limits<double>::infinity();
+      Point<2>     low(infinity, infinity), high(-infinity, -infinity);
       for (const auto &p : points)
         for (unsigned int d = 0; d < 2; ++d)
           {
             low[d]  = std::min(low[d], p[d]);
             high[d] = std::max(high[d], p[d]);
           }
+      for (unsigned int d = 0; d < 2; ++d)
+        {
+          low[d]  = -mpi::max(-low[d]);
+          high[d] = mpi::max(high[d]);
+        }
       centre = (low + high) / 2;
       size   = std::max((high - low).norm() / 2, 1e-300);
     }
 
-    /**
-     * The check itself, given the three motions and what the stiffness
-     * makes of them: @p image = K r and @p scale = |K| |r| on the
-     * unconstrained rows.
-     */
-    std::string
-    free_motion(const Point<2>                  &centre,
-                const double                     size,
-                const AffineConstraints<double> &constraints,
-                Motions                         &image,
-                const Motions                   &scale);
 
-
-    /// The two translations and the rotation about the centre of the
-    /// bounding box of @p support_points, scaled by its size, their
-    /// supported values 0; @p image and @p scale sized for them, zero.
-    Motions
-    rigid_motions(const std::vector<Point<2>>     &support_points,
-                  const std::vector<unsigned int> &dof_component,
-                  const AffineConstraints<double> &constraints,
-                  Point<2>                        &centre,
-                  double                          &size,
-                  Motions                         &image,
-                  Motions                         &scale)
+    /// The motions about @p centre, scaled by @p size (see
+    /// rigid_body_motions()).
+    std::vector<Vector<double>>
+    motions_about(const OwnedDofPlaces &places,
+                  const unsigned int    n_components,
+                  const Point<2>       &centre,
+                  const double          size)
     {
-      const unsigned int n = support_points.size();
-      bounding_box_centre(support_points, centre, size);
-      const std::vector<Vector<double>> motions =
-        rigid_body_motions(support_points, dof_component, 2);
-      Motions motion;
-      for (unsigned int k = 0; k < 3; ++k)
+      const unsigned int          n = places.points.size();
+      std::vector<Vector<double>> motions;
+      for (unsigned int k = 0; k < (n_components == 2 ? 3 : n_components); ++k)
         {
-          motion[k] = motions[k];
-          image[k].reinit(n);
-          scale[k].reinit(n);
+          motions.emplace_back(n);
           for (unsigned int i = 0; i < n; ++i)
-            // Held by a support: a line without entries.
-            if (constraints.is_constrained(i))
-              {
-                const auto *entries = constraints.get_constraint_entries(i);
-                if (entries == nullptr || entries->empty())
-                  motion[k][i] = 0;
-              }
+            {
+              const unsigned int c = places.components[i];
+              if (n_components != 2 || k < 2)
+                motions[k][i] = c == k ? 1. : 0.;
+              else
+                {
+                  const Tensor<1, 2> x = (places.points[i] - centre) / size;
+                  motions[k][i]        = c == 0 ? -x[1] : x[0];
+                }
+            }
         }
-      return motion;
+      return motions;
     }
 
 
+    /**
+     * The check itself, given the three motions and what the stiffness
+     * makes of them: @p image = K r and @p scale = |K| |r| on this rank's
+     * rows, zero on the constrained ones.
+     */
     std::string
-    free_motion(const Point<2>                  &centre,
-                const double                     size,
-                const AffineConstraints<double> &constraints,
-                Motions                         &image,
-                const Motions                   &scale)
+    free_motion(const Point<2> &centre,
+                const double    size,
+                Motions        &image,
+                const Motions  &scale)
     {
-      const unsigned int n = image[0].size();
-
-      // K R over the unconstrained rows, each column scaled by the largest
-      // |K| |r| of a row, reduced by modified Gram-Schmidt to a 3x3 R with
-      // the same singular values (squaring into a Gram matrix would lose the
-      // small ones to rounding).
+      // K R, each column scaled by the largest |K| |r| of a row, reduced
+      // by modified Gram-Schmidt to a 3x3 R with the same singular values
+      // (squaring into a Gram matrix would lose the small ones to
+      // rounding).
+      // deal.II's vector operations refuse empty vectors: a rank may own
+      // no rows.
+      const bool            rows = image[0].size() > 0;
       std::array<double, 3> norm;
       for (unsigned int k = 0; k < 3; ++k)
         {
-          norm[k] = std::max(scale[k].linfty_norm(), 1e-300);
-          for (unsigned int i = 0; i < n; ++i)
-            image[k][i] =
-              constraints.is_constrained(i) ? 0. : image[k][i] / norm[k];
+          norm[k] =
+            std::max(mpi::max(rows ? scale[k].linfty_norm() : 0.), 1e-300);
+          if (rows)
+            image[k] /= norm[k];
         }
       LAPACKFullMatrix<double> r(3, 3);
       for (unsigned int k = 0; k < 3; ++k)
         {
           for (unsigned int l = 0; l < k; ++l)
             {
-              r(l, k) = image[l] * image[k];
-              image[k].add(-r(l, k), image[l]);
+              r(l, k) = mpi::sum(rows ? image[l] * image[k] : 0.);
+              if (rows)
+                image[k].add(-r(l, k), image[l]);
             }
-          r(k, k) = image[k].l2_norm();
-          if (r(k, k) > 0)
+          r(k, k) = std::sqrt(mpi::sum(rows ? image[k].norm_sqr() : 0.));
+          if (r(k, k) > 0 && rows)
             image[k] /= r(k, k);
         }
       r.compute_svd();
@@ -139,107 +137,139 @@ namespace thinlayer
              printf("%.3g", c[0] / length) + ", " +
              printf("%.3g", c[1] / length) + ")";
     }
+
+
+    /**
+     * free_rigid_body_motion() on the rows that @p for_each_entry(i, f)
+     * walks (calling f(column, value) for each entry of row i), whose
+     * columns are @p columns.
+     */
+    template <typename EntryWalk>
+    std::string
+    check_rows(const OwnedDofPlaces            &places,
+               const AffineConstraints<double> &constraints,
+               const IndexSet                  &columns,
+               const EntryWalk                 &for_each_entry)
+    {
+      const IndexSet &owned = places.owned;
+      const auto      n     = owned.n_elements();
+      Point<2>        centre;
+      double          size;
+      bounding_box_centre(places.points, centre, size);
+      const std::vector<Vector<double>> motions =
+        motions_about(places, 2, centre, size);
+
+      // The motions with the supports held, the columns' imported from
+      // their owners.
+      IndexSet ghosts = columns;
+      ghosts.subtract_set(owned);
+      std::array<LinearAlgebra::distributed::Vector<double>, 3> motion;
+      const auto                                                partitioner =
+        std::make_shared<Utilities::MPI::Partitioner>(owned,
+                                                      ghosts,
+                                                      mpi::n_ranks() > 1
+                                                        ? mpi::communicator()
+                                                        : MPI_COMM_SELF);
+      for (unsigned int k = 0; k < 3; ++k)
+        {
+          motion[k].reinit(partitioner);
+          for (unsigned int r = 0; r < n; ++r)
+            {
+              const auto  i       = owned.nth_index_in_set(r);
+              const auto *entries = constraints.get_constraint_entries(i);
+              const bool  held    = constraints.is_constrained(i) &&
+                                (entries == nullptr || entries->empty());
+              motion[k].local_element(r) = held ? 0. : motions[k][r];
+            }
+          if (mpi::n_ranks() > 1)
+            motion[k].update_ghost_values();
+        }
+
+      Motions image, scale;
+      for (unsigned int k = 0; k < 3; ++k)
+        {
+          image[k].reinit(n);
+          scale[k].reinit(n);
+        }
+      for (unsigned int r = 0; r < n; ++r)
+        {
+          const auto i           = owned.nth_index_in_set(r);
+          const bool constrained = constraints.is_constrained(i);
+          for_each_entry(i, [&](const types::global_dof_index j, double value) {
+            for (unsigned int k = 0; k < 3; ++k)
+              {
+                const double product = value * motion[k](j);
+                image[k][r] += product;
+                // |K| |r|, row by row: what rounding is measured against.
+                if (!constrained)
+                  scale[k][r] += std::abs(product);
+              }
+          });
+          if (constrained)
+            for (unsigned int k = 0; k < 3; ++k)
+              image[k][r] = 0;
+        }
+      return free_motion(centre, size, image, scale);
+    }
   } // namespace
 
 
   std::vector<Vector<double>>
-  rigid_body_motions(const std::vector<Point<2>>     &support_points,
-                     const std::vector<unsigned int> &dof_component,
-                     const unsigned int               n_components)
+  rigid_body_motions(const OwnedDofPlaces &places,
+                     const unsigned int    n_components)
   {
-    const unsigned int          n = support_points.size();
-    std::vector<Vector<double>> motions;
-    if (n_components != 2)
-      {
-        for (unsigned int k = 0; k < n_components; ++k)
-          {
-            motions.emplace_back(n);
-            for (unsigned int i = 0; i < n; ++i)
-              motions[k][i] = dof_component[i] == k ? 1. : 0.;
-          }
-        return motions;
-      }
     // The rotation about the centre of the bounding box, scaled by its
     // size, so that the three motions have displacements of one size.
     Point<2> centre;
-    double   size;
-    bounding_box_centre(support_points, centre, size);
-    for (unsigned int k = 0; k < 3; ++k)
-      {
-        motions.emplace_back(n);
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            const Tensor<1, 2> x = (support_points[i] - centre) / size;
-            const unsigned int c = dof_component[i];
-            motions[k][i] =
-              k < 2 ? (c == k ? 1. : 0.) : (c == 0 ? -x[1] : x[0]);
-          }
-      }
-    return motions;
+    double   size = 1;
+    if (n_components == 2)
+      bounding_box_centre(places.points, centre, size);
+    return motions_about(places, n_components, centre, size);
   }
 
 
   std::string
-  free_rigid_body_motion(const std::vector<Point<2>>     &support_points,
-                         const std::vector<unsigned int> &dof_component,
+  free_rigid_body_motion(const OwnedDofPlaces            &places,
                          const AffineConstraints<double> &constraints,
                          const SparseMatrix<double>      &condensed_stiffness)
   {
-    Point<2>      centre;
-    double        size;
-    Motions       image, scale;
-    const Motions motion = rigid_motions(
-      support_points, dof_component, constraints, centre, size, image, scale);
-    const unsigned int n = support_points.size();
-    for (unsigned int k = 0; k < 3; ++k)
-      condensed_stiffness.vmult(image[k], motion[k]);
-    // |K| |r|, row by row: what rounding is measured against.
-    for (unsigned int i = 0; i < n; ++i)
-      if (!constraints.is_constrained(i))
-        for (auto e = condensed_stiffness.begin(i);
-             e != condensed_stiffness.end(i);
-             ++e)
-          for (unsigned int k = 0; k < 3; ++k)
-            scale[k][i] += std::abs(e->value() * motion[k][e->column()]);
-    return free_motion(centre, size, constraints, image, scale);
+    return check_rows(places,
+                      constraints,
+                      complete_index_set(condensed_stiffness.n()),
+                      [&](const types::global_dof_index i, const auto &f) {
+                        for (auto e = condensed_stiffness.begin(i);
+                             e != condensed_stiffness.end(i);
+                             ++e)
+                          f(e->column(), e->value());
+                      });
   }
 
 
   std::string
   free_rigid_body_motion(
-    const std::vector<Point<2>>            &support_points,
-    const std::vector<unsigned int>        &dof_component,
+    const OwnedDofPlaces                   &places,
     const AffineConstraints<double>        &constraints,
     const PETScWrappers::MPI::SparseMatrix &condensed_stiffness)
   {
-    Point<2>      centre;
-    double        size;
-    Motions       image, scale;
-    const Motions motion = rigid_motions(
-      support_points, dof_component, constraints, centre, size, image, scale);
-    // Each rank its rows, then the sums: every rank has both whole.
-    const auto [first, last] = condensed_stiffness.local_range();
-    for (auto i = first; i < last; ++i)
-      {
-        PetscInt           n_entries;
-        const PetscInt    *columns;
-        const PetscScalar *values;
-        MatGetRow(condensed_stiffness, i, &n_entries, &columns, &values);
-        for (PetscInt e = 0; e < n_entries; ++e)
-          for (unsigned int k = 0; k < 3; ++k)
-            {
-              const double product = values[e] * motion[k][columns[e]];
-              image[k][i] += product;
-              if (!constraints.is_constrained(i))
-                scale[k][i] += std::abs(product);
-            }
-        MatRestoreRow(condensed_stiffness, i, &n_entries, &columns, &values);
-      }
-    for (unsigned int k = 0; k < 3; ++k)
-      {
-        mpi::sum(image[k]);
-        mpi::sum(scale[k]);
-      }
-    return free_motion(centre, size, constraints, image, scale);
+    const auto walk = [&](const types::global_dof_index i, const auto &f) {
+      PetscInt           n_entries;
+      const PetscInt    *columns;
+      const PetscScalar *values;
+      MatGetRow(condensed_stiffness, i, &n_entries, &columns, &values);
+      for (PetscInt e = 0; e < n_entries; ++e)
+        f(columns[e], values[e]);
+      MatRestoreRow(condensed_stiffness, i, &n_entries, &columns, &values);
+    };
+    // The columns this rank's rows name.
+    IndexSet                             columns(condensed_stiffness.n());
+    std::vector<types::global_dof_index> named;
+    for (const auto i : places.owned)
+      walk(i, [&](const types::global_dof_index j, double) {
+        named.push_back(j);
+      });
+    std::sort(named.begin(), named.end());
+    named.erase(std::unique(named.begin(), named.end()), named.end());
+    columns.add_indices(named.begin(), named.end());
+    return check_rows(places, constraints, columns, walk);
   }
 } // namespace thinlayer

@@ -267,7 +267,7 @@ namespace thinlayer
   BoundaryData::assemble_load_vector(const Mapping<dim>    &mapping,
                                      const DoFHandler<dim> &dof_handler,
                                      const unsigned int     m,
-                                     Vector<double>        &load) const
+                                     ModeVector            &load) const
   {
     load                                    = 0;
     const FiniteElement<dim>            &fe = dof_handler.get_fe();
@@ -294,7 +294,7 @@ namespace thinlayer
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (const auto f : cell->face_indices())
         {
-          if (!cell->face(f)->at_boundary())
+          if (!cell->is_locally_owned() || !cell->face(f)->at_boundary())
             continue;
           const auto c = conditions.find(cell->face(f)->boundary_id());
           if (c == conditions.end() || !c->second.loaded)
@@ -328,8 +328,9 @@ namespace thinlayer
             }
           cell->get_dof_indices(dofs);
           for (const unsigned int i : fe_face.dof_indices())
-            load[dofs[i]] += cell_load[i];
+            load(dofs[i]) += cell_load[i];
         }
+    load.compress(VectorOperation::add);
   }
 
 
@@ -348,7 +349,8 @@ namespace thinlayer
     for (const auto &w : warnings)
       if (w.find(ids) != std::string::npos)
         return;
-    std::vector<Point<dim>> points(dof_handler.n_dofs());
+    // The points of the DoFs this rank holds (all, on one rank).
+    std::map<types::global_dof_index, Point<dim>> points;
     DoFTools::map_dofs_to_support_points(mapping, dof_handler, points);
     std::ostringstream where;
     for (unsigned int d = 0; d < dim; ++d)
@@ -386,7 +388,7 @@ namespace thinlayer
   template void BoundaryData::assemble_load_vector(const Mapping<dim> &,    \
                                                    const DoFHandler<dim> &, \
                                                    const unsigned int,      \
-                                                   Vector<double> &) const;
+                                                   ModeVector &) const;
   THINLAYER_INSTANTIATE(2)
   THINLAYER_INSTANTIATE(3)
 #undef THINLAYER_INSTANTIATE

@@ -19,19 +19,21 @@ namespace thinlayer
                         AffineConstraints<double>       &constraints)
   {
     const auto &fe = dof_handler.get_fe();
-    structural.clear();
+    // The lines of the DoFs this rank holds, as the element constraints'.
+    structural.reinit(element_constraints.get_local_lines());
     structural.merge(element_constraints);
 
     // Components that play no part in this mode (u_theta for n = 0).
-    for (unsigned int c = 0; c < kinematics.n_components(); ++c)
-      if (kinematics.is_dead_component(m, c))
+    std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (!cell->is_artificial())
         {
-          std::vector<bool> mask(kinematics.n_components(), false);
-          mask[c] = true;
-          for (const auto dof :
-               DoFTools::extract_dofs(dof_handler, ComponentMask(mask)))
-            if (!structural.is_constrained(dof))
-              structural.add_line(dof);
+          cell->get_dof_indices(cell_dofs);
+          for (unsigned int i = 0; i < cell_dofs.size(); ++i)
+            if (kinematics.is_dead_component(
+                  m, fe.system_to_component_index(i).first) &&
+                !structural.is_constrained(cell_dofs[i]))
+              structural.add_line(cell_dofs[i]);
         }
 
     // On the axis r = 0 the field must be single-valued: harmonic 0 has no
@@ -49,7 +51,7 @@ namespace thinlayer
         };
         for (const auto &cell : dof_handler.active_cell_iterators())
           for (const auto f : cell->face_indices())
-            if (cell->face(f)->at_boundary() &&
+            if (!cell->is_artificial() && cell->face(f)->at_boundary() &&
                 cell->face(f)->boundary_id() ==
                   static_cast<types::boundary_id>(axis))
               {
@@ -87,7 +89,7 @@ namespace thinlayer
       }
     structural.close();
 
-    constraints.clear();
+    constraints.reinit(element_constraints.get_local_lines());
     constraints.merge(structural);
     boundary_data.make_zero_constraints(dof_handler, constraints);
     constraints.close();

@@ -33,7 +33,9 @@ namespace thinlayer
     const Triangulation<dim> &tria = dof_handler.get_triangulation();
     cell_law.resize(tria.n_active_cells());
     for (const auto &cell : tria.active_cell_iterators())
-      cell_law[cell->active_cell_index()] = laws.at(cell->material_id()).get();
+      if (!cell->is_artificial())
+        cell_law[cell->active_cell_index()] =
+          laws.at(cell->material_id()).get();
 
     std::vector<unsigned int> cells;
     if (all_cells)

@@ -17,12 +17,14 @@ namespace thinlayer
 
   template <int dim>
   std::vector<std::unique_ptr<ElementGroup>>
-  create_element_groups(const Parameters      &parameters,
-                        const DoFHandler<dim> &dof_handler,
-                        const Mapping<dim>    &mapping,
-                        const Quadrature<dim> &quadrature,
-                        const Kinematics      &kinematics,
-                        const CellPartition   &partition)
+  create_element_groups(const Parameters               &parameters,
+                        const DoFHandler<dim>          &dof_handler,
+                        const Mapping<dim>             &mapping,
+                        const Quadrature<dim>          &quadrature,
+                        const Kinematics               &kinematics,
+                        const CellPartition            &partition,
+                        const std::vector<FacingSides> &facing_sides,
+                        const CellPartition            &whole_partition)
   {
     std::vector<std::unique_ptr<ElementGroup>> groups;
     groups.push_back(std::make_unique<ContinuumCells<dim>>(dof_handler,
@@ -39,12 +41,13 @@ namespace thinlayer
         if constexpr (dim == 2)
           {
             auto elements = std::make_unique<InterfaceElements>();
-            elements->reinit(dof_handler,
+            elements->reinit(facing_sides,
+                             dof_handler,
                              mapping,
                              kinematics,
                              parameters.interface_elements,
                              parameters.materials,
-                             partition,
+                             whole_partition,
                              parameters.parameter_file);
             groups.push_back(std::move(elements));
           }
@@ -66,6 +69,8 @@ namespace thinlayer
                         const Mapping<2> &,
                         const Quadrature<2> &,
                         const Kinematics &,
+                        const CellPartition &,
+                        const std::vector<FacingSides> &,
                         const CellPartition &);
   template std::vector<std::unique_ptr<ElementGroup>>
   create_element_groups(const Parameters &,
@@ -73,5 +78,7 @@ namespace thinlayer
                         const Mapping<3> &,
                         const Quadrature<3> &,
                         const Kinematics &,
+                        const CellPartition &,
+                        const std::vector<FacingSides> &,
                         const CellPartition &);
 } // namespace thinlayer

@@ -2,6 +2,7 @@
 
 #include <thinlayer/base/input_error.h>
 #include <thinlayer/elements/interface_elements.h>
+#include <thinlayer/parallel/distributed_mesh.h>
 
 #include <algorithm>
 #include <cmath>
@@ -15,6 +16,7 @@ namespace thinlayer
 
   void
   InterfaceElements::reinit(
+    const std::vector<FacingSides>                                 &pairs,
     const DoFHandler<2>                                            &dof_handler,
     const Mapping<2>                                               &mapping,
     const Kinematics                                               &kinematics,
@@ -27,22 +29,19 @@ namespace thinlayer
     laws.clear();
     elements.clear();
     points.clear();
-    std::set<types::boundary_id> ids;
     for (const auto &[id, parameters] : curves)
+      laws[id] = std::make_unique<InterfaceLaw>(parameters);
+    rank = partition.rank;
+    for (const FacingSides &pair : pairs)
       {
-        laws[id] = std::make_unique<InterfaceLaw>(parameters);
-        ids.insert(id);
+        check_stiffness(pair, curves.at(pair.curve), materials, parameter_file);
+        // Another rank's element: its points' places along the curve, for
+        // the profiles, but no cells (this rank may not hold them).
+        const bool own =
+          partition.owner.empty() ||
+          partition.owner[pair.plus_cell->active_cell_index()] == rank;
+        add_element(pair, curves.at(pair.curve), own, dof_handler, mapping);
       }
-    if (!ids.empty())
-      for (const FacingSides &pair :
-           pair_facing_sides(dof_handler, ids, parameter_file))
-        {
-          check_stiffness(pair,
-                          curves.at(pair.curve),
-                          materials,
-                          parameter_file);
-          add_element(pair, curves.at(pair.curve), dof_handler, mapping);
-        }
 
     coupled_matrices.clear();
     for (Element &element : elements)
@@ -55,7 +54,6 @@ namespace thinlayer
                                       element.coupled_dofs.size());
       }
 
-    rank = partition.rank;
     element_owner.clear();
     point_owner.clear();
     if (!partition.owner.empty())
@@ -113,6 +111,7 @@ namespace thinlayer
   void
   InterfaceElements::add_element(const FacingSides                &pair,
                                  const InterfaceElementParameters &curve,
+                                 const bool                        own,
                                  const DoFHandler<2>              &dof_handler,
                                  const Mapping<2>                 &mapping)
   {
@@ -145,29 +144,33 @@ namespace thinlayer
         point.weight =
           rule.weight(q) * length * kinematics->area_factor(point.position);
         // The jump: shape values on the plus side less those on the minus
-        // side, at the point's place in each cell.
-        for (const auto &[cell, sign] :
+        // side, at the point's place in each cell (the pair's cells as
+        // @p dof_handler holds them).
+        for (const auto &[serial_cell, sign] :
              {std::pair<DoFHandler<2>::active_cell_iterator, double>{
                 pair.plus_cell, 1.},
               {pair.minus_cell, -1.}})
-          {
-            const dealii::Point<2> unit =
-              mapping.transform_real_to_unit_cell(cell, point.position);
-            cell->get_dof_indices(cell_dofs);
-            for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-              {
-                const double value = fe.shape_value(i, unit);
-                if (std::abs(value) < 1e-12)
-                  continue;
-                const auto [it, inserted] =
-                  local.emplace(cell_dofs[i], element.dofs.size());
-                if (inserted)
-                  element.dofs.push_back(cell_dofs[i]);
-                point.entries.push_back({it->second,
-                                         fe.system_to_component_index(i).first,
-                                         sign * value});
-              }
-          }
+          if (own)
+            {
+              const auto cell = cell_of(dof_handler, serial_cell->id());
+              const dealii::Point<2> unit =
+                mapping.transform_real_to_unit_cell(cell, point.position);
+              cell->get_dof_indices(cell_dofs);
+              for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                {
+                  const double value = fe.shape_value(i, unit);
+                  if (std::abs(value) < 1e-12)
+                    continue;
+                  const auto [it, inserted] =
+                    local.emplace(cell_dofs[i], element.dofs.size());
+                  if (inserted)
+                    element.dofs.push_back(cell_dofs[i]);
+                  point.entries.push_back(
+                    {it->second,
+                     fe.system_to_component_index(i).first,
+                     sign * value});
+                }
+            }
         points.push_back(point);
       }
     elements.push_back(element);

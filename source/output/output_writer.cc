@@ -1,4 +1,6 @@
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
+#include <deal.II/grid/filtered_iterator.h>
 #include <deal.II/numerics/data_out.h>
 
 #include <thinlayer/base/text_format.h>
@@ -9,8 +11,10 @@
 #include <thinlayer/parallel/mpi.h>
 #include <thinlayer/postprocess/cell_fields.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <iomanip>
@@ -111,7 +115,7 @@ namespace thinlayer
     data_out.attach_dof_handler(dof_handler);
     // In-plane displacement as a vector; u_theta (Fourier) as a scalar. At
     // the monitored angle, which for Fourier is where the field is cut.
-    const Vector<double>     u = analysis.displacement_at(theta);
+    const ModeVector         u = analysis.displacement_at(theta);
     std::vector<std::string> displacement_names(dim, "displacement");
     std::vector<DataComponentInterpretation::DataComponentInterpretation>
       interpretation(dim,
@@ -244,16 +248,46 @@ namespace thinlayer
                                     const Analysis<2> &analysis,
                                     const unsigned int slices)
   {
-    // Every rank takes part: each holds the points of its own cells and
-    // its own DoFs.
-    const CellFields                  fields(analysis);
-    const std::vector<Vector<double>> modes = analysis.whole_displacements();
-    if (!writes)
+    // On several ranks every rank writes the view of its own cells.
+    const bool pieces = mpi::n_ranks() > 1;
+    if (!writes && !pieces)
       return;
-    std::ostringstream name;
-    name << "revolved-" << std::setw(4) << std::setfill('0') << step << ".vtu";
-    write_file(name.str(), revolved_view_vtu(analysis, fields, modes, slices));
-    revolved_records.emplace_back(load_factor, name.str());
+    const CellFields   fields(analysis);
+    const RevolvedView view =
+      revolved_view(analysis, fields, analysis.displacements(), slices);
+    const std::vector<
+      std::tuple<unsigned int,
+                 unsigned int,
+                 std::string,
+                 DataComponentInterpretation::DataComponentInterpretation>>
+                       vectors = {std::make_tuple(
+        0u,
+        2u,
+        std::string("displacement"),
+        DataComponentInterpretation::component_is_part_of_vector)};
+    std::ostringstream vtu;
+    DataOutBase::write_vtu(
+      view.patches, view.names, vectors, DataOutBase::VtkFlags(), vtu);
+
+    std::ostringstream base;
+    base << "revolved-" << std::setw(4) << std::setfill('0') << step;
+    std::string record = base.str() + ".vtu";
+    if (pieces)
+      {
+        std::vector<std::string> piece_names;
+        for (unsigned int r = 0; r < mpi::n_ranks(); ++r)
+          piece_names.push_back(base.str() + "." +
+                                Utilities::int_to_string(r, 4) + ".vtu");
+        write_piece(piece_names[mpi::rank()], vtu.str());
+        record = base.str() + ".pvtu";
+        std::ostringstream pvtu;
+        DataOutBase::write_pvtu_record(
+          pvtu, piece_names, view.names, vectors, DataOutBase::VtkFlags());
+        write_file(record, pvtu.str());
+      }
+    else
+      write_file(record, vtu.str());
+    revolved_records.emplace_back(load_factor, record);
     std::ostringstream pvd;
     DataOutBase::write_pvd_record(pvd, revolved_records);
     write_file("revolved.pvd", pvd.str());
@@ -265,36 +299,63 @@ namespace thinlayer
   OutputWriter::write_displacements(const Analysis<dim> &analysis,
                                     const double         theta) const
   {
-    // Every rank takes part: each holds its own DoFs.
-    const Vector<double> u  = analysis.displacement_at(theta);
-    const Vector<double> du = analysis.displacement_at(theta, true);
-    if (!writes)
-      return;
-    const auto &dof_handler = analysis.get_dof_handler();
-    const bool  fourier     = analysis.get_kinematics().is_fourier();
+    // Every rank takes part: each writes the rows of its own cells.
+    const ModeVector u           = analysis.displacement_at(theta);
+    const ModeVector du          = analysis.displacement_at(theta, true);
+    const auto      &dof_handler = analysis.get_dof_handler();
+    const auto      &tria        = dof_handler.get_triangulation();
+    const bool       fourier     = analysis.get_kinematics().is_fourier();
     // The Cartesian components in the cut at theta: x = u_r cos(theta) -
     // u_theta sin(theta) for Fourier, and y along the axis.
-    const auto x_component = [&](const Vector<double>         &v,
+    const auto x_component = [&](const ModeVector             &v,
                                  const types::global_dof_index r,
                                  const types::global_dof_index t) {
       return fourier ? v[r] * std::cos(theta) - v[t] * std::sin(theta) : v[r];
     };
-    std::vector<bool>  written(dof_handler.get_triangulation().n_vertices());
-    std::ostringstream csv;
-    csv << std::setprecision(10) << "x,y,u_x,u_y,du_x,du_y\n";
-    for (const auto &cell : dof_handler.active_cell_iterators())
+
+    // A vertex's row comes where the whole mesh's cells, in order, first
+    // meet it: at the lowest (cell, corner) among the cells around it,
+    // all of which a rank holds for the vertices of its own cells.
+    using Key = std::pair<std::uint64_t, unsigned int>;
+    std::vector<Key> first(tria.n_vertices(),
+                           Key(std::numeric_limits<std::uint64_t>::max(), 0));
+    for (const auto &cell : tria.active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const unsigned int v : cell->vertex_indices())
+          first[cell->vertex_index(v)] =
+            std::min(first[cell->vertex_index(v)],
+                     Key(cell->id().get_coarse_cell_id(), v));
+    std::vector<std::pair<Key, std::string>> rows;
+    for (const auto &cell : dof_handler.active_cell_iterators() |
+                              IteratorFilters::LocallyOwnedCell())
       for (const unsigned int v : cell->vertex_indices())
-        if (!written[cell->vertex_index(v)])
+        if (first[cell->vertex_index(v)] ==
+            Key(cell->id().get_coarse_cell_id(), v))
           {
-            written[cell->vertex_index(v)] = true;
-            const auto r                   = cell->vertex_dof_index(v, 0);
-            const auto z                   = cell->vertex_dof_index(v, 1);
-            const auto t = fourier ? cell->vertex_dof_index(v, 2) : r;
-            csv << cell->vertex(v)[0] << ',' << cell->vertex(v)[1] << ','
-                << x_component(u, r, t) << ',' << u[z] << ','
-                << x_component(du, r, t) << ',' << du[z] << '\n';
+            const auto         r = cell->vertex_dof_index(v, 0);
+            const auto         z = cell->vertex_dof_index(v, 1);
+            const auto         t = fourier ? cell->vertex_dof_index(v, 2) : r;
+            std::ostringstream row;
+            row << std::setprecision(10) << cell->vertex(v)[0] << ','
+                << cell->vertex(v)[1] << ',' << x_component(u, r, t) << ','
+                << u[z] << ',' << x_component(du, r, t) << ',' << du[z] << '\n';
+            rows.emplace_back(first[cell->vertex_index(v)], row.str());
           }
-    write_file("displacements.csv", csv.str());
+    if (mpi::n_ranks() > 1)
+      {
+        const auto every_rank =
+          Utilities::MPI::gather(mpi::communicator(), rows, 0);
+        rows.clear();
+        for (const auto &part : every_rank)
+          rows.insert(rows.end(), part.begin(), part.end());
+      }
+    if (!writes)
+      return;
+    std::sort(rows.begin(), rows.end());
+    std::string csv = "x,y,u_x,u_y,du_x,du_y\n";
+    for (const auto &row : rows)
+      csv += row.second;
+    write_file("displacements.csv", csv);
   }
 
 

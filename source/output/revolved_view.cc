@@ -1,4 +1,5 @@
 #include <deal.II/base/data_out_base.h>
+#include <deal.II/grid/filtered_iterator.h>
 
 #include <thinlayer/output/revolved_view.h>
 
@@ -27,10 +28,10 @@ namespace thinlayer
 
 
   RevolvedView
-  revolved_view(const Analysis<2>                 &analysis,
-                const CellFields                  &fields,
-                const std::vector<Vector<double>> &modes,
-                const unsigned int                 slices)
+  revolved_view(const Analysis<2> &analysis,
+                const CellFields  &fields,
+                const ModeVectors &modes,
+                const unsigned int slices)
   {
     const Kinematics &kinematics  = analysis.get_kinematics();
     const auto       &dof_handler = analysis.get_dof_handler();
@@ -61,8 +62,8 @@ namespace thinlayer
                                   !kinematics.is_antisymmetric(),
                                   !kinematics.is_antisymmetric()};
 
-    std::vector<double>         angles(slices + 1);
-    std::vector<Vector<double>> displacement(slices + 1);
+    std::vector<double>     angles(slices + 1);
+    std::vector<ModeVector> displacement(slices + 1);
     for (unsigned int k = 0; k <= slices; ++k)
       {
         angles[k]       = 2 * numbers::PI * k / slices;
@@ -76,7 +77,8 @@ namespace thinlayer
       {
         const auto [s, mirrored] =
           nearest_station(kinematics, 0.5 * (angles[k] + angles[k + 1]));
-        for (const auto &cell : dof_handler.active_cell_iterators())
+        for (const auto &cell : dof_handler.active_cell_iterators() |
+                                  IteratorFilters::LocallyOwnedCell())
           {
             const unsigned int       c = cell->active_cell_index();
             DataOutBase::Patch<3, 3> patch;
@@ -88,14 +90,14 @@ namespace thinlayer
             for (unsigned int t = 0; t < 2; ++t)
               for (unsigned int v = 0; v < 4; ++v)
                 {
-                  const unsigned int    p     = v + 4 * t;
-                  const double          theta = angles[k + t];
-                  const Vector<double> &u     = displacement[k + t];
-                  const double          r     = cell->vertex(v)[0];
-                  const double          u_r   = u[cell->vertex_dof_index(v, 0)];
-                  const double          u_z   = u[cell->vertex_dof_index(v, 1)];
-                  const double u_theta        = u[cell->vertex_dof_index(v, 2)];
-                  patch.vertices[p]           = Point<3>(r * std::cos(theta),
+                  const unsigned int p       = v + 4 * t;
+                  const double       theta   = angles[k + t];
+                  const ModeVector  &u       = displacement[k + t];
+                  const double       r       = cell->vertex(v)[0];
+                  const double       u_r     = u[cell->vertex_dof_index(v, 0)];
+                  const double       u_z     = u[cell->vertex_dof_index(v, 1)];
+                  const double       u_theta = u[cell->vertex_dof_index(v, 2)];
+                  patch.vertices[p]          = Point<3>(r * std::cos(theta),
                                                r * std::sin(theta),
                                                cell->vertex(v)[1]);
                   patch.data(0, p) =
@@ -117,27 +119,5 @@ namespace thinlayer
       }
 
     return view;
-  }
-
-
-  std::string
-  revolved_view_vtu(const Analysis<2>                 &analysis,
-                    const CellFields                  &fields,
-                    const std::vector<Vector<double>> &modes,
-                    const unsigned int                 slices)
-  {
-    const RevolvedView view = revolved_view(analysis, fields, modes, slices);
-    std::ostringstream vtu;
-    DataOutBase::write_vtu(
-      view.patches,
-      view.names,
-      {std::make_tuple(
-        0u,
-        2u,
-        std::string("displacement"),
-        DataComponentInterpretation::component_is_part_of_vector)},
-      DataOutBase::VtkFlags(),
-      vtu);
-    return vtu.str();
   }
 } // namespace thinlayer

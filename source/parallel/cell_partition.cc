@@ -1,4 +1,3 @@
-#include <deal.II/dofs/dof_accessor.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_pattern.h>
@@ -79,40 +78,6 @@ namespace thinlayer
   }
 
 
-  template <int dim>
-  std::vector<IndexSet>
-  number_dofs_by_rank(DoFHandler<dim>     &dof_handler,
-                      const CellPartition &partition)
-  {
-    const types::global_dof_index        n       = dof_handler.n_dofs();
-    const unsigned int                   n_ranks = partition.n_ranks;
-    std::vector<unsigned int>            rank(n, numbers::invalid_unsigned_int);
-    std::vector<types::global_dof_index> dofs;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        dofs.resize(cell->get_fe().n_dofs_per_cell());
-        cell->get_dof_indices(dofs);
-        const unsigned int r = partition.owner[cell->active_cell_index()];
-        for (const auto i : dofs)
-          rank[i] = std::min(rank[i], r);
-      }
-    std::vector<types::global_dof_index> first(n_ranks + 1, 0);
-    for (const unsigned int r : rank)
-      ++first[r + 1];
-    for (unsigned int r = 0; r < n_ranks; ++r)
-      first[r + 1] += first[r];
-    std::vector<types::global_dof_index> new_number(n), next(first);
-    for (types::global_dof_index i = 0; i < n; ++i)
-      new_number[i] = next[rank[i]]++;
-    dof_handler.renumber_dofs(new_number);
-
-    std::vector<IndexSet> owned(n_ranks, IndexSet(n));
-    for (unsigned int r = 0; r < n_ranks; ++r)
-      owned[r].add_range(first[r], first[r + 1]);
-    return owned;
-  }
-
-
   template CellPartition
   partition_cells(const Triangulation<2> &,
                   const unsigned int,
@@ -123,8 +88,4 @@ namespace thinlayer
                   const unsigned int,
                   const unsigned int,
                   const std::vector<std::pair<unsigned int, unsigned int>> &);
-  template std::vector<IndexSet>
-  number_dofs_by_rank(DoFHandler<2> &, const CellPartition &);
-  template std::vector<IndexSet>
-  number_dofs_by_rank(DoFHandler<3> &, const CellPartition &);
 } // namespace thinlayer

@@ -1,5 +1,4 @@
 #include <thinlayer/materials/elasticity.h>
-#include <thinlayer/parallel/mpi.h>
 #include <thinlayer/postprocess/cell_fields.h>
 
 #include <cmath>
@@ -26,7 +25,7 @@ namespace thinlayer
       {
         const unsigned int c = cell->active_cell_index();
         material[c]          = cell->material_id();
-        // Another rank's points: their averages come from it.
+        // Another rank's points: it writes their cell.
         if (!analysis.cells().owns(c))
           continue;
         const MaterialLaw &law = analysis.material_law(c);
@@ -52,15 +51,6 @@ namespace thinlayer
                     std::max(yield_ratio[s][c], law.yield_ratio(state.stress));
               }
           }
-      }
-    // Each cell's averages are its owner's, the others' zeros.
-    for (unsigned int s = 0; s < n_s; ++s)
-      {
-        for (auto &component : stress[s])
-          mpi::sum(component);
-        mpi::sum(equivalent[s]);
-        mpi::sum(plastic_strain[s]);
-        mpi::sum(yield_ratio[s]);
       }
   }
 

@@ -3,6 +3,7 @@
 
 #include <thinlayer/base/input_error.h>
 #include <thinlayer/base/text_format.h>
+#include <thinlayer/parallel/distributed_mesh.h>
 #include <thinlayer/postprocess/layer_profile.h>
 
 #include <algorithm>
@@ -65,12 +66,13 @@ namespace thinlayer
                              const std::string       &parameter_file)
     : material_id(material_id)
   {
-    const auto  &dof_handler = analysis.get_dof_handler();
-    const auto  &tria        = dof_handler.get_triangulation();
-    const double tolerance =
-      1e-9 * GridTools::diameter(static_cast<const Triangulation<2> &>(tria));
-    const std::string entry = "Layers/Material ids";
-    const std::string name  = "material id " + std::to_string(material_id);
+    // The layer is chained on the whole mesh (its runs may cross ranks);
+    // each rank then evaluates the samples of its own cells.
+    const Triangulation<2> &tria = analysis.whole_mesh();
+    const DoFHandler<2>     dof_handler(tria);
+    const double            tolerance = 1e-9 * GridTools::diameter(tria);
+    const std::string       entry     = "Layers/Material ids";
+    const std::string       name = "material id " + std::to_string(material_id);
 
     // Each layer cell's long direction: the one in which its layer
     // neighbours lie (the chain runs through the short faces), or for a
@@ -155,6 +157,15 @@ namespace thinlayer
           }
         ++run;
       }
+
+    // The samples' cells as the analysis holds them, where this rank's.
+    for (Sample &sample : samples)
+      {
+        sample.own = analysis.owns_whole_cell(sample.cell->active_cell_index());
+        sample.cell = sample.own
+                        ? cell_of(analysis.get_dof_handler(), sample.cell->id())
+                        : CellIterator();
+      }
   }
 
 
@@ -234,13 +245,13 @@ namespace thinlayer
   {
     const Kinematics       &kinematics = analysis.get_kinematics();
     const double            theta      = kinematics.station_angle(station);
-    const Vector<double>    u          = analysis.displacement_at(theta);
-    const Vector<double>    du         = analysis.displacement_at(theta, true);
+    const ModeVector        u          = analysis.displacement_at(theta);
+    const ModeVector        du         = analysis.displacement_at(theta, true);
     const FiniteElement<2> &fe         = analysis.get_dof_handler().get_fe();
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
 
     // The face-to-face difference of @p v at a sample, 3 components.
-    const auto difference = [&](const Vector<double> &v, const Sample &s) {
+    const auto difference = [&](const ModeVector &v, const Sample &s) {
       Tensor<1, 3> d;
       for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
         {
@@ -256,7 +267,7 @@ namespace thinlayer
     for (const Sample &s : samples)
       {
         // The points of another rank's cell: their values come from it.
-        if (!analysis.cells().owns(s.cell->active_cell_index()))
+        if (!s.own)
           {
             values.emplace_back();
             continue;
@@ -327,14 +338,15 @@ namespace thinlayer
     std::vector<unsigned int>          count(n_cells);
     const std::vector<InterfaceValues> values = evaluate(analysis, station);
     for (unsigned int k = 0; k < samples.size(); ++k)
-      {
-        const unsigned int c = samples[k].cell->active_cell_index();
-        fields[0][c] += values[k].slip;
-        fields[1][c] += values[k].opening;
-        fields[2][c] += values[k].shear_traction;
-        fields[3][c] += values[k].normal_traction;
-        ++count[c];
-      }
+      if (samples[k].own)
+        {
+          const unsigned int c = samples[k].cell->active_cell_index();
+          fields[0][c] += values[k].slip;
+          fields[1][c] += values[k].opening;
+          fields[2][c] += values[k].shear_traction;
+          fields[3][c] += values[k].normal_traction;
+          ++count[c];
+        }
     for (auto &field : fields)
       for (unsigned int c = 0; c < n_cells; ++c)
         if (count[c] > 0)

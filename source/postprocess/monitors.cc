@@ -1,5 +1,6 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/filtered_iterator.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/numerics/vector_tools.h>
 
@@ -26,17 +27,43 @@ namespace thinlayer
         Point<dim> x;
         for (unsigned int d = 0; d < dim; ++d)
           x[d] = parameters.displacement_point[d];
-        bool inside = true;
+        // The cell this rank evaluates the point in, if it owns one that
+        // holds it; the lowest such rank reports it.
         try
           {
-            inside = GridTools::find_active_cell_around_point(
-                       analysis.get_mapping(), analysis.get_dof_handler(), x)
-                       .first.state() == IteratorState::valid;
+            const auto found = GridTools::find_active_cell_around_point(
+              analysis.get_mapping(), analysis.get_dof_handler(), x);
+            if (found.first.state() == IteratorState::valid)
+              {
+                if (found.first->is_locally_owned())
+                  point_cell = found;
+                else
+                  for (const auto &other :
+                       GridTools::find_all_active_cells_around_point(
+                         analysis.get_mapping(),
+                         analysis.get_dof_handler(),
+                         x,
+                         1e-10,
+                         found))
+                    if (other.first->is_locally_owned())
+                      {
+                        point_cell = other;
+                        break;
+                      }
+              }
           }
         catch (const std::exception &)
           {
-            inside = false;
+            // Not in this rank's part of the mesh.
           }
+        const unsigned int holder =
+          Utilities::MPI::min(point_cell.first.state() == IteratorState::valid
+                                ? mpi::rank()
+                                : mpi::n_ranks(),
+                              mpi::communicator());
+        if (holder != mpi::rank())
+          point_cell.first = typename DoFHandler<dim>::active_cell_iterator();
+        const bool inside = holder < mpi::n_ranks();
         if (!inside)
           {
             std::ostringstream point;
@@ -53,7 +80,8 @@ namespace thinlayer
       return;
     const auto        &dof_handler  = analysis.get_dof_handler();
     const unsigned int n_components = analysis.get_kinematics().n_components();
-    std::vector<Point<dim>> points(dof_handler.n_dofs());
+    // The points of the DoFs this rank holds: its own among them.
+    std::map<types::global_dof_index, Point<dim>> points;
     DoFTools::map_dofs_to_support_points(analysis.get_mapping(),
                                          dof_handler,
                                          points);
@@ -64,7 +92,8 @@ namespace thinlayer
         mask[c] = true;
         for (const auto dof : DoFTools::extract_boundary_dofs(
                dof_handler, ComponentMask(mask), {parameters.load_boundary_id}))
-          reaction_dofs[c].emplace_back(dof, points[dof]);
+          if (dof_handler.locally_owned_dofs().is_element(dof))
+            reaction_dofs[c].emplace_back(dof, points.at(dof));
       }
   }
 
@@ -129,8 +158,7 @@ namespace thinlayer
     // Each rank's own DoFs.
     double sum = 0;
     for (const auto &[dof, point] : reaction_dofs[component])
-      if (forces.in_local_range(dof))
-        sum += forces[dof] * (weight_by < 0 ? 1. : point[weight_by]);
+      sum += forces[dof] * (weight_by < 0 ? 1. : point[weight_by]);
     return mpi::sum(sum);
   }
 
@@ -189,11 +217,11 @@ namespace thinlayer
   DisplacementMeasure
   Monitors<dim>::displacement() const
   {
-    const double         s          = parameters.displacement_scale;
-    const double         theta      = parameters.displacement_angle;
-    const Kinematics    &kinematics = analysis.get_kinematics();
-    const auto          &fe         = analysis.get_dof_handler().get_fe();
-    const Vector<double> u          = analysis.displacement_at(theta);
+    const double      s          = parameters.displacement_scale;
+    const double      theta      = parameters.displacement_angle;
+    const Kinematics &kinematics = analysis.get_kinematics();
+    const auto       &fe         = analysis.get_dof_handler().get_fe();
+    const ModeVector  u          = analysis.displacement_at(theta);
     // The monitored Cartesian component from the nodal components: for
     // Fourier x = u_r cos(theta) - u_theta sin(theta), y = u_z.
     const auto component =
@@ -208,12 +236,23 @@ namespace thinlayer
     if (parameters.displacement_measure ==
         MonitorParameters::DisplacementMeasure::point)
       {
-        Point<dim> x;
-        for (unsigned int d = 0; d < dim; ++d)
-          x[d] = parameters.displacement_point[d];
+        // As VectorTools::point_value() evaluates, on the rank that holds
+        // the point.
         Vector<double> value(kinematics.n_components());
-        VectorTools::point_value(
-          analysis.get_mapping(), analysis.get_dof_handler(), u, x, value);
+        if (point_cell.first.state() == IteratorState::valid)
+          {
+            FEValues<dim> fe_values(analysis.get_mapping(),
+                                    fe,
+                                    Quadrature<dim>(
+                                      GeometryInfo<dim>::project_to_unit_cell(
+                                        point_cell.second)),
+                                    update_values);
+            fe_values.reinit(point_cell.first);
+            std::vector<Vector<double>> values(1, value);
+            fe_values.get_function_values(u, values);
+            value = values[0];
+          }
+        mpi::sum(value);
         const double v =
           component(value[0], value[1], value.size() > 2 ? value[2] : 0.);
         return {s * v, s * v, s * v};
@@ -231,7 +270,8 @@ namespace thinlayer
     double min        = std::numeric_limits<double>::max();
     double max        = std::numeric_limits<double>::lowest();
     bool   non_finite = false;
-    for (const auto &cell : analysis.get_dof_handler().active_cell_iterators())
+    for (const auto &cell : analysis.get_dof_handler().active_cell_iterators() |
+                              IteratorFilters::LocallyOwnedCell())
       for (const auto f : cell->face_indices())
         if (cell->face(f)->at_boundary() &&
             cell->face(f)->boundary_id() == parameters.displacement_boundary_id)
@@ -264,6 +304,15 @@ namespace thinlayer
                 non_finite = non_finite || !std::isfinite(value);
               }
           }
+    // Each rank's faces.
+    if (mpi::n_ranks() > 1)
+      {
+        integral   = mpi::sum(integral);
+        length     = mpi::sum(length);
+        min        = -mpi::max(-min);
+        max        = mpi::max(max);
+        non_finite = mpi::sum(non_finite ? 1u : 0u) > 0;
+      }
     // std::min and std::max pass a NaN by: say so, rather than report the
     // starting values as extremes.
     if (non_finite || !(min <= max))

@@ -6,6 +6,7 @@
 #include <thinlayer/solvers/linear_solver_failure.h>
 #include <thinlayer/solvers/row_distribution.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <stdexcept>
 #include <vector>
@@ -110,20 +111,29 @@ namespace thinlayer
     const unsigned  me    = mpi::rank();
     const IndexSet &owned = owned_per_rank[me];
     solver->rows.reinit(owned_per_rank, comm);
-    const auto first = owned.n_elements() > 0 ? owned.nth_index_in_set(0) : 0;
 
     // The near-null space, orthonormalised (PETSc asks for it) by modified
-    // Gram-Schmidt on the whole vectors, the same on every rank.
+    // Gram-Schmidt, each rank on its rows, the products summed.
+    // deal.II's vector operations refuse empty vectors: a rank may own
+    // no rows.
+    const bool rows = owned.n_elements() > 0;
+    const auto dot  = [rows](const Vector<double> &a, const Vector<double> &b) {
+      return mpi::sum(rows ? a * b : 0.);
+    };
     std::vector<Vector<double>> basis;
     for (const Vector<double> &v : near_null_space)
       {
         Vector<double> w = v;
         for (const Vector<double> &b : basis)
-          w.add(-(w * b), b);
-        const double norm = w.l2_norm();
-        if (norm > 1e-10 * v.l2_norm() && norm > 0)
+          if (rows)
+            w.add(-dot(w, b), b);
+          else
+            dot(w, b);
+        const double norm = std::sqrt(dot(w, w));
+        if (norm > 1e-10 * std::sqrt(dot(v, v)) && norm > 0)
           {
-            w /= norm;
+            if (rows)
+              w /= norm;
             basis.push_back(std::move(w));
           }
       }
@@ -134,7 +144,7 @@ namespace thinlayer
         PetscScalar *x;
         VecGetArray(vecs[k], &x);
         for (unsigned int i = 0; i < owned.n_elements(); ++i)
-          x[i] = basis[k][first + i];
+          x[i] = basis[k][i];
         VecRestoreArray(vecs[k], &x);
       }
     solver->matrix      = blocked_copy(matrix, block_size);

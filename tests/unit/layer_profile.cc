@@ -17,7 +17,7 @@
 // Also: one run along the band, from the left, its arc length increasing
 // through the band's length; and the cell averages of the fields
 // (CellFields) of every cell the uniform stress, sigma_zz = nu (sigma_xx +
-// sigma_yy) in plane strain.
+// sigma_yy) in plane strain, each cell's on the rank that owns it.
 // Run on 2 ranks (layer_profile.mpirun=2.output), where each rank holds
 // the points of its own cells, the same truths hold for the values every
 // rank receives; rank 0 prints, and says over how many ranks the band's
@@ -149,13 +149,17 @@ namespace
 
         // Every cell's averages: sigma_yy = -1, sigma_zz as given, the
         // other components zero.
+        // Each rank has its own cells' averages.
         const thinlayer::CellFields fields(analysis);
         const double                exact_stress[4] = {0, -1, sigma_zz, 0};
         double                      field_error     = 0;
         for (unsigned int k = 0; k < 4; ++k)
-          for (const double value : fields.stress[0][k])
-            field_error =
-              std::max(field_error, std::abs(value - exact_stress[k]));
+          for (unsigned int c = 0; c < fields.stress[0][k].size(); ++c)
+            if (analysis.cells().owns(c))
+              field_error =
+                std::max(field_error,
+                         std::abs(fields.stress[0][k][c] - exact_stress[k]));
+        field_error = thinlayer::mpi::max(field_error);
         std::printf("  every cell's average stress (0, -1, %.2f, 0): %s\n",
                     sigma_zz,
                     field_error < 1e-8 ? "yes" : "NO");

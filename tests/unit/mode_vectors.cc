@@ -9,8 +9,9 @@
 // 2. whole() gives every rank each DoF's value from its owner.
 // 3. GhostValues: while it lives every ghost holds its owner's value;
 //    afterwards the ghosts are zero again.
-// 4. condense() and distribute() on the distributed vector give what
-//    deal.II's AffineConstraints gives on the whole vector on one process,
+// 4. condense() and distribute() on the distributed vector (each rank
+//    keeping the lines of the DoFs it holds) give what deal.II's
+//    AffineConstraints, with every rank's lines, gives on the whole vector,
 //    to 1e-14 of the vector's largest entry (the contributions a line adds
 //    to another rank's DoF are summed in another order).
 // 5. The elastic solve of the distributed right-hand side has the residual
@@ -51,6 +52,37 @@ namespace
   {
     for (unsigned int k = 0; k < v.locally_owned_size(); ++k)
       v.local_element(k) = value_of(v.get_partitioner()->local_to_global(k));
+  }
+
+
+  /**
+   * The lines of every DoF, each from the rank that owns it: each rank
+   * keeps the lines of the DoFs it holds only, and deal.II's operations on
+   * a whole vector need them all.
+   */
+  AffineConstraints<double>
+  every_ranks_lines(const AffineConstraints<double> &constraints,
+                    const DoFHandler<2>             &dof_handler)
+  {
+    using Line = std::pair<
+      types::global_dof_index,
+      std::pair<std::vector<std::pair<types::global_dof_index, double>>,
+                double>>;
+    std::vector<Line> own;
+    for (const auto &line : constraints.get_lines())
+      if (dof_handler.locally_owned_dofs().is_element(line.index))
+        own.push_back({line.index, {line.entries, line.inhomogeneity}});
+    AffineConstraints<double> whole;
+    for (const auto &part :
+         Utilities::MPI::all_gather(mpi::communicator(), own))
+      for (const auto &[dof, line] : part)
+        {
+          whole.add_line(dof);
+          whole.add_entries(dof, line.first);
+          whole.set_inhomogeneity(dof, line.second);
+        }
+    whole.close();
+    return whole;
   }
 
 
@@ -148,18 +180,20 @@ main(int argc, char **argv)
       {
         const AffineConstraints<double> &constraints =
           analysis.mode_system(m).constraints;
+        const AffineConstraints<double> whole_constraints =
+          every_ranks_lines(constraints, analysis.get_dof_handler());
         ModeVector &v = vectors[m];
         fill(v);
         Vector<double> serial = analysis.whole(v);
         scale                 = std::max(scale, serial.linfty_norm());
-        constraints.condense(serial);
+        whole_constraints.condense(serial);
         condense(constraints, v);
         condensed =
           std::max(condensed, largest_difference(analysis.whole(v), serial));
 
         fill(v);
         serial = analysis.whole(v);
-        constraints.distribute(serial);
+        whole_constraints.distribute(serial);
         distribute(constraints, v);
         distributed =
           std::max(distributed, largest_difference(analysis.whole(v), serial));

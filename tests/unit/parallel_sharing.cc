@@ -3,8 +3,11 @@
 // 1. The partition gives every cell one rank, the same on every rank, and
 //    each rank a share within 20% of an equal one; on one rank every cell
 //    is rank 0's.
-//    The DoFs numbered rank by rank: every DoF in one rank's set, the sets
-//    contiguous ranges in rank order, each DoF on a cell of its rank.
+//    The mesh split by it (distribute_mesh()): each rank holds its own
+//    cells and the cells that share a vertex with them, with their
+//    material ids, CellIds and owners (partition_of()). Its DoFs numbered
+//    rank by rank: the sets contiguous ranges in rank order, each DoF on a
+//    cell of its rank; cell_of() finds a cell by its CellId.
 //    Joined cells (the sides of zero-thickness elements) share a rank,
 //    directly or through another, also when there are fewer cells than
 //    ranks.
@@ -25,6 +28,7 @@
 #include <thinlayer/base/input_error.h>
 #include <thinlayer/elements/interface_values.h>
 #include <thinlayer/parallel/cell_partition.h>
+#include <thinlayer/parallel/distributed_mesh.h>
 #include <thinlayer/parallel/mpi.h>
 
 #include <algorithm>
@@ -72,10 +76,59 @@ main(int argc, char **argv)
                               "every rank's share within 20% of an equal one");
     truths::expect_everywhere(partition.owned_cells().size() == count[me],
                               "owned_cells() lists this rank's cells");
-    DoFHandler<2> dof_handler(tria);
+    // The split mesh: each rank's own cells those the partition gives it,
+    // its ghosts every other cell that shares a vertex with one of them,
+    // material ids and CellIds kept.
+    for (const auto &cell : tria.active_cell_iterators())
+      cell->set_material_id(cell->active_cell_index() % 7);
+    const auto        part = distribute_mesh(tria, partition);
+    std::vector<bool> near_own(tria.n_active_cells(), false);
+    for (const auto &cell : tria.active_cell_iterators())
+      if (partition.owner[cell->active_cell_index()] == me)
+        for (const unsigned int v : cell->vertex_indices())
+          for (const auto &other : tria.active_cell_iterators())
+            for (const unsigned int w : other->vertex_indices())
+              if (other->vertex_index(w) == cell->vertex_index(v))
+                near_own[other->active_cell_index()] = true;
+    bool         same_cells = true, same_ids = true;
+    unsigned int n_own = 0, n_held = 0;
+    for (const auto &cell : part->active_cell_iterators())
+      if (!cell->is_artificial())
+        {
+          const unsigned int c = cell->id().get_coarse_cell_id();
+          ++n_held;
+          n_own += cell->is_locally_owned() ? 1 : 0;
+          same_cells =
+            same_cells && near_own[c] &&
+            cell->subdomain_id() == partition.owner[c] &&
+            cell->center().distance(
+              tria.create_cell_iterator(cell->id())->center()) < 1e-12;
+          same_ids = same_ids && cell->material_id() == c % 7;
+        }
+    truths::expect_everywhere(
+      same_cells && n_own == count[me] &&
+        n_held == static_cast<unsigned int>(
+                    std::count(near_own.begin(), near_own.end(), true)),
+      "the split mesh: the rank's own cells and those that share a vertex "
+      "with them");
+    truths::expect_everywhere(same_ids, "material ids kept");
+    const CellPartition held   = partition_of(*part, n, me);
+    bool                agrees = held.owned_cells().size() == count[me];
+    for (const auto &cell : part->active_cell_iterators())
+      agrees =
+        agrees && held.owner[cell->active_cell_index()] ==
+                    (cell->is_artificial() ? numbers::invalid_unsigned_int
+                                           : cell->subdomain_id());
+    truths::expect_everywhere(agrees,
+                              "partition_of() gives the held cells' owners");
+
+    // The DoFs of the split mesh: each rank's one range, in rank order, as
+    // the ModeVectors and the distributed matrices take them.
+    DoFHandler<2> dof_handler(*part);
     dof_handler.distribute_dofs(FESystem<2>(FE_Q<2>(2), 2));
     const std::vector<IndexSet> owned =
-      number_dofs_by_rank(dof_handler, partition);
+      Utilities::MPI::all_gather(mpi::communicator(),
+                                 dof_handler.locally_owned_dofs());
     types::global_dof_index next       = 0;
     bool                    contiguous = owned.size() == n;
     for (const IndexSet &set : owned)
@@ -86,20 +139,22 @@ main(int argc, char **argv)
       }
     truths::expect_everywhere(contiguous && next == dof_handler.n_dofs(),
                               "the DoFs of each rank one range, in rank order");
-    std::vector<bool> on_own_cell(dof_handler.n_dofs(), false);
+    IndexSet                             on_own_cell(dof_handler.n_dofs());
     std::vector<types::global_dof_index> dofs(
       dof_handler.get_fe().n_dofs_per_cell());
+    bool found = true;
     for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        cell->get_dof_indices(dofs);
-        for (const auto i : dofs)
-          if (owned[partition.owner[cell->active_cell_index()]].is_element(i))
-            on_own_cell[i] = true;
-      }
-    truths::expect_everywhere(std::all_of(on_own_cell.begin(),
-                                          on_own_cell.end(),
-                                          [](const bool b) { return b; }),
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(dofs);
+          on_own_cell.add_indices(dofs.begin(), dofs.end());
+          found = found && cell_of(dof_handler, cell->id()) == cell;
+        }
+    IndexSet elsewhere = owned[me];
+    elsewhere.subtract_set(on_own_cell);
+    truths::expect_everywhere(elsewhere.n_elements() == 0,
                               "every DoF on a cell of its rank");
+    truths::expect_everywhere(found, "cell_of() finds a cell by its CellId");
     const CellPartition one = partition_cells(tria, 1, 0);
     truths::expect_everywhere(std::all_of(one.owner.begin(),
                                           one.owner.end(),

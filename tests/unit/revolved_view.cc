@@ -38,7 +38,7 @@ namespace
           const thinlayer::Parameters &) {
         view = thinlayer::revolved_view(analysis,
                                         thinlayer::CellFields(analysis),
-                                        analysis.whole_displacements(),
+                                        analysis.displacements(),
                                         slices);
       });
     return view;

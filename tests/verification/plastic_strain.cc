@@ -37,7 +37,7 @@ namespace
                           dof_handler.get_fe(),
                           quadrature,
                           update_gradients);
-    const Vector<double>                   u = analysis.displacement_at(0);
+    const thinlayer::ModeVector            u = analysis.displacement_at(0);
     std::vector<std::vector<Tensor<1, 2>>> gradients(
       quadrature.size(), std::vector<Tensor<1, 2>>(2));
     double worst = 0, largest = 0;

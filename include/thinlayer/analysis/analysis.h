@@ -3,6 +3,7 @@
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/distributed/fully_distributed_tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q.h>
@@ -11,6 +12,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <thinlayer/analysis/mode_system.h>
+#include <thinlayer/analysis/rigid_body_modes.h>
 #include <thinlayer/discretisation/boundary_data.h>
 #include <thinlayer/discretisation/kinematics.h>
 #include <thinlayer/discretisation/mode_vectors.h>
@@ -42,18 +44,22 @@ namespace thinlayer
    *   the points. The analysis loops over them.
    *
    * On many ranks (thinlayer::mpi) every rank follows the same steps on
-   * its part: the cells are partitioned (partition_cells()), each rank
-   * owns a contiguous range of DoFs (number_dofs_by_rank()) and holds the
-   * point states of its own cells. The state vectors are ModeVectors:
-   * each rank stores its own DoFs' entries and, as ghosts, those of the
-   * DoFs its cells, elements and constraint lines touch. The point rules
-   * read the increments' ghosts and add their forces into ghosts, which
-   * compress() sums into the owners; norms and dot products reduce over
-   * the ranks. The elastic stiffness is distributed by rows and factorised
-   * by MUMPS (ModeSystem). Still whole on every rank: the mesh, the
-   * DoFHandler and the constraints (the lines a rank owns are the ones it
-   * uses); what reads DoFs anywhere (the outputs, the displacement
-   * monitor) gathers a vector whole (whole()).
+   * its part. The mesh as read is partitioned (partition_cells(), the two
+   * cells of a zero-thickness element on one rank) and split: each rank
+   * keeps its cells and one layer of ghost cells (distribute_mesh(), a
+   * fully distributed triangulation), and the DoFHandler numbers each
+   * rank's DoFs as one range, in rank order. Each rank holds the point
+   * states of its own cells and the constraint lines of the DoFs it holds.
+   * The state vectors are ModeVectors: each rank stores its own DoFs'
+   * entries and, as ghosts, those of the DoFs its cells, elements and
+   * constraint lines touch. The point rules read the increments' ghosts
+   * and add their forces into ghosts, which compress() sums into the
+   * owners; norms and dot products reduce over the ranks. The elastic
+   * stiffness is distributed by rows and factorised by MUMPS (ModeSystem).
+   * The outputs read the DoFs of each rank's own cells and gather what one
+   * file holds on rank 0. What spans the ranks is set up on the whole mesh
+   * before it is split (the facing sides of interface elements, the runs
+   * of a layer's profile): whole_mesh().
    *
    * A solution method (owned by the stepping, see StepSolver) sets the
    * step increments and calls the point rules; the stepping then ends the
@@ -248,22 +254,22 @@ namespace thinlayer
      * The displacement at angle @p theta, summed over the modes, as a DoF
      * vector: components (x, y) in plane strain, (r, z, theta) for Fourier.
      * With @p increment, the last load step's increment instead (at a
-     * failed step, the incipient mechanism).
+     * failed step, the incipient mechanism). Each rank has the DoFs of its
+     * own cells, ghosts included. A collective call.
      */
-    Vector<double>
+    ModeVector
     displacement_at(const double theta, const bool increment = false) const;
 
-    /// The displacements of every mode, whole (see whole()): the current
+    /// The displacements of every mode, ghosts imported: the current
     /// state's (a pending step's includes its increment), or with
     /// @p increment the last load step's increment. A collective call.
-    std::vector<Vector<double>>
-    whole_displacements(const bool increment = false) const;
+    ModeVectors
+    displacements(const bool increment = false) const;
 
-    /// displacement_at() of the modes @p modes of whole_displacements():
-    /// for many angles of one state, on one rank.
-    Vector<double>
-    displacement_at(const double                       theta,
-                    const std::vector<Vector<double>> &modes) const;
+    /// displacement_at() of the modes @p modes of displacements(): for
+    /// many angles of one state, without communication.
+    ModeVector
+    displacement_at(const double theta, const ModeVectors &modes) const;
 
     /// The profiles every element group writes, of the current state.
     std::vector<NamedProfile>
@@ -298,12 +304,25 @@ namespace thinlayer
     get_kinematics() const;
 
     /// Warnings about the scene found while setting it up (boundary
-    /// conditions that disagree at a node), one per line.
+    /// conditions that disagree at a node), one per line, from every rank.
+    /// A collective call.
     std::string
     warnings() const;
 
+    /// The DoFs, on this rank's part of the mesh (on one rank, the whole
+    /// mesh).
     const DoFHandler<dim> &
     get_dof_handler() const;
+
+    /// The mesh as read, every cell on every rank: for setting up what
+    /// spans the ranks (the runs of a layer's profile). Its cells are found
+    /// in get_dof_handler()'s mesh by CellId (cell_of()).
+    const Triangulation<dim> &
+    whole_mesh() const;
+
+    /// Whether this rank owns active cell @p c of whole_mesh().
+    bool
+    owns_whole_cell(const unsigned int c) const;
 
     const Mapping<dim> &
     get_mapping() const;
@@ -352,14 +371,18 @@ namespace thinlayer
     void
     setup_dofs_and_constraints();
 
-    /// The two cells of every zero-thickness interface element, which the
-    /// partition keeps on one rank.
-    std::vector<std::pair<unsigned int, unsigned int>>
-    interface_element_cells() const;
+    /// The constrained DoFs of the element constraints and of every
+    /// mode's, over all ranks: what n_dofs() and n_equations() subtract.
+    void
+    count_constrained_dofs();
 
     /// The layout of the mode vectors: see dof_partitioner.
     void
     setup_dof_partitioner();
+
+    /// The component of every DoF this rank stores: see dof_component.
+    void
+    setup_dof_components();
 
     /// Prescribed displacements and loads at unit load factor, and the
     /// state vectors.
@@ -376,6 +399,11 @@ namespace thinlayer
      */
     void
     check_supports_and_load() const;
+
+    /// The support points and components of this rank's DoFs: for the
+    /// rigid-body motions.
+    OwnedDofPlaces
+    owned_dof_places() const;
 
     /// Right-hand sides at unit load factor, factorisations, and the time
     /// one substitution takes.
@@ -406,8 +434,12 @@ namespace thinlayer
     const FESystem<dim>       fe;
     const MappingQ<dim>       mapping;
     const QGauss<dim>         quadrature;
-    DoFHandler<dim>           dof_handler;
-    BoundaryData              boundary_data;
+    /// On many ranks, this rank's part of @p tria, on which the analysis
+    /// runs (declared before the DoFHandler, which must go first).
+    std::unique_ptr<parallel::fullydistributed::Triangulation<dim>>
+                    distributed_tria;
+    DoFHandler<dim> dof_handler;
+    BoundaryData    boundary_data;
 
     AffineConstraints<double>                element_constraints;
     SparsityPattern                          sparsity;
@@ -421,16 +453,25 @@ namespace thinlayer
     ModeVectors increment_vectors;
     ModeVectors internal_force_vectors;
     /// On many ranks: the rank of every cell, and the DoFs each rank owns
-    /// (contiguous, see number_dofs_by_rank()).
-    CellPartition         partition;
+    /// (contiguous, in rank order).
+    CellPartition partition;
+    /// The same over the cells of whole_mesh().
+    CellPartition         whole_partition;
     std::vector<IndexSet> owned_per_rank;
+    /// The DoFs of this rank's cells and of its ghost cells: the lines its
+    /// constraints keep.
+    IndexSet relevant_dofs;
+    /// See count_constrained_dofs().
+    types::global_dof_index              n_element_constrained = 0;
+    std::vector<types::global_dof_index> n_constrained;
     /// Each rank's DoFs and its ghosts: those of its own cells and
     /// elements and those its own constraint lines name.
     std::shared_ptr<const Utilities::MPI::Partitioner> dof_partitioner;
     /// Where each rank's DoFs lie in a whole vector (whole()).
     mpi::Parts dof_parts;
 
-    /// The component of every DoF.
+    /// The component of every DoF this rank stores (its own and its
+    /// ghosts), by its place in the mode vectors (on one rank, by DoF).
     std::vector<unsigned int> dof_component;
 
     double accepted_lambda;
@@ -583,6 +624,23 @@ namespace thinlayer
 
 
   template <int dim>
+  inline const Triangulation<dim> &
+  Analysis<dim>::whole_mesh() const
+  {
+    return tria;
+  }
+
+
+  template <int dim>
+  inline bool
+  Analysis<dim>::owns_whole_cell(const unsigned int c) const
+  {
+    return whole_partition.owner.empty() ||
+           whole_partition.owner[c] == whole_partition.rank;
+  }
+
+
+  template <int dim>
   inline const Mapping<dim> &
   Analysis<dim>::get_mapping() const
   {
@@ -626,7 +684,7 @@ namespace thinlayer
   inline types::global_dof_index
   Analysis<dim>::n_dofs() const
   {
-    return dof_handler.n_dofs() - element_constraints.n_constraints();
+    return dof_handler.n_dofs() - n_element_constrained;
   }
 
 
@@ -635,8 +693,8 @@ namespace thinlayer
   Analysis<dim>::n_equations() const
   {
     types::global_dof_index n = 0;
-    for (const auto &system : systems)
-      n += dof_handler.n_dofs() - system->constraints.n_constraints();
+    for (const types::global_dof_index c : n_constrained)
+      n += dof_handler.n_dofs() - c;
     return n;
   }
 

@@ -1,6 +1,7 @@
 #ifndef thinlayer_analysis_rigid_body_modes_h
 #define thinlayer_analysis_rigid_body_modes_h
 
+#include <deal.II/base/index_set.h>
 #include <deal.II/base/point.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/petsc_sparse_matrix.h>
@@ -15,18 +16,29 @@ namespace thinlayer
   using namespace dealii;
 
   /**
+   * Where the DoFs a rank owns lie: the support point and the component
+   * (0: x or r, 1: y or z, 2: theta) of each, in the order of @p owned.
+   */
+  struct OwnedDofPlaces
+  {
+    IndexSet                  owned;
+    std::vector<Point<2>>     points;
+    std::vector<unsigned int> components;
+  };
+
+
+  /**
    * The rigid-body motions of a plane-strain body (@p n_components 2):
    * the two translations and the rotation about the centre of the bounding
-   * box of @p support_points, scaled by its size, on the DoFs whose points
-   * and components (0: x, 1: y) @p support_points and @p dof_component
-   * give. With more components (a Fourier harmonic, whose rigid motions
-   * depend on its order), a uniform displacement of each. What algebraic
-   * multigrid must represent on its coarse levels.
+   * box of every rank's support points, scaled by its size, on this rank's
+   * DoFs (@p places; the vectors in the order of places.owned). With more
+   * components (a Fourier harmonic, whose rigid motions depend on its
+   * order), a uniform displacement of each. What algebraic multigrid must
+   * represent on its coarse levels. A collective call.
    */
   std::vector<Vector<double>>
-  rigid_body_motions(const std::vector<Point<2>>     &support_points,
-                     const std::vector<unsigned int> &dof_component,
-                     const unsigned int               n_components);
+  rigid_body_motions(const OwnedDofPlaces &places,
+                     const unsigned int    n_components);
 
 
   /**
@@ -47,24 +59,25 @@ namespace thinlayer
    * 1e-15; a motion the supports hold, even at one node of a million,
    * gives 1e-4 or more).
    *
-   * @param support_points   the point of every DoF;
-   * @param dof_component    the component (0: x, 1: y) of every DoF;
-   * @param constraints      the constraints, Dirichlet lines (without
-   *                         entries) counting as supports;
-   * @param condensed_stiffness the stiffness condensed with them.
+   * Each rank works on its own rows, and imports the motions of the
+   * columns they name from those columns' owners; the products over the
+   * rows are summed over the ranks. A collective call.
+   *
+   * @param places           this rank's DoFs, their points and components;
+   * @param constraints      the constraints (those of this rank's DoFs at
+   *                         least), Dirichlet lines (without entries)
+   *                         counting as supports;
+   * @param condensed_stiffness the stiffness condensed with them, its rows
+   *                         those of places.owned.
    */
   std::string
-  free_rigid_body_motion(const std::vector<Point<2>>     &support_points,
-                         const std::vector<unsigned int> &dof_component,
+  free_rigid_body_motion(const OwnedDofPlaces            &places,
                          const AffineConstraints<double> &constraints,
                          const SparseMatrix<double>      &condensed_stiffness);
 
-  /// The same with the condensed stiffness distributed over the ranks by
-  /// rows (a collective call; the answer on every rank).
   std::string
   free_rigid_body_motion(
-    const std::vector<Point<2>>            &support_points,
-    const std::vector<unsigned int>        &dof_component,
+    const OwnedDofPlaces                   &places,
     const AffineConstraints<double>        &constraints,
     const PETScWrappers::MPI::SparseMatrix &condensed_stiffness);
 } // namespace thinlayer

@@ -8,6 +8,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <thinlayer/discretisation/kinematics.h>
+#include <thinlayer/discretisation/mode_vectors.h>
 #include <thinlayer/parameters/parameters.h>
 
 #include <map>
@@ -68,14 +69,16 @@ namespace thinlayer
 
     /**
      * The external load vector of mode @p mode, tractions and pressures at
-     * unit load factor (unconstrained).
+     * unit load factor (unconstrained): each rank integrates over the
+     * faces of its own cells, @p load (laid out with the DoFs of those
+     * cells as ghosts) sums them on the DoFs' owners. A collective call.
      */
     template <int dim>
     void
     assemble_load_vector(const Mapping<dim>    &mapping,
                          const DoFHandler<dim> &dof_handler,
                          const unsigned int     mode,
-                         Vector<double>        &load) const;
+                         ModeVector            &load) const;
 
     /// Whether any boundary prescribes a displacement component.
     bool

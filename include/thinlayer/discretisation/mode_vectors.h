@@ -14,11 +14,11 @@ namespace thinlayer
   /**
    * A vector over the DoFs of the one DoFHandler, distributed as deal.II's
    * parallel codes distribute it: each rank stores the DoFs it owns (a
-   * contiguous range, number_dofs_by_rank()) and, as ghosts, the other DoFs
-   * its cells and elements touch and its constraints read. Operations on
-   * the vector (norms, dot products, additions) act on the owned entries
-   * and reduce over the ranks; the ghosts are for the point rules, which
-   * read them (update_ghost_values()) and add forces into them
+   * contiguous range, as the distributed DoFHandler numbers them) and, as
+   * ghosts, the other DoFs its cells and elements touch and its constraints
+   * read. Operations on the vector (norms, dot products, additions) act on the
+   * owned entries and reduce over the ranks; the ghosts are for the point
+   * rules, which read them (update_ghost_values()) and add forces into them
    * (compress()). On one rank it owns every DoF and has no ghosts.
    */
   using ModeVector = LinearAlgebra::distributed::Vector<double>;

@@ -12,6 +12,7 @@
 #include <thinlayer/discretisation/kinematics.h>
 #include <thinlayer/discretisation/mode_vectors.h>
 #include <thinlayer/elements/interface_values.h>
+#include <thinlayer/mesh/interface_pairing.h>
 #include <thinlayer/parallel/cell_partition.h>
 
 #include <cmath>
@@ -210,19 +211,22 @@ namespace thinlayer
    * DoFs of @p dof_handler: the continuum cells first (with @p quadrature),
    * then the interface elements along the Interface curve sections, if
    * any; each with the points of the cells that @p partition gives this
-   * rank (every cell where it names no owners). The one place that knows
-   * every element family. Throws InputError
-   * (naming the parameter file and its section) where a group cannot be
-   * built as the parameters ask.
+   * rank (every cell where it names no owners). The interface elements
+   * join @p facing_sides, found on the whole mesh, whose cells
+   * @p whole_partition gives ranks. The one place that knows every element
+   * family. Throws InputError (naming the parameter file and its section)
+   * where a group cannot be built as the parameters ask.
    */
   template <int dim>
   std::vector<std::unique_ptr<ElementGroup>>
-  create_element_groups(const Parameters      &parameters,
-                        const DoFHandler<dim> &dof_handler,
-                        const Mapping<dim>    &mapping,
-                        const Quadrature<dim> &quadrature,
-                        const Kinematics      &kinematics,
-                        const CellPartition   &partition);
+  create_element_groups(const Parameters               &parameters,
+                        const DoFHandler<dim>          &dof_handler,
+                        const Mapping<dim>             &mapping,
+                        const Quadrature<dim>          &quadrature,
+                        const Kinematics               &kinematics,
+                        const CellPartition            &partition,
+                        const std::vector<FacingSides> &facing_sides,
+                        const CellPartition            &whole_partition);
 } // namespace thinlayer
 
 #endif

@@ -65,18 +65,21 @@ namespace thinlayer
   {
   public:
     /**
-     * Pair the faces of every curve of @p curves; the elements whose plus
-     * side is a cell that @p partition gives this rank (all, where it names
-     * no owners) are this rank's to run. Throws InputError
-     * (naming @p parameter_file and the curve's section) where a face of a
-     * curve has no facing partner, or where an interface stiffness exceeds
-     * max_stiffness_ratio E / h of the cells beside it (@p materials).
+     * One element for each of @p pairs (pair_facing_sides() on the whole
+     * mesh, whose cells @p partition gives ranks); the elements whose plus
+     * side is a cell of this rank (all, where @p partition names no
+     * owners) are this rank's to run, on their cells as @p dof_handler
+     * holds them (found by CellId: it may hold only part of the mesh).
+     * Throws InputError (naming @p parameter_file and the curve's section)
+     * where an interface stiffness exceeds max_stiffness_ratio E / h of the
+     * cells beside it (@p materials).
      */
     void
     reinit(
-      const DoFHandler<2> &dof_handler,
-      const Mapping<2>    &mapping,
-      const Kinematics    &kinematics,
+      const std::vector<FacingSides> &pairs,
+      const DoFHandler<2>            &dof_handler,
+      const Mapping<2>               &mapping,
+      const Kinematics               &kinematics,
       const std::map<types::boundary_id, InterfaceElementParameters> &curves,
       const std::map<types::material_id, MaterialParameters>         &materials,
       const CellPartition                                            &partition,
@@ -221,10 +224,12 @@ namespace thinlayer
       const std::string                                      &parameter_file);
 
     /// The element of @p pair: its integration points along the side,
-    /// each with the jump operator over the two cells' DoFs.
+    /// each with the jump operator over the two cells' DoFs where it is
+    /// this rank's (@p own), its points' places alone where not.
     void
     add_element(const FacingSides                &pair,
                 const InterfaceElementParameters &curve,
+                const bool                        own,
                 const DoFHandler<2>              &dof_handler,
                 const Mapping<2>                 &mapping);
 

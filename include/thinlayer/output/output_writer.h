@@ -93,9 +93,10 @@ namespace thinlayer
                              const bool                       with_vtu);
 
     /**
-     * The body revolved about its axis (revolved_view_vtu(), @p slices
-     * angles) as revolved-NNNN.vtu, and revolved.pvd listing every step so
-     * far.
+     * The body revolved about its axis (revolved_view(), @p slices
+     * angles) as revolved-NNNN.vtu (on many ranks a piece per rank and
+     * revolved-NNNN.pvtu), and revolved.pvd listing every step so far.
+     * Every rank takes part.
      */
     void
     write_revolved_view(const unsigned int step,

@@ -13,8 +13,9 @@ namespace thinlayer
 {
   /**
    * The body of a Fourier analysis revolved about its axis, for ParaView:
-   * each cell of the r-z mesh swept through @p slices equal angles over the
-   * whole circle, as one VTU dataset (its text is returned) in Cartesian
+   * each cell of the r-z mesh that this rank owns swept through @p slices
+   * equal angles over the whole circle, as one VTU dataset (its text is
+   * returned; on many ranks, each rank's piece) in Cartesian
    * coordinates (X, Y) = r (cos theta, sin theta), Z along the axis.
    *
    * The displacement is the sum over the harmonics at each slice's angles,
@@ -27,8 +28,8 @@ namespace thinlayer
    * with theta change sign there, for the antisymmetric one the others
    * do). A view, not an analysis: nothing is computed between stations.
    * The cell averages are @p fields, those of @p analysis, and the
-   * displacements its @p modes (Analysis::whole_displacements()): both
-   * gathered by every rank, so that one may write the view.
+   * displacements its @p modes (Analysis::displacements()), ghosts
+   * imported: each rank has both on its own cells.
    */
   struct RevolvedView
   {
@@ -40,17 +41,10 @@ namespace thinlayer
   };
 
   RevolvedView
-  revolved_view(const Analysis<2>                 &analysis,
-                const CellFields                  &fields,
-                const std::vector<Vector<double>> &modes,
-                const unsigned int                 slices);
-
-  /// revolved_view() as the text of a VTU file.
-  std::string
-  revolved_view_vtu(const Analysis<2>                 &analysis,
-                    const CellFields                  &fields,
-                    const std::vector<Vector<double>> &modes,
-                    const unsigned int                 slices);
+  revolved_view(const Analysis<2> &analysis,
+                const CellFields  &fields,
+                const ModeVectors &modes,
+                const unsigned int slices);
 } // namespace thinlayer
 
 #endif

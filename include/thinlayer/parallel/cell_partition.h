@@ -1,8 +1,6 @@
 #ifndef thinlayer_parallel_cell_partition_h
 #define thinlayer_parallel_cell_partition_h
 
-#include <deal.II/base/index_set.h>
-#include <deal.II/dofs/dof_handler.h>
 #include <deal.II/grid/tria.h>
 
 #include <utility>
@@ -13,13 +11,16 @@ namespace thinlayer
   using namespace dealii;
 
   /**
-   * Which rank owns each active cell: the rank that runs the point rules
-   * of its Gauss points and holds the authoritative copy of their states.
-   * The same on every rank.
+   * Which rank owns each active cell of a mesh: the rank that runs the
+   * point rules of its Gauss points and holds the authoritative copy of
+   * their states. Of the whole mesh (partition_cells()), the same on every
+   * rank; of a rank's part of a distributed mesh (partition_of()), its
+   * cells'.
    */
   struct CellPartition
   {
-    /// The rank of every active cell.
+    /// The rank of every active cell (numbers::invalid_unsigned_int where
+    /// the mesh is a rank's part and the cell one it does not hold).
     std::vector<unsigned int> owner;
     /// This process's rank, and the number of ranks.
     unsigned int rank    = 0;
@@ -50,18 +51,6 @@ namespace thinlayer
     const unsigned int                                        n_ranks,
     const unsigned int                                        rank,
     const std::vector<std::pair<unsigned int, unsigned int>> &joined = {});
-
-
-  /**
-   * Renumber the DoFs of @p dof_handler so that each rank's are
-   * contiguous, in rank order, as PETSc's distributed matrices ask: a DoF
-   * goes to the lowest rank among the cells it is on, and keeps its order
-   * among that rank's. Returns the DoFs of every rank.
-   */
-  template <int dim>
-  std::vector<IndexSet>
-  number_dofs_by_rank(DoFHandler<dim>     &dof_handler,
-                      const CellPartition &partition);
 } // namespace thinlayer
 
 #endif

@@ -20,8 +20,8 @@ namespace thinlayer
    * the yield ratio. The yield ratio is the cell's maximum, to show where
    * drift into illegal stress space is.
    *
-   * On many ranks every rank constructs it: each computes its own cells'
-   * averages and receives the others' from their owners.
+   * On many ranks each rank has the averages of its own cells (zeros on
+   * its ghost cells), the cells of the piece it writes.
    */
   struct CellFields
   {

@@ -67,8 +67,8 @@ namespace thinlayer
 
     /**
      * Cell averages of slip, opening, shear and normal traction at station
-     * @p station, over all active cells (zero off the layer), for the VTU
-     * (every rank calls it).
+     * @p station, over this rank's active cells (zero off the layer and on
+     * other ranks' cells), for the VTU (every rank calls it).
      */
     std::vector<Vector<double>>
     cell_fields(const Analysis<2> &analysis, const unsigned int station) const;
@@ -79,7 +79,9 @@ namespace thinlayer
   private:
     struct Sample
     {
+      /// The cell as the analysis holds it, where this rank's (@p own).
       DoFHandler<2>::active_cell_iterator cell;
+      bool                                own;
       unsigned int                        run;
       double                              arc_length;
       Point<2>                            position;

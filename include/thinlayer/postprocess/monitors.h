@@ -75,8 +75,13 @@ namespace thinlayer
 
     const MonitorParameters &parameters;
     const Analysis<dim>     &analysis;
-    /// Per component, the DoFs on the load's boundary id and their
-    /// support points.
+    /// The cell holding the displacement point and the point in it, on
+    /// the rank that evaluates it (the lowest that owns such a cell); an
+    /// invalid cell on the others.
+    std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>
+      point_cell;
+    /// Per component, this rank's DoFs on the load's boundary id and
+    /// their support points.
     std::vector<std::vector<std::pair<types::global_dof_index, Point<dim>>>>
       reaction_dofs;
   };

@@ -41,7 +41,7 @@ namespace thinlayer
 
     /**
      * Build the preconditioner of @p matrix, whose rows are distributed as
-     * @p owned_per_rank says, with the (whole) vectors
+     * @p owned_per_rank says, with the vectors (on this rank's rows)
      * @p near_null_space: the motions the stiffness hardly resists, which
      * the coarse levels must represent. The unknowns come in nodes of
      * @p block_size, one after the other (1 where they do not). The
