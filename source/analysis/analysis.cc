@@ -86,14 +86,9 @@ namespace thinlayer
 
 
   template <int dim>
-  void
-  Analysis<dim>::setup_dofs_and_constraints()
+  std::vector<FacingSides>
+  Analysis<dim>::facing_sides(const DoFHandler<dim> &whole_mesh) const
   {
-    // What needs the whole mesh is found on it before it is split: the
-    // facing sides of the interface elements (their runs and arc lengths
-    // span the ranks), and the partition, which keeps each element's two
-    // cells on one rank.
-    DoFHandler<dim>          whole_mesh(tria);
     std::vector<FacingSides> sides;
     if constexpr (dim == 2)
       if (!parameters.interface_elements.empty())
@@ -104,19 +99,38 @@ namespace thinlayer
           sides =
             pair_facing_sides(whole_mesh, curves, parameters.parameter_file);
         }
+    return sides;
+  }
+
+
+  template <int dim>
+  void
+  Analysis<dim>::split_mesh(const std::vector<FacingSides> &sides)
+  {
+    std::vector<std::pair<unsigned int, unsigned int>> joined;
+    for (const FacingSides &pair : sides)
+      joined.emplace_back(pair.plus_cell->active_cell_index(),
+                          pair.minus_cell->active_cell_index());
+    whole_partition =
+      partition_cells(tria, mpi::n_ranks(), mpi::rank(), joined);
+    distributed_tria = distribute_mesh(tria, whole_partition);
+    dof_handler.reinit(*distributed_tria);
+    partition = partition_of(*distributed_tria, mpi::n_ranks(), mpi::rank());
+  }
+
+
+  template <int dim>
+  void
+  Analysis<dim>::setup_dofs_and_constraints()
+  {
+    // What needs the whole mesh is found on it before it is split: the
+    // facing sides of the interface elements (their runs and arc lengths
+    // span the ranks), and the partition, which keeps each element's two
+    // cells on one rank.
+    const DoFHandler<dim>          whole_mesh(tria);
+    const std::vector<FacingSides> sides = facing_sides(whole_mesh);
     if (mpi::n_ranks() > 1)
-      {
-        std::vector<std::pair<unsigned int, unsigned int>> joined;
-        for (const FacingSides &pair : sides)
-          joined.emplace_back(pair.plus_cell->active_cell_index(),
-                              pair.minus_cell->active_cell_index());
-        whole_partition =
-          partition_cells(tria, mpi::n_ranks(), mpi::rank(), joined);
-        distributed_tria = distribute_mesh(tria, whole_partition);
-        dof_handler.reinit(*distributed_tria);
-        partition =
-          partition_of(*distributed_tria, mpi::n_ranks(), mpi::rank());
-      }
+      split_mesh(sides);
     dof_handler.distribute_dofs(fe);
 
     if (mpi::n_ranks() > 1)
@@ -169,6 +183,14 @@ namespace thinlayer
     Assert(continuum != nullptr,
            ExcMessage("The first element group must be the continuum."));
 
+    setup_sparsity();
+  }
+
+
+  template <int dim>
+  void
+  Analysis<dim>::setup_sparsity()
+  {
     if (mpi::n_ranks() == 1)
       {
         DynamicSparsityPattern dsp(dof_handler.n_dofs());

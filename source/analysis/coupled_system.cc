@@ -46,9 +46,23 @@ namespace thinlayer
           std::make_unique<DistributedFactorisation>(symmetric);
       }
 
+    if (!owned_per_rank.empty())
+      {
+        // The system's rows of the DoFs this rank holds (each mode's
+        // constraints keep their lines): the lines and couplings it keeps.
+        std::vector<types::global_dof_index> rows;
+        for (unsigned int m = 0; m < n_modes; ++m)
+          for (const auto i : mode_constraints[m]->get_local_lines())
+            rows.push_back(index(m, i));
+        std::sort(rows.begin(), rows.end());
+        held_rows.set_size(n_modes * n);
+        held_rows.add_indices(rows.begin(), rows.end());
+        held_rows.compress();
+        constraints.reinit(held_rows);
+      }
     // Each mode's constraints on its block.
     for (unsigned int m = 0; m < n_modes; ++m)
-      if (identity)
+      if (owned_per_rank.empty())
         {
           AffineConstraints<double> shifted;
           shifted.copy_from(*mode_constraints[m]);
@@ -99,7 +113,10 @@ namespace thinlayer
   void
   CoupledSystem::reinit(const std::function<void(const DofSink &)> &add_dofs)
   {
-    DynamicSparsityPattern dsp(n_modes * n);
+    // On several ranks, the rows of the DoFs this rank holds.
+    DynamicSparsityPattern dsp = factorisation
+                                   ? DynamicSparsityPattern(n_modes * n)
+                                   : DynamicSparsityPattern(held_rows);
     add_dofs([&](const std::vector<types::global_dof_index> &dofs) {
       constraints.add_entries_local_to_global(renumbered(dofs),
                                               dsp,
@@ -116,7 +133,7 @@ namespace thinlayer
     SparsityTools::distribute_sparsity_pattern(dsp,
                                                rows_per_rank[me],
                                                mpi::communicator(),
-                                               complete_index_set(n_modes * n));
+                                               held_rows);
     distributed_matrix = std::make_unique<PETScWrappers::MPI::SparseMatrix>();
     distributed_matrix->reinit(rows_per_rank[me],
                                rows_per_rank[me],

@@ -7,14 +7,16 @@ measurements and shown beside them, and the model's forecast for 10^6 to
 The model (N unknowns, P ranks, plane strain):
   memory per rank  M = M_program + a N + b N log2(N) / P
       the loaded program (libraries, MPI; measured before the mesh is
-      read), what every rank holds whole (mesh, DoF maps, constraints)
-      and what is split (the point states, the vectors, the matrix rows
-      and the factor, whose fill grows as N log N for a 2D
+      read), what every rank holds whole (the mesh as read, kept beside
+      the rank's part of the split mesh) and what is split (the split
+      mesh, DoF maps and constraints, the point states, the vectors, the
+      matrix rows and the factor, whose fill grows as N log N for a 2D
       nested-dissection ordering);
   time per iteration  T = c N / P + d N + e N log2(N) / P + h [P > 1]
       the point rules and vector operations split over the ranks, the work
-      every rank does on whole data (the displacement monitor gathers the
-      solution whole once a step), the substitution with a factor split
+      every rank does on whole data (none is left in an iteration: the
+      monitors and outputs read each rank's own cells), the substitution
+      with a factor split
       over the ranks, and the latency of the exchanges (ghost values,
       reductions) a run on several ranks makes each iteration.
 The coefficients are non-negative least-squares fits to the runs of this
@@ -191,10 +193,12 @@ def sections(runs, quick):
         "processor's caches, and the model, fitted to absolute times, follows the large "
         "ones, whose factors do not, as the forecast's will not. "
         "Its forecast below extrapolates far beyond the two ranks and the sizes measured, and "
-        "is read for its limits: every rank still holds %.2f kB per unknown whole (mesh, "
-        "DoF maps, constraints), so above some 10^7 unknowns a run exceeds a rank's %d MB (a "
-        "cluster core's share) whatever the ranks%s; the next floor of the issue (a "
-        "distributed mesh and constraints) removes that. %s" % (
+        "is read for its limits: every rank still holds %.2f kB per unknown whole at its "
+        "peak (the mesh as read, which each rank keeps beside its part of the split mesh for "
+        "what spans the ranks, and the copy the split is cut from while setting up), so "
+        "where that term is not zero a large enough run exceeds a rank's %d MB (a cluster "
+        "core's share) whatever the ranks%s; freeing the mesh as read once the split exists "
+        "is the next floor. %s" % (
             largest, time_ratio, memory_ratio, program, above_program,
             program, memory[0] * 1024, memory[1] * 1024,
             rest[0] * 1e6, rest[1] * 1e6, substitution[0] * 1e6, substitution[1] * 1e6,

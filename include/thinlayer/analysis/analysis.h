@@ -371,6 +371,22 @@ namespace thinlayer
     void
     setup_dofs_and_constraints();
 
+    /// The facing sides of the interface elements on @p whole_mesh (a
+    /// DoFHandler of the mesh as read, without DoFs).
+    std::vector<FacingSides>
+    facing_sides(const DoFHandler<dim> &whole_mesh) const;
+
+    /// On many ranks: partition the mesh as read (each interface element's
+    /// two cells together, @p sides) and put the DoFHandler on this rank's
+    /// part of it.
+    void
+    split_mesh(const std::vector<FacingSides> &sides);
+
+    /// The stiffness's sparsity: whole on one rank, each rank's rows on
+    /// several.
+    void
+    setup_sparsity();
+
     /// The constrained DoFs of the element constraints and of every
     /// mode's, over all ranks: what n_dofs() and n_equations() subtract.
     void

@@ -90,6 +90,8 @@ namespace thinlayer
     std::vector<types::global_dof_index> first_dof, n_owned;
     /// Each rank's rows of the system (several ranks).
     std::vector<IndexSet> rows_per_rank;
+    /// This rank's rows of every DoF it holds (several ranks).
+    IndexSet held_rows;
     /// Whether the system's numbering is the m * n + i one.
     bool identity;
 
