@@ -177,24 +177,13 @@ namespace thinlayer
     base << "fields-" << std::setw(4) << std::setfill('0') << step;
     std::ostringstream vtu;
     data_out.write_vtu(vtu);
-    std::string record = base.str() + ".vtu";
-    if (pieces)
-      {
-        // Pieces as deal.II's parallel codes name them (step-40), listed
-        // in one .pvtu written once every piece is in place.
-        std::vector<std::string> piece_names;
-        for (unsigned int r = 0; r < partition.n_ranks; ++r)
-          piece_names.push_back(base.str() + "." +
-                                Utilities::int_to_string(r, 4) + ".vtu");
-        write_piece(piece_names[partition.rank], vtu.str());
-        record = base.str() + ".pvtu";
-        std::ostringstream pvtu;
-        data_out.write_pvtu_record(pvtu, piece_names);
-        write_file(record, pvtu.str());
-      }
-    else
-      write_file(record, vtu.str());
-
+    const std::string record =
+      write_vtu_or_pieces(base.str(),
+                          vtu.str(),
+                          [&](std::ostream                   &pvtu,
+                              const std::vector<std::string> &piece_names) {
+                            data_out.write_pvtu_record(pvtu, piece_names);
+                          });
     pvd_records.emplace_back(load_factor, record);
     std::ostringstream pvd;
     DataOutBase::write_pvd_record(pvd, pvd_records);
@@ -271,22 +260,13 @@ namespace thinlayer
 
     std::ostringstream base;
     base << "revolved-" << std::setw(4) << std::setfill('0') << step;
-    std::string record = base.str() + ".vtu";
-    if (pieces)
-      {
-        std::vector<std::string> piece_names;
-        for (unsigned int r = 0; r < mpi::n_ranks(); ++r)
-          piece_names.push_back(base.str() + "." +
-                                Utilities::int_to_string(r, 4) + ".vtu");
-        write_piece(piece_names[mpi::rank()], vtu.str());
-        record = base.str() + ".pvtu";
-        std::ostringstream pvtu;
+    const std::string record = write_vtu_or_pieces(
+      base.str(),
+      vtu.str(),
+      [&](std::ostream &pvtu, const std::vector<std::string> &piece_names) {
         DataOutBase::write_pvtu_record(
           pvtu, piece_names, view.names, vectors, DataOutBase::VtkFlags());
-        write_file(record, pvtu.str());
-      }
-    else
-      write_file(record, vtu.str());
+      });
     revolved_records.emplace_back(load_factor, record);
     std::ostringstream pvd;
     DataOutBase::write_pvd_record(pvd, revolved_records);
@@ -356,6 +336,32 @@ namespace thinlayer
     for (const auto &row : rows)
       csv += row.second;
     write_file("displacements.csv", csv);
+  }
+
+
+  std::string
+  OutputWriter::write_vtu_or_pieces(
+    const std::string &base,
+    const std::string &vtu,
+    const std::function<void(std::ostream &, const std::vector<std::string> &)>
+      &write_record)
+  {
+    if (mpi::n_ranks() == 1)
+      {
+        write_file(base + ".vtu", vtu);
+        return base + ".vtu";
+      }
+    // Pieces as deal.II's parallel codes name them (step-40), listed in one
+    // .pvtu written once every piece is in place.
+    std::vector<std::string> piece_names;
+    for (unsigned int r = 0; r < mpi::n_ranks(); ++r)
+      piece_names.push_back(base + "." + Utilities::int_to_string(r, 4) +
+                            ".vtu");
+    write_piece(piece_names[mpi::rank()], vtu);
+    std::ostringstream pvtu;
+    write_record(pvtu, piece_names);
+    write_file(base + ".pvtu", pvtu.str());
+    return base + ".pvtu";
   }
 
 

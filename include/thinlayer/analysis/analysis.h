@@ -123,7 +123,8 @@ namespace thinlayer
     new_mode_vectors() const;
 
     /// @p v whole, its entries gathered from every rank (on one rank a
-    /// copy): for what reads DoFs anywhere, the outputs and the monitors. A
+    /// copy): for checks that compare with a whole vector (the tests); the
+    /// outputs and monitors read each rank's own cells instead. A
     /// collective call.
     Vector<double>
     whole(const ModeVector &v) const;

@@ -10,6 +10,7 @@
 #include <thinlayer/solution_methods/step_result.h>
 
 #include <fstream>
+#include <functional>
 #include <map>
 #include <string>
 #include <utility>
@@ -122,6 +123,19 @@ namespace thinlayer
 
 
   private:
+    /**
+     * A step's VTU text @p vtu as BASE.vtu on one rank; on several, this
+     * rank's part as the piece BASE.RRRR.vtu and, by rank 0, BASE.pvtu
+     * listing every rank's piece (its text from @p write_record). Returns
+     * the name a .pvd record lists. Every rank calls it.
+     */
+    std::string
+    write_vtu_or_pieces(
+      const std::string &base,
+      const std::string &vtu,
+      const std::function<
+        void(std::ostream &, const std::vector<std::string> &)> &write_record);
+
     /// This rank's piece @p name of a step's fields (every rank calls it).
     void
     write_piece(const std::string &name, const std::string &content) const;
