@@ -367,6 +367,8 @@ namespace thinlayer
 
   template void
   Analysis<2>::elastic_solve(ModeVectors &);
+  template OwnedDofPlaces
+  Analysis<2>::owned_dof_places() const;
   template void
   Analysis<2>::check_supports_and_load() const;
   template void

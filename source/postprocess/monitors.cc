@@ -80,11 +80,7 @@ namespace thinlayer
       return;
     const auto        &dof_handler  = analysis.get_dof_handler();
     const unsigned int n_components = analysis.get_kinematics().n_components();
-    // The points of the DoFs this rank holds: its own among them.
-    std::map<types::global_dof_index, Point<dim>> points;
-    DoFTools::map_dofs_to_support_points(analysis.get_mapping(),
-                                         dof_handler,
-                                         points);
+    const OwnedDofPlaces places     = analysis.owned_dof_places();
     reaction_dofs.resize(n_components);
     for (unsigned int c = 0; c < n_components; ++c)
       {
@@ -92,8 +88,9 @@ namespace thinlayer
         mask[c] = true;
         for (const auto dof : DoFTools::extract_boundary_dofs(
                dof_handler, ComponentMask(mask), {parameters.load_boundary_id}))
-          if (dof_handler.locally_owned_dofs().is_element(dof))
-            reaction_dofs[c].emplace_back(dof, points.at(dof));
+          if (places.owned.is_element(dof))
+            reaction_dofs[c].emplace_back(
+              dof, places.points[places.owned.index_within_set(dof)]);
       }
   }
 

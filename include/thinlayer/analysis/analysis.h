@@ -310,6 +310,11 @@ namespace thinlayer
     std::string
     warnings() const;
 
+    /// The support points and components of this rank's DoFs: for the
+    /// rigid-body motions and the reactions' moments.
+    OwnedDofPlaces
+    owned_dof_places() const;
+
     /// The DoFs, on this rank's part of the mesh (on one rank, the whole
     /// mesh).
     const DoFHandler<dim> &
@@ -416,11 +421,6 @@ namespace thinlayer
      */
     void
     check_supports_and_load() const;
-
-    /// The support points and components of this rank's DoFs: for the
-    /// rigid-body motions.
-    OwnedDofPlaces
-    owned_dof_places() const;
 
     /// Right-hand sides at unit load factor, factorisations, and the time
     /// one substitution takes.
