@@ -2,10 +2,12 @@
 #include <thinlayer/solvers/linear_solver_failure.h>
 #include <thinlayer/solvers/singular_matrix.h>
 
+#include <sstream>
 #include <stdexcept>
 #include <vector>
 
 #include <suitesparse/cholmod.h>
+#include <suitesparse/umfpack.h>
 
 namespace thinlayer
 {
@@ -49,9 +51,64 @@ namespace thinlayer
   };
 
 
-  FactorisedStiffness::FactorisedStiffness(const Method method)
+  struct FactorisedStiffness::Umfpack
+  {
+    Umfpack()
+    {
+      umfpack_dl_defaults(control);
+    }
+
+    ~Umfpack()
+    {
+      clear();
+    }
+
+    void
+    clear()
+    {
+      if (symbolic)
+        umfpack_dl_free_symbolic(&symbolic);
+      if (numeric)
+        umfpack_dl_free_numeric(&numeric);
+    }
+
+    double control[UMFPACK_CONTROL];
+    double info[UMFPACK_INFO];
+    void  *symbolic = nullptr;
+    void  *numeric  = nullptr;
+    /// The matrix's rows as UMFPACK's compressed columns (so that UMFPACK
+    /// factorises its transpose), each sorted by column.
+    std::vector<SuiteSparse_long> start, column;
+    std::vector<double>           value;
+    // Reused by every solve, so that it allocates nothing.
+    std::vector<double> solution;
+  };
+
+
+  namespace
+  {
+    /// The SingularMatrix for a factor whose pivots show it singular up to
+    /// round-off.
+    SingularMatrix
+    singular(const std::string &solver,
+             const double       pivot_ratio,
+             const double       minimum_pivot_ratio)
+    {
+      std::ostringstream text;
+      text << solver
+           << " found the stiffness matrix singular: its smallest pivot is "
+           << pivot_ratio << " of its largest, below " << minimum_pivot_ratio;
+      return SingularMatrix(text.str());
+    }
+  } // namespace
+
+
+  FactorisedStiffness::FactorisedStiffness(const Method method,
+                                           const double minimum_pivot_ratio)
     : method(method)
+    , minimum_pivot_ratio(minimum_pivot_ratio)
     , cholmod(method == Method::cholmod ? std::make_unique<Cholmod>() : nullptr)
+    , umfpack(method == Method::umfpack ? std::make_unique<Umfpack>() : nullptr)
   {}
 
 
@@ -63,15 +120,7 @@ namespace thinlayer
   {
     if (method == Method::umfpack)
       {
-        // UMFPACK's failure on these matrices is their singularity.
-        try
-          {
-            umfpack.factorize(matrix);
-          }
-        catch (const ExceptionBase &e)
-          {
-            throw SingularMatrix(e.what());
-          }
+        factorize_umfpack(matrix);
         return;
       }
 
@@ -117,6 +166,13 @@ namespace thinlayer
                     c.status == CHOLMOD_OK;
     const int status = c.status;
     cholmod_l_free_sparse(&A, &c);
+    // (min L_jj / max L_jj)^2 of L L^T: the pivot ratio of L D L^T.
+    const double pivot_ratio = ok ? cholmod_l_rcond(cholmod->factor, &c) : 0;
+    if (ok && pivot_ratio < minimum_pivot_ratio)
+      {
+        cholmod->clear();
+        throw singular("CHOLMOD", pivot_ratio, minimum_pivot_ratio);
+      }
     if (!ok)
       {
         cholmod->clear(); // a failed factor is analysed afresh next time
@@ -133,14 +189,102 @@ namespace thinlayer
 
 
   void
+  FactorisedStiffness::factorize_umfpack(const SparseMatrix<double> &matrix)
+  {
+    Umfpack               &u = *umfpack;
+    const SuiteSparse_long n = matrix.m();
+    u.clear();
+
+    // deal.II stores each row's diagonal first: UMFPACK wants the columns
+    // in order.
+    u.start.resize(n + 1);
+    u.column.resize(matrix.n_nonzero_elements());
+    u.value.resize(matrix.n_nonzero_elements());
+    SuiteSparse_long k = 0;
+    for (SuiteSparse_long i = 0; i < n; ++i)
+      {
+        u.start[i] = k;
+        for (auto entry = matrix.begin(i); entry != matrix.end(i); ++entry)
+          {
+            SuiteSparse_long j = k++;
+            for (; j > u.start[i] &&
+                   u.column[j - 1] > SuiteSparse_long(entry->column());
+                 --j)
+              {
+                u.column[j] = u.column[j - 1];
+                u.value[j]  = u.value[j - 1];
+              }
+            u.column[j] = entry->column();
+            u.value[j]  = entry->value();
+          }
+      }
+    u.start[n] = k;
+
+    // The symbolic analysis afresh for every matrix, as deal.II's wrapper
+    // did: UMFPACK chooses its strategy from the values as well.
+    int status = umfpack_dl_symbolic(n,
+                                     n,
+                                     u.start.data(),
+                                     u.column.data(),
+                                     u.value.data(),
+                                     &u.symbolic,
+                                     u.control,
+                                     u.info);
+    if (status == UMFPACK_OK)
+      status = umfpack_dl_numeric(u.start.data(),
+                                  u.column.data(),
+                                  u.value.data(),
+                                  u.symbolic,
+                                  &u.numeric,
+                                  u.control,
+                                  u.info);
+    if (status == UMFPACK_WARNING_singular_matrix)
+      {
+        u.clear();
+        throw SingularMatrix("UMFPACK found the stiffness matrix singular: "
+                             "a pivot is zero");
+      }
+    if (status != UMFPACK_OK)
+      {
+        u.clear();
+        throw LinearSolverFailure(
+          "UMFPACK could not factorise the stiffness matrix (its status " +
+          std::to_string(status) +
+          (status == UMFPACK_ERROR_out_of_memory ? ": out of memory)" : ")"));
+      }
+    // min |U_ii| / max |U_ii|.
+    const double pivot_ratio = u.info[UMFPACK_RCOND];
+    if (pivot_ratio < minimum_pivot_ratio)
+      {
+        u.clear();
+        throw singular("UMFPACK", pivot_ratio, minimum_pivot_ratio);
+      }
+  }
+
+
+  void
   FactorisedStiffness::solve(const ArrayView<double> &rhs)
   {
     if (method == Method::umfpack)
       {
-        // deal.II's UMFPACK takes its own vector type.
-        Vector<double> v(rhs.begin(), rhs.end());
-        umfpack.solve(v);
-        std::copy(v.begin(), v.end(), rhs.begin());
+        Umfpack &u = *umfpack;
+        u.solution.resize(rhs.size());
+        // UMFPACK holds the transpose's factors (its columns are the
+        // matrix's rows): A x = b is its transposed solve.
+        const int status = umfpack_dl_solve(UMFPACK_At,
+                                            u.start.data(),
+                                            u.column.data(),
+                                            u.value.data(),
+                                            u.solution.data(),
+                                            rhs.data(),
+                                            u.numeric,
+                                            u.control,
+                                            u.info);
+        if (status != UMFPACK_OK)
+          throw LinearSolverFailure("UMFPACK could not solve with its factor "
+                                    "(its status " +
+                                    std::to_string(status) + ")");
+        std::copy(u.solution.begin(), u.solution.end(), rhs.begin());
         return;
       }
 

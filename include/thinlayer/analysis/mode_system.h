@@ -46,7 +46,7 @@ namespace thinlayer
   struct ModeSystem
   {
     explicit ModeSystem(const FactorisedStiffness::Method method)
-      : factorisation(method)
+      : factorisation(method, FactorisedStiffness::elastic_pivot_ratio)
     {}
 
     /// Serendipity, dead-component and axis lines.
