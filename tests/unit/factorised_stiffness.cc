@@ -1,0 +1,123 @@
+// FactorisedStiffness (CHOLMOD and UMFPACK) on K = [[1, a], [b, a b + d]],
+// whose pivots are 1 and d: its pivot ratio is d. Truths checked: with the
+// elastic minimum (1e-12), a matrix with d = 1e-9 is factorised and solved
+// (x = K^-1 b to the accuracy d leaves), one with d = 1e-14 is singular
+// although its pivot is positive (round-off of a singular matrix comes out
+// with either sign, by the processor's BLAS kernels), and a factorisation
+// after a refused one works; without a minimum (Newton's tangent) d = 1e-14
+// is factorised, and only the solvers' own verdicts remain: CHOLMOD refuses a
+// negative pivot, UMFPACK an exactly zero one.
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+
+#include <thinlayer/solvers/factorised_stiffness.h>
+#include <thinlayer/solvers/singular_matrix.h>
+
+#include <cmath>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "../common/truths.h"
+
+using namespace thinlayer;
+using truths::expect;
+
+namespace
+{
+  using Method = FactorisedStiffness::Method;
+
+  /// K with pivots 1 and @p d; symmetric for CHOLMOD (a = b = 1).
+  struct TwoByTwo
+  {
+    TwoByTwo(const Method method, const double d)
+    {
+      pattern.reinit(2, 2, 2);
+      for (unsigned int i = 0; i < 2; ++i)
+        for (unsigned int j = 0; j < 2; ++j)
+          pattern.add(i, j);
+      pattern.compress();
+      matrix.reinit(pattern);
+      const double a = 1, b = method == Method::cholmod ? 1 : 0.5;
+      matrix.set(0, 0, 1);
+      matrix.set(0, 1, a);
+      matrix.set(1, 0, b);
+      matrix.set(1, 1, a * b + d);
+    }
+
+    SparsityPattern      pattern;
+    SparseMatrix<double> matrix;
+  };
+
+  /// Whether @p factorisation takes K(@p d).
+  bool
+  factorises(FactorisedStiffness &factorisation,
+             const Method         method,
+             const double         d)
+  {
+    const TwoByTwo k(method, d);
+    try
+      {
+        factorisation.factorize(k.matrix);
+        return true;
+      }
+    catch (const SingularMatrix &)
+      {
+        return false;
+      }
+  }
+
+  /// The largest relative error of x solved from K x = K (1, 2).
+  double
+  solve_error(FactorisedStiffness &factorisation,
+              const Method         method,
+              const double         d)
+  {
+    const TwoByTwo k(method, d);
+    Vector<double> exact(2), rhs(2);
+    exact[0] = 1;
+    exact[1] = 2;
+    k.matrix.vmult(rhs, exact);
+    std::vector<double> x(rhs.begin(), rhs.end());
+    factorisation.factorize(k.matrix);
+    factorisation.solve(make_array_view(x));
+    return std::max(std::abs(x[0] - 1), std::abs(x[1] - 2) / 2);
+  }
+} // namespace
+
+
+int
+main()
+{
+  for (const Method method : {Method::cholmod, Method::umfpack})
+    {
+      const std::string name =
+        method == Method::cholmod ? "CHOLMOD" : "UMFPACK";
+      std::cout << "* " << name << '\n';
+      {
+        FactorisedStiffness elastic(method,
+                                    FactorisedStiffness::elastic_pivot_ratio);
+        // Solving with pivot ratio d loses digits as eps / d.
+        expect(solve_error(elastic, method, 1e-9) < 1e-5,
+               "elastic minimum: pivot ratio 1e-9 factorised and solved");
+        expect(!factorises(elastic, method, 1e-14),
+               "elastic minimum: pivot ratio 1e-14 (positive) singular");
+        expect(!factorises(elastic, method, -1e-14),
+               "elastic minimum: pivot ratio -1e-14 singular");
+        expect(solve_error(elastic, method, 1e-9) < 1e-5,
+               "after a refused matrix, the next factorised and solved");
+      }
+      {
+        FactorisedStiffness tangent(method);
+        expect(factorises(tangent, method, 1e-14),
+               "no minimum: pivot ratio 1e-14 factorised");
+        if (method == Method::cholmod)
+          expect(!factorises(tangent, method, -1e-14),
+                 "no minimum: a negative pivot singular");
+        else
+          expect(!factorises(tangent, method, 0),
+                 "no minimum: a zero pivot singular");
+      }
+    }
+  return truths::conclude();
+}
