@@ -21,9 +21,11 @@ CASE1_AR1000 = ("Mesh/Geometry parameters=alpha=30, aspect_ratio=1000, elements_
                 "elements_block=8",)
 RUNS = [
     ("case1-ar1000-tight", "case1-inclined-adhesive", DEFAULT + CASE1_AR1000 + TIGHT, 2),
+    ("case1-ar1000-tight", "case1-inclined-adhesive", DEFAULT + CASE1_AR1000 + TIGHT, 3),
     ("prandtl-tight", "prandtl-strip-footing", DEFAULT + TIGHT, 2),
     ("prandtl-tight", "prandtl-strip-footing", DEFAULT + TIGHT, 3),
     ("case2-zero", "case2-strip-footing-zero-thickness", (), 2),
+    ("case2-zero", "case2-strip-footing-zero-thickness", (), 3),
     # Two harmonics: on 2 ranks one per rank (spread), on 3 split.
     ("case3-tight", "case3-circular-footing", DEFAULT + TIGHT, 2),
     ("case3-tight", "case3-circular-footing", DEFAULT + TIGHT, 3),
