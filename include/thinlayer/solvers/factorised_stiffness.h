@@ -61,8 +61,8 @@ namespace thinlayer
      * largest). Below it the solution keeps fewer than about four digits
      * (its error grows as the machine epsilon over the ratio), and the
      * matrix is taken as singular. The zero pivots of singular matrices
-     * come out at 1e-18 of the largest or below; the elastic matrices of
-     * the tests and of the paper's scenes are above 4e-7, and a layer 1000
+     * came out at 2e-18 of the largest, zero or negative; the elastic matrices
+     * of the tests and of the paper's scenes are above 4e-7, and a layer 1000
      * times stiffer than the soil beside it at aspect ratio 10^5 gives
      * 7.5e-9 (the ratio falls as 1 / (aspect ratio x modulus ratio)).
      */
