@@ -166,9 +166,11 @@ namespace thinlayer
                     c.status == CHOLMOD_OK;
     const int status = c.status;
     cholmod_l_free_sparse(&A, &c);
-    // (min L_jj / max L_jj)^2 of L L^T: the pivot ratio of L D L^T.
-    const double pivot_ratio = ok ? cholmod_l_rcond(cholmod->factor, &c) : 0;
-    if (ok && pivot_ratio < minimum_pivot_ratio)
+    // (min L_jj / max L_jj)^2 of L L^T: the pivot ratio of L D L^T, a pass
+    // over the factor's diagonal that a tangent (no minimum) is spared.
+    const double pivot_ratio =
+      ok && minimum_pivot_ratio > 0 ? cholmod_l_rcond(cholmod->factor, &c) : 1;
+    if (pivot_ratio < minimum_pivot_ratio)
       {
         cholmod->clear();
         throw singular("CHOLMOD", pivot_ratio, minimum_pivot_ratio);
