@@ -25,10 +25,12 @@ namespace thinlayer
     Kinematics
     make_kinematics(const KinematicsParameters &p)
     {
-      return p.fourier ? Kinematics::make_fourier(p.harmonics,
-                                                  p.station_angles,
-                                                  p.antisymmetric)
-                       : Kinematics::make_plane_strain();
+      if (p.fourier)
+        return Kinematics::make_fourier(p.harmonics,
+                                        p.station_angles,
+                                        p.antisymmetric);
+      return p.dimension == 3 ? Kinematics::make_solid()
+                              : Kinematics::make_plane_strain();
     }
   } // namespace
 
@@ -52,12 +54,8 @@ namespace thinlayer
     , pending(false)
     , substitution_time(0)
   {
-    // The rooms below the analysis (kinematics, strain operator, element
-    // groups, boundary data, mesh reader) serve 3D meshes; what the
-    // analysis itself still takes as 2D is the rigid-body check of the
-    // supports, the components of displacement_at(), and the monitors and
-    // layer profiles read off it.
-    static_assert(dim == 2, "A 3D analysis is not built yet.");
+    AssertThrow(kinematics.mesh_dimension() == dim,
+                ExcMessage("The kinematics' mesh dimension is the mesh's."));
   }
 
 
@@ -481,4 +479,5 @@ namespace thinlayer
 
 
   template class Analysis<2>;
+  template class Analysis<3>;
 } // namespace thinlayer

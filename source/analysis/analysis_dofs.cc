@@ -251,4 +251,18 @@ namespace thinlayer
   Analysis<2>::setup_dof_partitioner();
   template void
   Analysis<2>::setup_dof_components();
+  template std::vector<FacingSides>
+  Analysis<3>::facing_sides(const DoFHandler<3> &) const;
+  template void
+  Analysis<3>::split_mesh(const std::vector<FacingSides> &);
+  template void
+  Analysis<3>::setup_dofs_and_constraints();
+  template void
+  Analysis<3>::setup_sparsity();
+  template void
+  Analysis<3>::count_constrained_dofs();
+  template void
+  Analysis<3>::setup_dof_partitioner();
+  template void
+  Analysis<3>::setup_dof_components();
 } // namespace thinlayer

@@ -93,23 +93,29 @@ namespace thinlayer
   OwnedDofPlaces
   Analysis<dim>::owned_dof_places() const
   {
-    static_assert(dim == 2, "The rigid motions are those of the plane.");
     OwnedDofPlaces places;
-    places.owned         = dof_handler.locally_owned_dofs();
-    const unsigned int n = places.owned.n_elements();
+    places.owned                = dof_handler.locally_owned_dofs();
+    places.dimension            = dim;
+    const unsigned int n        = places.owned.n_elements();
+    const auto         embedded = [](const Point<dim> &x) {
+      Point<3> y;
+      for (unsigned int d = 0; d < dim; ++d)
+        y[d] = x[d];
+      return y;
+    };
     if (mpi::n_ranks() == 1)
       {
-        places.points.resize(n);
-        DoFTools::map_dofs_to_support_points(mapping,
-                                             dof_handler,
-                                             places.points);
+        std::vector<Point<dim>> points(n);
+        DoFTools::map_dofs_to_support_points(mapping, dof_handler, points);
+        for (const auto &x : points)
+          places.points.push_back(embedded(x));
       }
     else
       {
         std::map<types::global_dof_index, Point<dim>> points;
         DoFTools::map_dofs_to_support_points(mapping, dof_handler, points);
         for (const auto i : places.owned)
-          places.points.push_back(points.at(i));
+          places.points.push_back(embedded(points.at(i)));
       }
     // The owned DoFs come first in the mode vectors' layout.
     places.components.assign(dof_component.begin(), dof_component.begin() + n);
@@ -349,15 +355,27 @@ namespace thinlayer
                            "at least about 1e-8 E/h (E and h of the cells)");
       }
     // Q9 with 2x2 points has zero-energy modes of its own, which
-    // few cells do not suppress: name the element, not the supports.
-    if (!parameters.discretisation.serendipity &&
-        parameters.discretisation.gauss_points_per_direction == 2)
-      throw InputError(parameters.parameter_file,
-                       "Discretisation/Element",
-                       matrix + "Q9 with 2x2 Gauss points has spurious "
-                                "zero-energy modes that this mesh does not "
-                                "suppress; use Q8, or 3x3 points (or "
-                                "constrain enough components)");
+    // few cells do not suppress: name the element, not the supports. So
+    // have both hexahedra with 2x2x2 points (Q20's six modes die out in a
+    // mesh of a few cells).
+    if (parameters.discretisation.gauss_points_per_direction == 2)
+      {
+        if (dim == 3)
+          throw InputError(parameters.parameter_file,
+                           "Discretisation/Gauss points per direction",
+                           matrix + "Q20 and Q27 with 2x2x2 Gauss points "
+                                    "have spurious zero-energy modes that "
+                                    "this mesh does not suppress; use more "
+                                    "cells, or 3x3x3 points (or constrain "
+                                    "enough components)");
+        if (!parameters.discretisation.serendipity)
+          throw InputError(parameters.parameter_file,
+                           "Discretisation/Element",
+                           matrix + "Q9 with 2x2 Gauss points has spurious "
+                                    "zero-energy modes that this mesh does "
+                                    "not suppress; use Q8, or 3x3 points (or "
+                                    "constrain enough components)");
+      }
     throw InputError(parameters.parameter_file,
                      "Boundary <id>/Constrained components",
                      matrix + "constrain enough displacement components to "
@@ -381,4 +399,20 @@ namespace thinlayer
   Analysis<2>::time_substitution();
   template void
   Analysis<2>::throw_singular(const unsigned int) const;
+  template void
+  Analysis<3>::elastic_solve(ModeVectors &);
+  template OwnedDofPlaces
+  Analysis<3>::owned_dof_places() const;
+  template void
+  Analysis<3>::check_supports_and_load() const;
+  template void
+  Analysis<3>::factorise_stiffness();
+  template void
+  Analysis<3>::set_up_iterative_solvers();
+  template double
+  Analysis<3>::linear_iterations_per_solve() const;
+  template void
+  Analysis<3>::time_substitution();
+  template void
+  Analysis<3>::throw_singular(const unsigned int) const;
 } // namespace thinlayer

@@ -8,7 +8,6 @@
 #include <thinlayer/parallel/mpi.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -19,24 +18,33 @@ namespace thinlayer
 {
   namespace
   {
-    using Motions = std::array<Vector<double>, 3>;
+    using Motions = std::vector<Vector<double>>;
+
+    /// The number of rigid motions of a body on a mesh of dimension
+    /// @p dimension: two translations and a rotation, or three of each.
+    unsigned int
+    n_rigid_motions(const unsigned int dimension)
+    {
+      return dimension == 3 ? 6 : 3;
+    }
+
 
     /// The centre of the bounding box of every rank's @p points, and half
     /// its diagonal (at least 1e-300).
     void
-    bounding_box_centre(const std::vector<Point<2>> &points,
-                        Point<2>                    &centre,
+    bounding_box_centre(const std::vector<Point<3>> &points,
+                        Point<3>                    &centre,
                         double                      &size)
     {
       const double infinity = std::numeric_limits<double>::infinity();
-      Point<2>     low(infinity, infinity), high(-infinity, -infinity);
+      Point<3>     low(infinity, infinity, infinity), high(-low);
       for (const auto &p : points)
-        for (unsigned int d = 0; d < 2; ++d)
+        for (unsigned int d = 0; d < 3; ++d)
           {
             low[d]  = std::min(low[d], p[d]);
             high[d] = std::max(high[d], p[d]);
           }
-      for (unsigned int d = 0; d < 2; ++d)
+      for (unsigned int d = 0; d < 3; ++d)
         {
           low[d]  = -mpi::max(-low[d]);
           high[d] = mpi::max(high[d]);
@@ -51,23 +59,31 @@ namespace thinlayer
     std::vector<Vector<double>>
     motions_about(const OwnedDofPlaces &places,
                   const unsigned int    n_components,
-                  const Point<2>       &centre,
+                  const Point<3>       &centre,
                   const double          size)
     {
+      // Rigid motions where the components are Cartesian: translations,
+      // then rotations (about z in the plane; about x, y, z in space).
+      const bool cartesian =
+        n_components == places.dimension && n_components >= 2;
+      const unsigned int n_motions =
+        cartesian ? n_rigid_motions(places.dimension) : n_components;
       const unsigned int          n = places.points.size();
       std::vector<Vector<double>> motions;
-      for (unsigned int k = 0; k < (n_components == 2 ? 3 : n_components); ++k)
+      for (unsigned int k = 0; k < n_motions; ++k)
         {
           motions.emplace_back(n);
           for (unsigned int i = 0; i < n; ++i)
             {
               const unsigned int c = places.components[i];
-              if (n_components != 2 || k < 2)
+              if (!cartesian || k < n_components)
                 motions[k][i] = c == k ? 1. : 0.;
               else
                 {
-                  const Tensor<1, 2> x = (places.points[i] - centre) / size;
-                  motions[k][i]        = c == 0 ? -x[1] : x[0];
+                  const Tensor<1, 3> x = (places.points[i] - centre) / size;
+                  Tensor<1, 3>       axis;
+                  axis[n_components == 2 ? 2 : k - n_components] = 1;
+                  motions[k][i] = cross_product_3d(axis, x)[c];
                 }
             }
         }
@@ -81,28 +97,30 @@ namespace thinlayer
      * rows, zero on the constrained ones.
      */
     std::string
-    free_motion(const Point<2> &centre,
-                const double    size,
-                Motions        &image,
-                const Motions  &scale)
+    free_motion(const Point<3>    &centre,
+                const double       size,
+                const unsigned int dimension,
+                Motions           &image,
+                const Motions     &scale)
     {
       // K R, each column scaled by the largest |K| |r| of a row, reduced
-      // by modified Gram-Schmidt to a 3x3 R with the same singular values
-      // (squaring into a Gram matrix would lose the small ones to
+      // by modified Gram-Schmidt to a square R with the same singular
+      // values (squaring into a Gram matrix would lose the small ones to
       // rounding).
       // deal.II's vector operations refuse empty vectors: a rank may own
       // no rows.
-      const bool            rows = image[0].size() > 0;
-      std::array<double, 3> norm;
-      for (unsigned int k = 0; k < 3; ++k)
+      const unsigned int  n_motions = image.size();
+      const bool          rows      = image[0].size() > 0;
+      std::vector<double> norm(n_motions);
+      for (unsigned int k = 0; k < n_motions; ++k)
         {
           norm[k] =
             std::max(mpi::max(rows ? scale[k].linfty_norm() : 0.), 1e-300);
           if (rows)
             image[k] /= norm[k];
         }
-      LAPACKFullMatrix<double> r(3, 3);
-      for (unsigned int k = 0; k < 3; ++k)
+      LAPACKFullMatrix<double> r(n_motions, n_motions);
+      for (unsigned int k = 0; k < n_motions; ++k)
         {
           for (unsigned int l = 0; l < k; ++l)
             {
@@ -115,27 +133,47 @@ namespace thinlayer
             image[k] /= r(k, k);
         }
       r.compute_svd();
-      if (!(r.singular_value(2) < 1e-9))
+      if (!(r.singular_value(n_motions - 1) < 1e-9))
         return "";
 
-      // The free motion, in the motions' own units.
+      // The free motion, in the motions' own units: a translation t and a
+      // rotation w (about z in the plane), u(x) = t + w x (x - centre) /
+      // size.
       const LAPACKFullMatrix<double> &vt = r.get_svd_vt();
-      std::array<double, 3>           c;
-      for (unsigned int k = 0; k < 3; ++k)
-        c[k] = vt(2, k) / norm[k];
+      Tensor<1, 3>                    t, w;
+      for (unsigned int k = 0; k < n_motions; ++k)
+        {
+          const double c = vt(n_motions - 1, k) / norm[k];
+          if (k < dimension)
+            t[k] = c;
+          else
+            w[dimension == 2 ? 2 : k - dimension] = c;
+        }
       // A coordinate, rounding noise below 1e-9 of the body's size shown as 0.
       const auto coordinate = [size](const double x) {
         return text_format::printf("%.6g", std::abs(x) < 1e-9 * size ? 0. : x);
       };
-      if (std::abs(c[2]) > 1e-6 * std::max(std::abs(c[0]), std::abs(c[1])))
-        return "a rotation about (" +
-               coordinate(centre[0] - c[1] * size / c[2]) + ", " +
-               coordinate(centre[1] + c[0] * size / c[2]) + ")";
       using text_format::printf;
-      const double length = std::hypot(c[0], c[1]);
-      return "a translation in the direction (" +
-             printf("%.3g", c[0] / length) + ", " +
-             printf("%.3g", c[1] / length) + ")";
+      const auto direction = [&](const Tensor<1, 3> &v) {
+        std::string text;
+        for (unsigned int d = 0; d < dimension; ++d)
+          text += (d == 0 ? "(" : ", ") + printf("%.3g", v[d] / v.norm());
+        return text + ")";
+      };
+      if (w.norm() > 1e-6 * t.norm())
+        {
+          // The axis: the points that only move along w.
+          const Point<3> through =
+            centre + size * cross_product_3d(w, t) / w.norm_square();
+          std::string point;
+          for (unsigned int d = 0; d < dimension; ++d)
+            point += (d == 0 ? "(" : ", ") + coordinate(through[d]);
+          point += ")";
+          return dimension == 2 ? "a rotation about " + point
+                                : "a rotation about the axis " + direction(w) +
+                                    " through " + point;
+        }
+      return "a translation in the direction " + direction(t);
     }
 
 
@@ -153,24 +191,25 @@ namespace thinlayer
     {
       const IndexSet &owned = places.owned;
       const auto      n     = owned.n_elements();
-      Point<2>        centre;
+      Point<3>        centre;
       double          size;
       bounding_box_centre(places.points, centre, size);
       const std::vector<Vector<double>> motions =
-        motions_about(places, 2, centre, size);
+        motions_about(places, places.dimension, centre, size);
+      const unsigned int n_motions = motions.size();
 
       // The motions with the supports held, the columns' imported from
       // their owners.
       IndexSet ghosts = columns;
       ghosts.subtract_set(owned);
-      std::array<LinearAlgebra::distributed::Vector<double>, 3> motion;
-      const auto                                                partitioner =
+      std::vector<LinearAlgebra::distributed::Vector<double>> motion(n_motions);
+      const auto                                              partitioner =
         std::make_shared<Utilities::MPI::Partitioner>(owned,
                                                       ghosts,
                                                       mpi::n_ranks() > 1
                                                         ? mpi::communicator()
                                                         : MPI_COMM_SELF);
-      for (unsigned int k = 0; k < 3; ++k)
+      for (unsigned int k = 0; k < n_motions; ++k)
         {
           motion[k].reinit(partitioner);
           for (unsigned int r = 0; r < n; ++r)
@@ -185,8 +224,8 @@ namespace thinlayer
             motion[k].update_ghost_values();
         }
 
-      Motions image, scale;
-      for (unsigned int k = 0; k < 3; ++k)
+      Motions image(n_motions), scale(n_motions);
+      for (unsigned int k = 0; k < n_motions; ++k)
         {
           image[k].reinit(n);
           scale[k].reinit(n);
@@ -196,7 +235,7 @@ namespace thinlayer
           const auto i           = owned.nth_index_in_set(r);
           const bool constrained = constraints.is_constrained(i);
           for_each_entry(i, [&](const types::global_dof_index j, double value) {
-            for (unsigned int k = 0; k < 3; ++k)
+            for (unsigned int k = 0; k < n_motions; ++k)
               {
                 const double product = value * motion[k](j);
                 image[k][r] += product;
@@ -206,10 +245,10 @@ namespace thinlayer
               }
           });
           if (constrained)
-            for (unsigned int k = 0; k < 3; ++k)
+            for (unsigned int k = 0; k < n_motions; ++k)
               image[k][r] = 0;
         }
-      return free_motion(centre, size, image, scale);
+      return free_motion(centre, size, places.dimension, image, scale);
     }
   } // namespace
 
@@ -218,11 +257,11 @@ namespace thinlayer
   rigid_body_motions(const OwnedDofPlaces &places,
                      const unsigned int    n_components)
   {
-    // The rotation about the centre of the bounding box, scaled by its
-    // size, so that the three motions have displacements of one size.
-    Point<2> centre;
+    // The rotations about the centre of the bounding box, scaled by its
+    // size, so that all motions have displacements of one size.
+    Point<3> centre;
     double   size = 1;
-    if (n_components == 2)
+    if (n_components == places.dimension)
       bounding_box_centre(places.points, centre, size);
     return motions_about(places, n_components, centre, size);
   }

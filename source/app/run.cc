@@ -37,18 +37,41 @@ namespace thinlayer
     /// The model and its size, on screen. File names only: the full paths
     /// are in summary.json, and the screen output stays the same wherever
     /// the project is checked out.
+    /// The element's name: Q8 or Q9 in 2D, Q20 or Q27 in 3D.
+    std::string
+    element_name(const Parameters &p)
+    {
+      const bool serendipity = p.discretisation.serendipity;
+      if (p.kinematics.dimension == 3)
+        return serendipity ? "Q20" : "Q27";
+      return serendipity ? "Q8" : "Q9";
+    }
+
+
+    /// The Gauss rule's name: 2x2, 3x3x3 and so on.
+    std::string
+    gauss_rule_name(const Parameters &p)
+    {
+      const std::string n =
+        std::to_string(p.discretisation.gauss_points_per_direction);
+      std::string rule = n;
+      for (unsigned int d = 1; d < p.kinematics.dimension; ++d)
+        rule += 'x' + n;
+      return rule;
+    }
+
+
+    template <int dim>
     void
-    print_model(const Parameters  &p,
-                const Scene       &scene,
-                const Analysis<2> &analysis,
-                const std::string &warnings,
-                std::ostream      &out)
+    print_model(const Parameters    &p,
+                const Scene<dim>    &scene,
+                const Analysis<dim> &analysis,
+                const std::string   &warnings,
+                std::ostream        &out)
     {
       out << "  mesh " << file_name(p.mesh.file) << ": "
           << scene.triangulation().n_active_cells() << " cells, "
-          << (p.discretisation.serendipity ? "Q8" : "Q9") << ", "
-          << p.discretisation.gauss_points_per_direction << 'x'
-          << p.discretisation.gauss_points_per_direction << " Gauss points, "
+          << element_name(p) << ", " << gauss_rule_name(p) << " Gauss points, "
           << analysis.n_dofs() << " DoFs (" << analysis.n_equations()
           << " equations)\n";
       if (p.kinematics.fourier)
@@ -110,20 +133,23 @@ namespace thinlayer
 
 
     /// The model part of the summary: what ran, and its size.
+    template <int dim>
     void
-    describe_model(const Parameters  &p,
-                   const Scene       &scene,
-                   const Analysis<2> &analysis,
-                   RunSummary        &s)
+    describe_model(const Parameters    &p,
+                   const Scene<dim>    &scene,
+                   const Analysis<dim> &analysis,
+                   RunSummary          &s)
     {
       s.parameter_file      = p.parameter_file;
       s.mesh_file           = p.mesh.file;
       s.geometry_parameters = p.mesh.geometry_parameters;
-      s.kinematics          = p.kinematics.fourier ? "fourier" : "plane strain";
+      s.kinematics          = p.kinematics.fourier          ? "fourier"
+                              : p.kinematics.dimension == 3 ? "3d"
+                                                            : "plane strain";
       for (const auto n : p.kinematics.harmonics)
         s.harmonics += (s.harmonics.empty() ? "" : " ") + std::to_string(n);
       s.stations = p.kinematics.station_angles.size();
-      s.element  = p.discretisation.serendipity ? "Q8" : "Q9";
+      s.element  = element_name(p);
       s.gauss_points_per_direction =
         p.discretisation.gauss_points_per_direction;
       s.cells     = scene.triangulation().n_active_cells();
@@ -140,6 +166,7 @@ namespace thinlayer
      * The run itself; @p open_directory gives the directory to write into,
      * called once all input has been checked.
      */
+    template <int dim>
     RunSummary
     run(const Parameters                   &p,
         const std::function<std::string()> &open_directory,
@@ -153,12 +180,12 @@ namespace thinlayer
       for (const std::string &warning : p.warnings)
         out << "  warning: " << warning << '\n';
       out << "  meshing " << file_name(p.mesh.file) << std::endl;
-      const Scene scene = [&]() {
+      const Scene<dim> scene = [&]() {
         TimerOutput::Scope scope(timer, "mesh");
-        return Scene(p, out);
+        return Scene<dim>(p, out);
       }();
 
-      Analysis<2> analysis(p, scene.triangulation());
+      Analysis<dim> analysis(p, scene.triangulation());
       {
         TimerOutput::Scope scope(timer, "setup and factorisation");
         out << "  setting up: assembling and factorising the stiffness"
@@ -167,13 +194,13 @@ namespace thinlayer
       }
       // The stepping owns the solution method; Newton's sparsity and its
       // cells' elastic matrices are set up here.
-      std::unique_ptr<StepSolver<2>> solver;
+      std::unique_ptr<StepSolver<dim>> solver;
       {
         TimerOutput::Scope scope(timer, "setup and factorisation");
-        solver = std::make_unique<StepSolver<2>>(p.solver, analysis);
+        solver = std::make_unique<StepSolver<dim>>(p.solver, analysis);
       }
-      const Monitors<2> monitors(p.monitors, analysis, p.parameter_file);
-      std::vector<LayerProfile> layers;
+      const Monitors<dim> monitors(p.monitors, analysis, p.parameter_file);
+      std::vector<LayerProfile<dim>> layers;
       for (const types::material_id id : p.layers.material_ids)
         layers.emplace_back(analysis, id, p.parameter_file);
 
@@ -188,7 +215,8 @@ namespace thinlayer
       print_model(p, scene, analysis, summary.warnings, out);
 
       const ProgrammeResult run =
-        Programme<2>(p, analysis, *solver, monitors, layers, writer, timer, out)
+        Programme<dim>(
+          p, analysis, *solver, monitors, layers, writer, timer, out)
           .run();
 
       judge_outcome(analysis.has_external_load(), run, summary);
@@ -241,6 +269,17 @@ namespace thinlayer
         }
       return summary;
     }
+
+
+    /// run() on the mesh's dimension.
+    RunSummary
+    run_in_dimension(const Parameters                   &p,
+                     const std::function<std::string()> &open_directory,
+                     std::ostream                       &out)
+    {
+      return p.kinematics.dimension == 3 ? run<3>(p, open_directory, out)
+                                         : run<2>(p, open_directory, out);
+    }
   } // namespace
 
 
@@ -253,7 +292,7 @@ namespace thinlayer
       {
         // Rank 0 writes every file (OutputWriter), so only it has a
         // results directory.
-        summary = run(
+        summary = run_in_dimension(
           p,
           [&]() {
             return mpi::on_root([&]() {
@@ -281,7 +320,7 @@ namespace thinlayer
                const std::string &directory,
                std::ostream      &out)
   {
-    return run(
+    return run_in_dimension(
       p,
       [&]() {
         if (mpi::is_root())

@@ -553,7 +553,9 @@ namespace thinlayer
       if (points[p].curve == curve)
         {
           result.samples.push_back(
-            {points[p].run, points[p].arc_length, points[p].position});
+            {points[p].run,
+             points[p].arc_length,
+             Point<3>(points[p].position[0], points[p].position[1], 0)});
           indices.push_back(p);
         }
     for (unsigned int s = 0; s < n_stations; ++s)

@@ -55,9 +55,45 @@ namespace thinlayer
   }
 
 
+  namespace
+  {
+    /// The CSV of a surface's profile (one station).
+    std::string
+    surface_csv(const Profile &profile)
+    {
+      const auto         number = text_format::csv_number;
+      std::ostringstream out;
+      out << "x,y,z,t1_x,t1_y,t1_z,n_x,n_y,n_z,slip_1,slip_2,opening,"
+             "slip_increment_1,opening_increment,shear_traction_1,"
+             "shear_traction_2,normal_traction,yield_ratio,plastic\n";
+      const auto &values = profile.stations[0];
+      for (unsigned int k = 0; k < profile.surface_samples.size(); ++k)
+        {
+          const SurfaceSample   &s = profile.surface_samples[k];
+          const InterfaceValues &v = values[k];
+          for (unsigned int d = 0; d < 3; ++d)
+            out << number(s.position[d]) << ',';
+          for (unsigned int d = 0; d < 3; ++d)
+            out << number(s.tangent[d]) << ',';
+          for (unsigned int d = 0; d < 3; ++d)
+            out << number(s.normal[d]) << ',';
+          out << number(v.slip) << ',' << number(v.slip_out_of_plane) << ','
+              << number(v.opening) << ',' << number(v.slip_increment) << ','
+              << number(v.opening_increment) << ',' << number(v.shear_traction)
+              << ',' << number(v.shear_traction_out_of_plane) << ','
+              << number(v.normal_traction) << ',' << number(v.yield_ratio)
+              << ',' << (v.plastic ? 1 : 0) << '\n';
+        }
+      return out.str();
+    }
+  } // namespace
+
+
   std::string
   profile_csv(const Profile &profile, const Kinematics &kinematics)
   {
+    if (!profile.surface_samples.empty())
+      return surface_csv(profile);
     const std::vector<ProfileSample> &samples = profile.samples;
     const auto                        number  = text_format::csv_number;
     std::ostringstream                out;
@@ -97,49 +133,84 @@ namespace thinlayer
     const std::vector<ProfileSample> &samples = profile.samples;
     std::ostringstream                out;
     out << std::setprecision(10);
-    // The runs, each a polyline through its samples in order.
-    std::vector<std::vector<unsigned int>> runs;
-    for (unsigned int k = 0; k < samples.size(); ++k)
+    const bool surface = !profile.surface_samples.empty();
+    if (surface)
       {
-        if (samples[k].run >= runs.size())
-          runs.resize(samples[k].run + 1);
-        runs[samples[k].run].push_back(k);
+        // Each sample's patch a quadrilateral, its values the cell's.
+        const auto &patches = profile.surface_samples;
+        out << "<?xml version=\"1.0\"?>\n"
+            << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" "
+               "byte_order=\"LittleEndian\">\n<UnstructuredGrid>\n"
+            << "<Piece NumberOfPoints=\"" << 4 * patches.size()
+            << "\" NumberOfCells=\"" << patches.size() << "\">\n"
+            << "<Points>\n<DataArray type=\"Float64\" "
+               "NumberOfComponents=\"3\" format=\"ascii\">\n";
+        for (const SurfaceSample &s : patches)
+          for (const Point<3> &x : s.patch)
+            out << x[0] << ' ' << x[1] << ' ' << x[2] << '\n';
+        out << "</DataArray>\n</Points>\n<Cells>\n"
+            << "<DataArray type=\"Int64\" Name=\"connectivity\" "
+               "format=\"ascii\">\n";
+        for (std::size_t k = 0; k < 4 * patches.size(); ++k)
+          out << k << '\n';
+        out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" "
+               "format=\"ascii\">\n";
+        for (std::size_t k = 1; k <= patches.size(); ++k)
+          out << 4 * k << '\n';
+        out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" "
+               "format=\"ascii\">\n";
+        for (std::size_t k = 0; k < patches.size(); ++k)
+          out << "9\n"; // VTK_QUAD
+        out << "</DataArray>\n</Cells>\n<CellData>\n";
       }
-    out << "<?xml version=\"1.0\"?>\n"
-        << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" "
-           "byte_order=\"LittleEndian\">\n<UnstructuredGrid>\n"
-        << "<Piece NumberOfPoints=\"" << samples.size() << "\" NumberOfCells=\""
-        << runs.size() << "\">\n"
-        << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" "
-           "format=\"ascii\">\n";
-    for (const ProfileSample &s : samples)
-      out << s.position[0] << ' ' << s.position[1] << " 0\n";
-    out << "</DataArray>\n</Points>\n<Cells>\n"
-        << "<DataArray type=\"Int64\" Name=\"connectivity\" "
-           "format=\"ascii\">\n";
-    for (const auto &run : runs)
-      for (const unsigned int k : run)
-        out << k << '\n';
-    out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" "
-           "format=\"ascii\">\n";
-    std::size_t offset = 0;
-    for (const auto &run : runs)
-      out << (offset += run.size()) << '\n';
-    out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" "
-           "format=\"ascii\">\n";
-    for (std::size_t r = 0; r < runs.size(); ++r)
-      out << "4\n"; // VTK_POLY_LINE
-    out << "</DataArray>\n</Cells>\n<PointData>\n";
+    else
+      {
+        // The runs, each a polyline through its samples in order.
+        std::vector<std::vector<unsigned int>> runs;
+        for (unsigned int k = 0; k < samples.size(); ++k)
+          {
+            if (samples[k].run >= runs.size())
+              runs.resize(samples[k].run + 1);
+            runs[samples[k].run].push_back(k);
+          }
+        out << "<?xml version=\"1.0\"?>\n"
+            << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" "
+               "byte_order=\"LittleEndian\">\n<UnstructuredGrid>\n"
+            << "<Piece NumberOfPoints=\"" << samples.size()
+            << "\" NumberOfCells=\"" << runs.size() << "\">\n"
+            << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" "
+               "format=\"ascii\">\n";
+        for (const ProfileSample &s : samples)
+          out << s.position[0] << ' ' << s.position[1] << " 0\n";
+        out << "</DataArray>\n</Points>\n<Cells>\n"
+            << "<DataArray type=\"Int64\" Name=\"connectivity\" "
+               "format=\"ascii\">\n";
+        for (const auto &run : runs)
+          for (const unsigned int k : run)
+            out << k << '\n';
+        out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" "
+               "format=\"ascii\">\n";
+        std::size_t offset = 0;
+        for (const auto &run : runs)
+          out << (offset += run.size()) << '\n';
+        out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" "
+               "format=\"ascii\">\n";
+        for (std::size_t r = 0; r < runs.size(); ++r)
+          out << "4\n"; // VTK_POLY_LINE
+        out << "</DataArray>\n</Cells>\n<PointData>\n";
+      }
 
     using Field = double                              InterfaceValues::*;
     const std::vector<std::pair<const char *, Field>> fields = {
       {"slip", &InterfaceValues::slip},
       {"slip_out_of_plane", &InterfaceValues::slip_out_of_plane},
       {"opening", &InterfaceValues::opening},
-      {"slip_increment", &InterfaceValues::slip_increment},
+      {surface ? "slip_increment_1" : "slip_increment",
+       &InterfaceValues::slip_increment},
       {"opening_increment", &InterfaceValues::opening_increment},
-      {"shear_traction", &InterfaceValues::shear_traction},
-      {"shear_traction_out_of_plane",
+      {surface ? "shear_traction_1" : "shear_traction",
+       &InterfaceValues::shear_traction},
+      {surface ? "shear_traction_2" : "shear_traction_out_of_plane",
        &InterfaceValues::shear_traction_out_of_plane},
       {"normal_traction", &InterfaceValues::normal_traction},
       {"yield_ratio", &InterfaceValues::yield_ratio}};
@@ -165,7 +236,8 @@ namespace thinlayer
           out << (v.plastic ? 1 : 0) << '\n';
         out << "</DataArray>\n";
       }
-    out << "</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+    out << (surface ? "</CellData>" : "</PointData>")
+        << "\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
     return out.str();
   }
 } // namespace thinlayer

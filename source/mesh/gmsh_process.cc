@@ -140,8 +140,12 @@ namespace thinlayer
     const std::string        msh_file = directory.path + "/mesh.msh";
     const std::string        log_file = directory.path + "/gmsh.log";
 
-    std::vector<std::string> arguments = {
-      THINLAYER_GMSH_EXECUTABLE, "-2", "-format", "msh22", "-nt", "1"};
+    std::vector<std::string> arguments = {THINLAYER_GMSH_EXECUTABLE,
+                                          job.dimension == 3 ? "-3" : "-2",
+                                          "-format",
+                                          "msh22",
+                                          "-nt",
+                                          "1"};
     for (const auto &[name, value] : job.parameters)
       {
         std::ostringstream text;

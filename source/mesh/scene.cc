@@ -88,7 +88,8 @@ namespace thinlayer
       return run_gmsh({p.mesh.file,
                        p.mesh.geometry_parameters,
                        p.mesh.max_cells,
-                       p.parameter_file},
+                       p.parameter_file,
+                       p.kinematics.dimension},
                       progress);
     }
 
@@ -102,17 +103,25 @@ namespace thinlayer
      * 1e-12 of the mesh's extent squared (a thin layer of aspect ratio
      * 10^6 is still far above) turns the stiffness into rounding error.
      */
-    void
-    check_cell_shapes(const Triangulation<2> &tria, const std::string &file)
+    template <int dim>
+    double
+    squared_extent(const Triangulation<dim> &tria)
     {
-      Point<2> low = tria.get_vertices()[0], high = low;
+      Point<dim> low = tria.get_vertices()[0], high = low;
       for (const auto &v : tria.get_vertices())
-        for (unsigned int d = 0; d < 2; ++d)
+        for (unsigned int d = 0; d < dim; ++d)
           {
             low[d]  = std::min(low[d], v[d]);
             high[d] = std::max(high[d], v[d]);
           }
-      const double extent = (high - low).norm_square();
+      return (high - low).norm_square();
+    }
+
+
+    void
+    check_cell_shapes(const Triangulation<2> &tria, const std::string &file)
+    {
+      const double extent = squared_extent(tria);
       for (const auto &cell : tria.active_cell_iterators())
         {
           // deal.II numbers a quadrilateral's vertices lexicographically;
@@ -162,6 +171,71 @@ namespace thinlayer
     }
 
 
+    template <int dim>
+    std::string
+    text_of(const Point<dim> &x)
+    {
+      std::ostringstream text;
+      text << x;
+      return text.str();
+    }
+
+
+    /**
+     * Every cell a hexahedron whose trilinear map has a positive Jacobian
+     * at its eight corners, where it is the triple product of the three
+     * edges that meet there (the usual test of a hexahedron's validity; it
+     * catches inverted, folded and flattened cells and repeated corners),
+     * and whose corner products are above 1e-18 of the mesh's extent cubed
+     * (a thin layer of aspect ratio 10^6 is still far above).
+     */
+    void
+    check_cell_shapes(const Triangulation<3> &tria, const std::string &file)
+    {
+      const double extent = squared_extent(tria);
+      const double scale  = extent * std::sqrt(extent);
+      for (const auto &cell : tria.active_cell_iterators())
+        {
+          double smallest = std::numeric_limits<double>::max();
+          int    worst    = 0;
+          for (unsigned int v = 0; v < 8; ++v)
+            {
+              // deal.II numbers a hexahedron's vertices lexicographically:
+              // bit d of v says on which side of direction d it lies.
+              Tensor<1, 3> edge[3];
+              for (unsigned int d = 0; d < 3; ++d)
+                edge[d] = (cell->vertex(v ^ (1u << d)) - cell->vertex(v)) *
+                          ((v & (1u << d)) ? -1. : 1.);
+              const double product =
+                scalar_product(edge[0], cross_product_3d(edge[1], edge[2]));
+              if (product < smallest)
+                {
+                  smallest = product;
+                  worst    = v;
+                }
+            }
+          if (smallest > 1e-18 * scale)
+            continue;
+          std::ostringstream where;
+          where << "cell " << cell->active_cell_index() << " of physical "
+                << "volume " << cell->material_id() << ", corners";
+          for (unsigned int v = 0; v < 8; ++v)
+            where << " (" << cell->vertex(v) << ')';
+          throw InputError(
+            file,
+            "",
+            where.str() +
+              (smallest <= 0
+                 ? ": expected a hexahedron whose corners each span a "
+                   "positive volume, got one that is inverted, folded or "
+                   "flat at corner ("
+                 : ": the cell is smaller than 1e-18 of the mesh's extent "
+                   "cubed at corner (") +
+              text_of(cell->vertex(worst)) + ")");
+        }
+    }
+
+
     std::string
     describe(const std::set<unsigned int> &ids, const bool boundary = false)
     {
@@ -174,8 +248,11 @@ namespace thinlayer
   } // namespace
 
 
-  Scene::Scene(const Parameters &p, std::ostream &progress)
+  template <int dim>
+  Scene<dim>::Scene(const Parameters &p, std::ostream &progress)
   {
+    AssertThrow(p.kinematics.dimension == dim,
+                ExcMessage("A scene's dimension is the kinematics'."));
     std::error_code error;
     if (!std::filesystem::is_regular_file(p.mesh.file, error) ||
         !std::ifstream(p.mesh.file))
@@ -208,9 +285,10 @@ namespace thinlayer
     if (const std::string repeated = repeated_corner(mesh); !repeated.empty())
       throw InputError(p.mesh.file,
                        "",
-                       repeated +
-                         ": expected a quadrilateral with four distinct "
-                         "corners");
+                       repeated + (dim == 2 ? ": expected a quadrilateral "
+                                              "with four distinct corners"
+                                            : ": expected a hexahedron with "
+                                              "eight distinct corners"));
     if (!p.interface_elements.empty())
       {
         std::set<unsigned int> curves;
@@ -234,15 +312,17 @@ namespace thinlayer
   }
 
 
-  const Triangulation<2> &
-  Scene::triangulation() const
+  template <int dim>
+  const Triangulation<dim> &
+  Scene<dim>::triangulation() const
   {
     return tria;
   }
 
 
+  template <int dim>
   const std::string &
-  Scene::mesh_text() const
+  Scene<dim>::mesh_text() const
   {
     return msh;
   }
@@ -252,6 +332,9 @@ namespace thinlayer
   void
   check_ids(const Parameters &p, const Triangulation<dim> &tria)
   {
+    // gmsh's names for the groups that carry the material and boundary ids.
+    const std::string      cell_group = dim == 2 ? "surface" : "volume";
+    const std::string      face_group = dim == 2 ? "curve" : "surface";
     std::set<unsigned int> mesh_materials, mesh_boundaries;
     for (const auto &cell : tria.active_cell_iterators())
       {
@@ -298,22 +381,22 @@ namespace thinlayer
         throw InputError(p.parameter_file,
                          "Material " + std::to_string(id),
                          "the mesh has cells with material id " +
-                           std::to_string(id) +
-                           " (a physical surface) but this file has no "
+                           std::to_string(id) + " (a physical " + cell_group +
+                           ") but this file has no "
                            "'subsection Material " +
                            std::to_string(id) + "'");
     for (const auto &[id, material] : p.materials)
       if (mesh_materials.count(id) == 0)
         throw InputError(p.parameter_file,
                          "Material " + std::to_string(id),
-                         "the mesh has no physical surface " +
+                         "the mesh has no physical " + cell_group + " " +
                            std::to_string(id) + " (its material ids: " +
                            describe(mesh_materials) + ")");
     for (const auto &[id, boundary] : p.boundaries)
       if (mesh_boundaries.count(id) == 0)
         throw InputError(p.parameter_file,
                          "Boundary " + std::to_string(id),
-                         "the mesh has no physical curve " +
+                         "the mesh has no physical " + face_group + " " +
                            std::to_string(id) +
                            " on its boundary (its boundary ids: " +
                            describe(mesh_boundaries, true) + ")");
@@ -346,6 +429,10 @@ namespace thinlayer
   }
 
 
+  template class Scene<2>;
+  template class Scene<3>;
   template void
   check_ids(const Parameters &, const Triangulation<2> &);
+  template void
+  check_ids(const Parameters &, const Triangulation<3> &);
 } // namespace thinlayer

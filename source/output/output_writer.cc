@@ -83,11 +83,11 @@ namespace thinlayer
 
   template <int dim>
   void
-  OutputWriter::write_fields(const unsigned int               step,
-                             const double                     load_factor,
-                             const Analysis<dim>             &analysis,
-                             const double                     theta,
-                             const std::vector<LayerProfile> &interfaces)
+  OutputWriter::write_fields(const unsigned int                    step,
+                             const double                          load_factor,
+                             const Analysis<dim>                  &analysis,
+                             const double                          theta,
+                             const std::vector<LayerProfile<dim>> &interfaces)
   {
     // On several ranks every rank writes the piece of its own cells.
     const bool pieces = mpi::n_ranks() > 1;
@@ -157,7 +157,7 @@ namespace thinlayer
               }
             for (unsigned int k = 0; k < layers.size(); ++k)
               data_out.add_data_vector(layers[k],
-                                       LayerProfile::cell_field_names[k] +
+                                       LayerProfile<dim>::cell_field_names[k] +
                                          suffix);
           }
       }
@@ -194,15 +194,15 @@ namespace thinlayer
   template <int dim>
   void
   OutputWriter::write_interface_profiles(
-    const unsigned int               step,
-    const double                     load_factor,
-    const Analysis<dim>             &analysis,
-    const std::vector<LayerProfile> &interfaces,
-    const bool                       with_vtu)
+    const unsigned int                    step,
+    const double                          load_factor,
+    const Analysis<dim>                  &analysis,
+    const std::vector<LayerProfile<dim>> &interfaces,
+    const bool                            with_vtu)
   {
     // Every rank takes part: each holds the points of its own cells.
     std::vector<NamedProfile> profiles;
-    for (const LayerProfile &interface : interfaces)
+    for (const LayerProfile<dim> &interface : interfaces)
       profiles.push_back(
         {"interface-" + std::to_string(interface.get_material_id()),
          interface.profile(analysis)});
@@ -316,9 +316,16 @@ namespace thinlayer
             const auto         z = cell->vertex_dof_index(v, 1);
             const auto         t = fourier ? cell->vertex_dof_index(v, 2) : r;
             std::ostringstream row;
-            row << std::setprecision(10) << cell->vertex(v)[0] << ','
-                << cell->vertex(v)[1] << ',' << x_component(u, r, t) << ','
-                << u[z] << ',' << x_component(du, r, t) << ',' << du[z] << '\n';
+            row << std::setprecision(10);
+            for (unsigned int d = 0; d < dim; ++d)
+              row << cell->vertex(v)[d] << ',';
+            for (const ModeVector *w : {&u, &du})
+              {
+                row << x_component(*w, r, t) << ',' << (*w)[z];
+                if (dim == 3)
+                  row << ',' << (*w)[cell->vertex_dof_index(v, dim - 1)];
+                row << (w == &u ? ',' : '\n');
+              }
             rows.emplace_back(first[cell->vertex_index(v)], row.str());
           }
     if (mpi::n_ranks() > 1)
@@ -332,7 +339,8 @@ namespace thinlayer
     if (!writes)
       return;
     std::sort(rows.begin(), rows.end());
-    std::string csv = "x,y,u_x,u_y,du_x,du_y\n";
+    std::string csv = dim == 3 ? "x,y,z,u_x,u_y,u_z,du_x,du_y,du_z\n"
+                               : "x,y,u_x,u_y,du_x,du_y\n";
     for (const auto &row : rows)
       csv += row.second;
     write_file("displacements.csv", csv);
@@ -418,18 +426,22 @@ namespace thinlayer
   }
 
 
-  template void
-  OutputWriter::write_displacements(const Analysis<2> &, const double) const;
-  template void
-  OutputWriter::write_fields(const unsigned int,
-                             const double,
-                             const Analysis<2> &,
-                             const double,
-                             const std::vector<LayerProfile> &);
-  template void
-  OutputWriter::write_interface_profiles(const unsigned int,
-                                         const double,
-                                         const Analysis<2> &,
-                                         const std::vector<LayerProfile> &,
-                                         const bool);
+#define THINLAYER_INSTANTIATE(dim)                                       \
+  template void OutputWriter::write_displacements(const Analysis<dim> &, \
+                                                  const double) const;   \
+  template void OutputWriter::write_fields(                              \
+    const unsigned int,                                                  \
+    const double,                                                        \
+    const Analysis<dim> &,                                               \
+    const double,                                                        \
+    const std::vector<LayerProfile<dim>> &);                             \
+  template void OutputWriter::write_interface_profiles(                  \
+    const unsigned int,                                                  \
+    const double,                                                        \
+    const Analysis<dim> &,                                               \
+    const std::vector<LayerProfile<dim>> &,                              \
+    const bool);
+  THINLAYER_INSTANTIATE(2)
+  THINLAYER_INSTANTIATE(3)
+#undef THINLAYER_INSTANTIATE
 } // namespace thinlayer

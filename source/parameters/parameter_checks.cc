@@ -32,7 +32,7 @@ namespace thinlayer
   void
   check_expressions(const std::string                   &expressions,
                     const unsigned int                   n_components,
-                    const bool                           fourier,
+                    const std::string                   &variables,
                     const std::map<std::string, double> &constants,
                     const std::string                   &file,
                     const std::string                   &entry)
@@ -53,18 +53,19 @@ namespace thinlayer
         all_constants["pi"]             = numbers::PI;
         for (const auto &p : parts)
           {
-            f.initialize(fourier ? "r,z,theta" : "x,y,unused_z",
-                         p,
-                         all_constants);
+            f.initialize(variables, p, all_constants);
             (void)f.value(Point<3>(1, 0, 0));
           }
       }
     catch (const ExceptionBase &e)
       {
+        std::string names;
+        for (const auto &v : Utilities::split_string_list(variables, ','))
+          if (v.rfind("unused", 0) != 0)
+            names += (names.empty() ? "" : ", ") + v;
         throw InputError(file,
                          entry,
-                         std::string("expected function expressions of ") +
-                           (fourier ? "r, z, theta" : "x, y") +
+                         "expected function expressions of " + names +
                            " and the geometry parameters: " + message_of(e));
       }
   }

@@ -172,8 +172,16 @@ namespace thinlayer
                                   "Kinematics/Axis boundary id",
                                   "Monitors/Displacement angle"})
           refuse_if_given(entry,
-                          "in plane strain (it is for Kinematics/Type = "
-                          "fourier)");
+                          "in plane strain or 3d (it is for "
+                          "Kinematics/Type = fourier)");
+      // Q8 is the default in 3D too, where it stands for Q20: written out,
+      // it is a mistake.
+      if (p.kinematics.dimension == 3 &&
+          p.discretisation.element_name == "Q8" &&
+          given.count("Discretisation/Element") != 0)
+        throw InputError(p.parameter_file,
+                         "Discretisation/Element",
+                         "Q8 is a quadrilateral; expected Q20 or Q27 in 3d");
       using Measure = MonitorParameters::DisplacementMeasure;
       if (p.monitors.displacement_measure == Measure::boundary_average)
         refuse_if_given("Monitors/Displacement point",
@@ -324,7 +332,7 @@ namespace thinlayer
       p.parameter_file = file;
       p.mesh.parse(prm, file);
       p.kinematics.parse(prm, file);
-      p.discretisation.parse(prm);
+      p.discretisation.parse(prm, file, p.kinematics);
       if (material_ids.empty())
         throw InputError(file,
                          "Material <id>",
@@ -341,6 +349,12 @@ namespace thinlayer
         p.boundaries[id].parse(prm, file, id, p.kinematics, p.mesh);
       for (const auto id : curve_ids)
         {
+          if (p.kinematics.dimension == 3)
+            throw InputError(file,
+                             InterfaceElementParameters::section(id),
+                             "zero-thickness interface elements join the "
+                             "sides of a 2D mesh; in 3d they are not built "
+                             "yet (a thin layer of hexahedra, Layers, is)");
           if (boundary_ids.count(id) != 0)
             throw InputError(file,
                              InterfaceElementParameters::section(id),

@@ -311,6 +311,7 @@ namespace thinlayer
     MonitorParameters::load_component_names = {
       {LoadComponent::x, "x"},
       {LoadComponent::y, "y"},
+      {LoadComponent::z, "z"},
       {LoadComponent::moment, "moment"},
       {LoadComponent::torque, "torque"}};
 
@@ -349,6 +350,8 @@ namespace thinlayer
       Patterns::Selection(load_component_names.pattern()),
       "The resultant of the reactions. Plane strain (per unit length): x, "
       "y, or the moment about the out-of-plane axis through the origin. "
+      "3d: x, y, z, moment about the z axis and torque about the y axis, "
+      "both through the origin. "
       "Fourier (the whole body): y the axial force (harmonic 0), x the "
       "force in the direction theta = 0 (harmonic 1), moment the "
       "overturning moment about the horizontal axis through the origin "
@@ -360,7 +363,7 @@ namespace thinlayer
                       "Material id over which a stress is averaged.");
     prm.declare_entry("Load stress component",
                       "xx",
-                      Patterns::Selection("xx|yy|zz|xy"),
+                      Patterns::Selection("xx|yy|zz|xy|xz|yz"),
                       "The averaged stress component (tension positive).");
     prm.declare_entry("Displacement measure",
                       "boundary average",
@@ -377,8 +380,9 @@ namespace thinlayer
                       "along the axis.");
     prm.declare_entry("Displacement point",
                       "0, 0",
-                      Patterns::List(Patterns::Double(), 2, 2),
-                      "The point x, y for the point measure.");
+                      Patterns::List(Patterns::Double(), 2, 3),
+                      "The point x, y (x, y, z in 3d) for the point "
+                      "measure.");
     prm.declare_entry("Displacement boundary id",
                       "0",
                       Patterns::Integer(0),
@@ -387,8 +391,9 @@ namespace thinlayer
                       "nodes are reported too.");
     prm.declare_entry("Displacement component",
                       "y",
-                      Patterns::Selection("x|y"),
-                      "Component of the monitored displacement.");
+                      Patterns::Selection("x|y|z"),
+                      "Component of the monitored displacement (z in 3d "
+                      "only).");
     prm.declare_entry("Displacement scale",
                       "1",
                       Patterns::Double(),
@@ -404,15 +409,24 @@ namespace thinlayer
     const KinematicsParameters &kinematics) const
   {
     const std::string component = load_component_names.name(load_component);
+    if (kinematics.dimension == 3)
+      return;
     if (!kinematics.fourier)
       {
-        if (load_component == LoadComponent::torque)
+        if (load_component == LoadComponent::torque ||
+            load_component == LoadComponent::z)
           throw InputError(file,
                            "Monitors/Load component",
-                           "a torque needs Fourier kinematics; in plane "
-                           "strain expected x, y or moment");
+                           "a " + component +
+                             " resultant needs Fourier or 3d kinematics; "
+                             "in plane strain expected x, y or moment");
         return;
       }
+    if (load_component == LoadComponent::z)
+      throw InputError(file,
+                       "Monitors/Load component",
+                       "a Fourier body's resultants are x, y, moment and "
+                       "torque; z is for 3d kinematics");
     // The resultant comes from one harmonic of one series: without it the
     // body carries no such resultant, which is not what was meant.
     const unsigned int n      = (load_component == LoadComponent::y ||
@@ -472,7 +486,21 @@ namespace thinlayer
                          "state as 0");
     load_boundary_id         = prm.get_integer("Load boundary id");
     displacement_boundary_id = prm.get_integer("Displacement boundary id");
-    displacement_component = (prm.get("Displacement component") == "x") ? 0 : 1;
+    const std::string displacement = prm.get("Displacement component");
+    displacement_component         = displacement == "x"   ? 0
+                                     : displacement == "y" ? 1
+                                                           : 2;
+    if (displacement_component == 2 && kinematics.dimension != 3)
+      throw InputError(file,
+                       "Monitors/Displacement component",
+                       "z is a component of 3d kinematics; expected x or y");
+    if (displacement_measure == DisplacementMeasure::point &&
+        displacement_point.size() != kinematics.dimension)
+      throw InputError(file,
+                       "Monitors/Displacement point",
+                       "expected " + std::to_string(kinematics.dimension) +
+                         " coordinates, got '" + prm.get("Displacement point") +
+                         "'");
     prm.leave_subsection();
   }
 
@@ -520,7 +548,7 @@ namespace thinlayer
       {
         check_expressions(reference,
                           1,
-                          false,
+                          "x,y,unused_z",
                           mesh.geometry_parameters,
                           file,
                           "Reference/Analytic load");

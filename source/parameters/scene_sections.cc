@@ -66,24 +66,23 @@ namespace thinlayer
 
 
     std::vector<bool>
-    parse_components(const std::string &text,
-                     const bool         fourier,
-                     const std::string &file,
-                     const std::string &entry)
+    parse_components(const std::string              &text,
+                     const std::vector<std::string> &names,
+                     const std::string              &file,
+                     const std::string              &entry)
     {
-      const std::vector<std::string> names =
-        fourier ? std::vector<std::string>{"r", "z", "theta"}
-                : std::vector<std::string>{"x", "y"};
+      std::string listed;
+      for (const auto &name : names)
+        listed += (listed.empty() ? "" : ", ") + name;
       std::vector<bool> result(names.size(), false);
       for (const auto &c : Utilities::split_string_list(text, ','))
         {
           const auto k = std::find(names.begin(), names.end(), c);
           if (k == names.end())
-            throw InputError(
-              file,
-              entry,
-              std::string("expected a comma-separated list of ") +
-                (fourier ? "r, z, theta" : "x, y") + ", got '" + c + "'");
+            throw InputError(file,
+                             entry,
+                             "expected a comma-separated list of " + listed +
+                               ", got '" + c + "'");
           if (result[k - names.begin()])
             throw InputError(file,
                              entry,
@@ -151,13 +150,14 @@ namespace thinlayer
     prm.enter_subsection("Kinematics");
     prm.declare_entry("Type",
                       "plane strain",
-                      Patterns::Selection("plane strain|fourier"),
+                      Patterns::Selection("plane strain|fourier|3d"),
                       "plane strain: the mesh is a cross-section, "
                       "components x, y. fourier: the mesh is the r-z plane "
                       "of an axisymmetric body (x = r >= 0, y = z the "
                       "axis) and the load need not be axisymmetric: the "
                       "displacement is a sum of Fourier harmonics, "
-                      "components r, z, theta.");
+                      "components r, z, theta. 3d: the mesh is the body "
+                      "itself, of hexahedra, components x, y, z.");
     prm.declare_entry("Harmonics",
                       "1",
                       Patterns::List(Patterns::Integer(0), 1),
@@ -241,7 +241,8 @@ namespace thinlayer
   {
     const std::string &file = parameter_file;
     prm.enter_subsection("Kinematics");
-    fourier = (prm.get("Type") == "fourier");
+    fourier   = (prm.get("Type") == "fourier");
+    dimension = (prm.get("Type") == "3d") ? 3 : 2;
     harmonics.clear();
     for (const auto &n : Utilities::split_string_list(prm.get("Harmonics")))
       {
@@ -281,33 +282,65 @@ namespace thinlayer
   }
 
 
+  std::vector<std::string>
+  KinematicsParameters::component_names() const
+  {
+    return fourier          ? std::vector<std::string>{"r", "z", "theta"}
+           : dimension == 3 ? std::vector<std::string>{"x", "y", "z"}
+                            : std::vector<std::string>{"x", "y"};
+  }
+
+
+  std::string
+  KinematicsParameters::expression_variables() const
+  {
+    return fourier ? "r,z,theta" : dimension == 3 ? "x,y,z" : "x,y,unused_z";
+  }
+
+
   void
   DiscretisationParameters::declare(ParameterHandler &prm)
   {
     prm.enter_subsection("Discretisation");
     prm.declare_entry("Element",
                       "Q8",
-                      Patterns::Selection("Q8|Q9"),
+                      Patterns::Selection("Q8|Q9|Q20|Q27"),
                       "Q8: 8-node serendipity quadrilateral (a Q2 element "
                       "whose centre node is constrained), the paper's; Q9: "
                       "Lagrangian 9-node quadrilateral, a refinement level "
                       "ahead of Q8 on rigid circular footings but, with 2x2 "
                       "points, singular on meshes of few cells (spurious "
-                      "zero-energy modes).");
+                      "zero-energy modes). In 3d: Q20, the 20-node "
+                      "serendipity hexahedron (a Q2 element whose face and "
+                      "body centres are constrained; the default there), or "
+                      "Q27, the Lagrangian 27-node one.");
     prm.declare_entry("Gauss points per direction",
                       "2",
                       Patterns::Integer(2, 3),
-                      "2: reduced 2x2 integration, as in the paper; 3: full "
-                      "3x3 integration.");
+                      "2: reduced 2x2 integration (2x2x2 in 3d), as in the "
+                      "paper; 3: full 3x3 (3x3x3) integration.");
     prm.leave_subsection();
   }
 
 
   void
-  DiscretisationParameters::parse(ParameterHandler &prm)
+  DiscretisationParameters::parse(ParameterHandler           &prm,
+                                  const std::string          &file,
+                                  const KinematicsParameters &kinematics)
   {
     prm.enter_subsection("Discretisation");
-    serendipity                = (prm.get("Element") == "Q8");
+    element_name          = prm.get("Element");
+    serendipity           = (element_name == "Q8" || element_name == "Q20");
+    const bool hexahedron = (element_name == "Q20" || element_name == "Q27");
+    if (hexahedron != (kinematics.dimension == 3) &&
+        !(element_name == "Q8" && kinematics.dimension == 3))
+      throw InputError(file,
+                       "Discretisation/Element",
+                       element_name + " is a " +
+                         (hexahedron ? "hexahedron" : "quadrilateral") +
+                         "; expected " +
+                         (kinematics.dimension == 3 ? "Q20 or Q27 in 3d"
+                                                    : "Q8 or Q9 on a 2D mesh"));
     gauss_points_per_direction = prm.get_integer("Gauss points per direction");
     prm.leave_subsection();
   }
@@ -443,15 +476,16 @@ namespace thinlayer
                       Patterns::Anything(),
                       "Comma-separated components whose displacement is "
                       "prescribed here: any of x, y in plane strain; of r, "
-                      "z, theta for Fourier kinematics (every harmonic); "
-                      "empty for none.");
+                      "z, theta for Fourier kinematics (every harmonic); of "
+                      "x, y, z in 3d; empty for none.");
     prm.declare_entry(
       "Displacement",
       "0",
       Patterns::Anything(),
       "Prescribed displacement per unit load factor of the constrained "
-      "components: one function expression of x, y (and the geometry "
-      "parameters) per component, separated by ';', or one expression "
+      "components: one function expression of x, y (x, y, z in 3d; and "
+      "the geometry parameters) per component, separated by ';', or one "
+      "expression "
       "for all components. For Fourier kinematics: the Cartesian "
       "components x; y; z (z along the axis) as expressions of r, z, "
       "theta, decomposed into the harmonics. Where boundary ids share a "
@@ -469,16 +503,19 @@ namespace thinlayer
                       Patterns::Anything(),
                       "Normal pressure per unit load factor, positive into "
                       "the body: one expression of x, y (r, z, theta for "
-                      "Fourier kinematics).");
+                      "Fourier kinematics; x, y, z in 3d).");
     prm.leave_subsection();
   }
 
 
   void
-  BoundaryParameters::check_loads_where_free(const std::string &file,
-                                             const std::string &section,
-                                             const bool         fourier) const
+  BoundaryParameters::check_loads_where_free(
+    const std::string          &file,
+    const std::string          &section,
+    const KinematicsParameters &kinematics) const
   {
+    const bool fourier = kinematics.fourier;
+    const auto names   = kinematics.component_names();
     // A load on a constrained component goes into the reaction and is
     // lost: say so rather than ignore it. Fourier tractions are Cartesian
     // and the constraints cylindrical, so there only a boundary
@@ -500,17 +537,13 @@ namespace thinlayer
       n_constrained += c ? 1 : 0;
     auto parts = Utilities::split_string_list(traction, ';');
     if (parts.size() == 1)
-      parts.assign(fourier ? 3 : 2, parts[0]);
+      parts.assign(names.size(), parts[0]);
     for (unsigned int c = 0; c < n; ++c)
       if (constrained_components[c] && (!fourier || n_constrained == n) &&
           !is_zero(parts[std::min<std::size_t>(c, parts.size() - 1)]))
         throw InputError(file,
                          section + "/Traction",
-                         "a traction on the constrained component " +
-                           std::string(fourier ? (c == 0   ? "r"
-                                                  : c == 1 ? "z"
-                                                           : "theta")
-                                               : (c == 0 ? "x" : "y")) +
+                         "a traction on the constrained component " + names[c] +
                            " would go into the reaction; expected 0 there, "
                            "or the component free");
     if (n_constrained == n && !is_zero(pressure))
@@ -528,35 +561,35 @@ namespace thinlayer
                             const KinematicsParameters &kinematics,
                             const MeshParameters       &mesh)
   {
-    const std::string section = BoundaryParameters::section(id);
-    const bool        fourier = kinematics.fourier;
+    const std::string section   = BoundaryParameters::section(id);
+    const std::string variables = kinematics.expression_variables();
     prm.enter_subsection(section);
     name = prm.get("Name");
     constrained_components =
       parse_components(prm.get("Constrained components"),
-                       fourier,
+                       kinematics.component_names(),
                        file,
                        section + "/Constrained components");
     displacement                 = prm.get("Displacement");
     traction                     = prm.get("Traction");
     pressure                     = prm.get("Pressure");
-    const unsigned int n_vector  = fourier ? 3 : 2;
+    const unsigned int n_vector  = kinematics.component_names().size();
     const auto        &constants = mesh.geometry_parameters;
     check_expressions(displacement,
                       n_vector,
-                      fourier,
+                      variables,
                       constants,
                       file,
                       section + "/Displacement");
     check_expressions(
-      traction, n_vector, fourier, constants, file, section + "/Traction");
+      traction, n_vector, variables, constants, file, section + "/Traction");
     check_expressions(
-      pressure, 1, fourier, constants, file, section + "/Pressure");
+      pressure, 1, variables, constants, file, section + "/Pressure");
     if (Utilities::split_string_list(pressure, ';').size() != 1)
       throw InputError(file,
                        section + "/Pressure",
                        "expected a single expression");
-    check_loads_where_free(file, section, fourier);
+    check_loads_where_free(file, section, kinematics);
     prm.leave_subsection();
   }
 } // namespace thinlayer

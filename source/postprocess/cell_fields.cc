@@ -56,4 +56,5 @@ namespace thinlayer
 
 
   template CellFields::CellFields(const Analysis<2> &);
+  template CellFields::CellFields(const Analysis<3> &);
 } // namespace thinlayer

@@ -54,16 +54,16 @@ namespace thinlayer
   } // namespace
 
 
-  const std::vector<std::string> LayerProfile::cell_field_names = {
+  const std::vector<std::string> LayerProfile<2>::cell_field_names = {
     "interface_slip",
     "interface_opening",
     "interface_shear_traction",
     "interface_normal_traction"};
 
 
-  LayerProfile::LayerProfile(const Analysis<2>       &analysis,
-                             const types::material_id material_id,
-                             const std::string       &parameter_file)
+  LayerProfile<2>::LayerProfile(const Analysis<2>       &analysis,
+                                const types::material_id material_id,
+                                const std::string       &parameter_file)
     : material_id(material_id)
   {
     // The layer is chained on the whole mesh (its runs may cross ranks);
@@ -170,12 +170,12 @@ namespace thinlayer
 
 
   double
-  LayerProfile::add_cell_samples(const Analysis<2>  &analysis,
-                                 const CellIterator &cell,
-                                 const unsigned int  long_direction,
-                                 const unsigned int  entry_face,
-                                 const unsigned int  run,
-                                 const double        start)
+  LayerProfile<2>::add_cell_samples(const Analysis<2>  &analysis,
+                                    const CellIterator &cell,
+                                    const unsigned int  long_direction,
+                                    const unsigned int  entry_face,
+                                    const unsigned int  run,
+                                    const double        start)
   {
     const Mapping<2> &mapping = analysis.get_mapping();
     const auto        mid     = [&](const double along) {
@@ -226,22 +226,22 @@ namespace thinlayer
 
 
   types::material_id
-  LayerProfile::get_material_id() const
+  LayerProfile<2>::get_material_id() const
   {
     return material_id;
   }
 
 
   unsigned int
-  LayerProfile::n_points() const
+  LayerProfile<2>::n_points() const
   {
     return samples.size();
   }
 
 
   std::vector<InterfaceValues>
-  LayerProfile::evaluate(const Analysis<2> &analysis,
-                         const unsigned int station) const
+  LayerProfile<2>::evaluate(const Analysis<2> &analysis,
+                            const unsigned int station) const
   {
     const Kinematics       &kinematics = analysis.get_kinematics();
     const double            theta      = kinematics.station_angle(station);
@@ -314,11 +314,12 @@ namespace thinlayer
 
 
   Profile
-  LayerProfile::profile(const Analysis<2> &analysis) const
+  LayerProfile<2>::profile(const Analysis<2> &analysis) const
   {
     Profile result;
     for (const Sample &s : samples)
-      result.samples.push_back({s.run, s.arc_length, s.position});
+      result.samples.push_back(
+        {s.run, s.arc_length, Point<3>(s.position[0], s.position[1], 0)});
     for (unsigned int station = 0;
          station < analysis.get_kinematics().n_stations();
          ++station)
@@ -328,8 +329,8 @@ namespace thinlayer
 
 
   std::vector<Vector<double>>
-  LayerProfile::cell_fields(const Analysis<2> &analysis,
-                            const unsigned int station) const
+  LayerProfile<2>::cell_fields(const Analysis<2> &analysis,
+                               const unsigned int station) const
   {
     const unsigned int n_cells =
       analysis.get_dof_handler().get_triangulation().n_active_cells();

@@ -180,8 +180,7 @@ namespace thinlayer
     f.add(-analysis.load_factor(), analysis.mode_system(m).unit_load);
     condense(analysis.get_element_constraints(), f);
 
-    // Components: 0 x or r, 1 y or z, 2 theta; coordinates 0 x or r,
-    // 1 y or z.
+    // Components: 0 x or r, 1 y or z, 2 theta or z; coordinates likewise.
     if (!kinematics.is_fourier())
       switch (component)
         {
@@ -189,10 +188,12 @@ namespace thinlayer
             return boundary_sum(f, 0);
           case Component::y:
             return boundary_sum(f, 1);
+          case Component::z:
+            return boundary_sum(f, 2);
           case Component::moment:
             return boundary_sum(f, 1, 0) - boundary_sum(f, 0, 1);
           case Component::torque:
-            break; // refused when reading
+            return boundary_sum(f, 0, 2) - boundary_sum(f, 2, 0);
         }
     switch (component)
       {
@@ -200,6 +201,8 @@ namespace thinlayer
           return boundary_sum(f, 0) - boundary_sum(f, 2);
         case Component::y:
           return boundary_sum(f, 1);
+        case Component::z:
+          break; // refused when reading
         case Component::moment:
           return boundary_sum(f, 0, 1) - boundary_sum(f, 2, 1) -
                  boundary_sum(f, 1, 0);
@@ -221,12 +224,15 @@ namespace thinlayer
     const ModeVector  u          = analysis.displacement_at(theta);
     // The monitored Cartesian component from the nodal components: for
     // Fourier x = u_r cos(theta) - u_theta sin(theta), y = u_z.
+    // In 3D the third is u_z.
     const auto component =
-      [&](const double r_or_x, const double z_or_y, const double u_theta) {
+      [&](const double r_or_x, const double z_or_y, const double third) {
         if (parameters.displacement_component == 1)
           return z_or_y;
+        if (parameters.displacement_component == 2)
+          return third;
         return kinematics.is_fourier()
-                 ? r_or_x * std::cos(theta) - u_theta * std::sin(theta)
+                 ? r_or_x * std::cos(theta) - third * std::sin(theta)
                  : r_or_x;
       };
 
@@ -321,4 +327,5 @@ namespace thinlayer
 
 
   template class Monitors<2>;
+  template class Monitors<3>;
 } // namespace thinlayer

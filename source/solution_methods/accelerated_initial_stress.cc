@@ -68,4 +68,5 @@ namespace thinlayer
 
 
   template class AcceleratedInitialStressMethod<2>;
+  template class AcceleratedInitialStressMethod<3>;
 } // namespace thinlayer

@@ -18,4 +18,5 @@ namespace thinlayer
 
 
   template class InitialStressMethod<2>;
+  template class InitialStressMethod<3>;
 } // namespace thinlayer

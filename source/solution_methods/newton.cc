@@ -113,4 +113,5 @@ namespace thinlayer
 
 
   template class NewtonMethod<2>;
+  template class NewtonMethod<3>;
 } // namespace thinlayer

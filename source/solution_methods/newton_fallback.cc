@@ -81,4 +81,5 @@ namespace thinlayer
 
 
   template class NewtonFallbackMethod<2>;
+  template class NewtonFallbackMethod<3>;
 } // namespace thinlayer

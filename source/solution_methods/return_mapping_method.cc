@@ -237,4 +237,5 @@ namespace thinlayer
 
 
   template class ReturnMappingMethod<2>;
+  template class ReturnMappingMethod<3>;
 } // namespace thinlayer

@@ -56,6 +56,9 @@ namespace thinlayer
 
 
   template class SolutionMethod<2>;
+  template class SolutionMethod<3>;
+  template std::unique_ptr<SolutionMethod<3>>
+  create_solution_method(const SolverParameters &, Analysis<3> &);
 
   template std::unique_ptr<SolutionMethod<2>>
   create_solution_method(const SolverParameters &, Analysis<2> &);

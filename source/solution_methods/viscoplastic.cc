@@ -118,4 +118,5 @@ namespace thinlayer
 
 
   template class ViscoplasticMethod<2>;
+  template class ViscoplasticMethod<3>;
 } // namespace thinlayer

@@ -192,11 +192,13 @@ namespace thinlayer
                                 analysis,
                                 p.monitors.displacement_angle,
                                 layers);
-          if (p.output.write_vtu && p.output.view_slices > 0)
-            writer.write_revolved_view(a.step,
-                                       a.load_factor,
-                                       analysis,
-                                       p.output.view_slices);
+          // A revolved view is of a Fourier body, whose mesh is 2D.
+          if constexpr (dim == 2)
+            if (p.output.write_vtu && p.output.view_slices > 0)
+              writer.write_revolved_view(a.step,
+                                         a.load_factor,
+                                         analysis,
+                                         p.output.view_slices);
           writer.write_displacements(analysis, p.monitors.displacement_angle);
           writer.write_interface_profiles(
             a.step, a.load_factor, analysis, layers, p.output.write_vtu);
@@ -257,4 +259,5 @@ namespace thinlayer
   }
 
   template class Programme<2>;
+  template class Programme<3>;
 } // namespace thinlayer

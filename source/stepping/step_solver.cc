@@ -53,4 +53,5 @@ namespace thinlayer
 
 
   template class StepSolver<2>;
+  template class StepSolver<3>;
 } // namespace thinlayer

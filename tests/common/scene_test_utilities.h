@@ -54,7 +54,7 @@ namespace thinlayer_tests
   }
 
 
-  template <typename Inspect>
+  template <int dim = 2, typename Inspect>
   void
   with_solved_step(const std::string &prm,
                    const std::string &name,
@@ -62,11 +62,11 @@ namespace thinlayer_tests
   {
     const thinlayer::Parameters p =
       thinlayer::ParameterReader().read_from_string(prm, name);
-    const thinlayer::Scene scene(p, std::cout);
-    thinlayer::Analysis<2> analysis(p, scene.triangulation());
+    const thinlayer::Scene<dim> scene(p, std::cout);
+    thinlayer::Analysis<dim>    analysis(p, scene.triangulation());
     analysis.setup();
     {
-      thinlayer::StepSolver<2> solver(p.solver, analysis);
+      thinlayer::StepSolver<dim> solver(p.solver, analysis);
       solver.solve(1.0);
       solver.accept();
     }

@@ -81,9 +81,9 @@ namespace
       "column.prm",
       [&](const thinlayer::Analysis<2> &analysis,
           const thinlayer::Parameters &) {
-        const thinlayer::LayerProfile profile(analysis, 2, "column.prm");
-        const auto                    values = profile.evaluate(analysis, 0);
-        const double                  a      = 30 * M_PI / 180;
+        const thinlayer::LayerProfile<2> profile(analysis, 2, "column.prm");
+        const auto                       values = profile.evaluate(analysis, 0);
+        const double                     a      = 30 * M_PI / 180;
         const double t_v        = 1 / (10 * std::cos(a) * std::cos(a));
         const double jump[2]    = {0, eps_vertical * t_v};
         const double exact_slip = jump[0] * std::cos(a) + jump[1] * std::sin(a);

@@ -111,7 +111,7 @@ main(int argc, char **argv)
                    "end\n");
   const Parameters   p = ParameterReader().read_from_string(prm, "vectors.prm");
   std::ostringstream quiet;
-  const Scene        scene(p, quiet);
+  const Scene<2>     scene(p, quiet);
   Analysis<2>        analysis(p, scene.triangulation());
   analysis.setup();
   const types::global_dof_index n       = analysis.get_dof_handler().n_dofs();

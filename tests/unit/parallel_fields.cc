@@ -110,7 +110,7 @@ main(int argc, char **argv)
   run_scene(p, quiet);
   // The scene again (every rank takes part in meshing it), for the cells
   // each rank owned in the run.
-  const Scene scene(p, quiet);
+  const Scene<2> scene(p, quiet);
   if (!mpi::is_root())
     return 0;
   const CellPartition partition = partition_cells(scene.triangulation(), n, 0);

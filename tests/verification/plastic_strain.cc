@@ -77,8 +77,8 @@ main()
          "Solver/Convergence criterion=default",
          "Solver/Tolerance=1e-3",
          "Solver/Maximum iterations=2000"});
-      const thinlayer::Scene scene(p, std::cout);
-      thinlayer::Analysis<2> analysis(p, scene.triangulation());
+      const thinlayer::Scene<2> scene(p, std::cout);
+      thinlayer::Analysis<2>    analysis(p, scene.triangulation());
       analysis.setup();
       thinlayer::StepSolver<2> solver(p.solver, analysis);
 

@@ -16,24 +16,27 @@ namespace thinlayer
   using namespace dealii;
 
   /**
-   * Where the DoFs a rank owns lie: the support point and the component
-   * (0: x or r, 1: y or z, 2: theta) of each, in the order of @p owned.
+   * Where the DoFs a rank owns lie: the support point (z = 0 on a 2D
+   * mesh) and the component (0: x or r, 1: y or z, 2: theta or z) of each,
+   * in the order of @p owned, and the mesh's dimension.
    */
   struct OwnedDofPlaces
   {
     IndexSet                  owned;
-    std::vector<Point<2>>     points;
+    std::vector<Point<3>>     points;
     std::vector<unsigned int> components;
+    unsigned int              dimension = 2;
   };
 
 
   /**
-   * The rigid-body motions of a plane-strain body (@p n_components 2):
-   * the two translations and the rotation about the centre of the bounding
-   * box of every rank's support points, scaled by its size, on this rank's
-   * DoFs (@p places; the vectors in the order of places.owned). With more
-   * components (a Fourier harmonic, whose rigid motions depend on its
-   * order), a uniform displacement of each. What algebraic multigrid must
+   * The rigid-body motions of a plane-strain body (@p n_components 2) or a
+   * solid one (a 3D mesh, @p n_components 3): the translations and the
+   * rotations (one in the plane, three in space) about the centre of the
+   * bounding box of every rank's support points, scaled by its size, on
+   * this rank's DoFs (@p places; the vectors in the order of places.owned).
+   * For a Fourier harmonic, whose rigid motions depend on its order, a
+   * uniform displacement of each component. What algebraic multigrid must
    * represent on its coarse levels. A collective call.
    */
   std::vector<Vector<double>>
@@ -42,8 +45,9 @@ namespace thinlayer
 
 
   /**
-   * The rigid-body motion, if any, that the supports of a plane-strain body
-   * leave free: a description ("a rotation about (0.5, 0.5)", "a
+   * The rigid-body motion, if any, that the supports of a plane-strain or
+   * solid body leave free: a description ("a rotation about (0.5, 0.5)",
+   * "a rotation about the axis (0, 0, 1) through (0.5, 0.5, 0)", "a
    * translation in the direction (1, 0)"), or an empty string.
    *
    * A free translation makes the stiffness exactly singular and its
@@ -51,8 +55,9 @@ namespace thinlayer
    * of order 1e-16 of the others, the factorisation succeeds, and the
    * first solve returns displacements 1e10 times the elastic ones, which
    * look like a collapse at load 0. So the supports are checked directly.
-   * The three rigid motions (two translations and a rotation) are taken
-   * with their constrained values set to zero (the supports held);
+   * The rigid motions (two translations and a rotation in the plane, three
+   * of each in space) are taken with their constrained values set to zero
+   * (the supports held);
    * a combination that the supports do not resist is one the condensed
    * stiffness maps to zero up to rounding: the smallest singular value of
    * K R, its columns scaled by |K| |R|, is below 1e-9 (rounding gives

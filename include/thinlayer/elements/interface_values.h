@@ -2,9 +2,11 @@
 #define thinlayer_elements_interface_values_h
 
 #include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
 
 #include <thinlayer/discretisation/kinematics.h>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -21,7 +23,9 @@ namespace thinlayer
    * anticlockwise; slip and opening are (u on the +n face) - (u on the -n
    * face) along s and n; tractions are sigma n along s and n, tension
    * positive. "Out of plane" is z in plane strain (always zero) and theta
-   * in Fourier scenes.
+   * in Fourier scenes. On an interface surface of a 3D body "slip" and
+   * "shear traction" are along its first tangent t1 and the "out of plane"
+   * ones along t2 = t1 x n (see Profile).
    */
   struct InterfaceValues
   {
@@ -44,22 +48,39 @@ namespace thinlayer
 
 
   /// Where a profile sample lies: its run along the interface, its arc
-  /// length along that run, and its position.
+  /// length along that run, and its position (z = 0 on a 2D mesh).
   struct ProfileSample
   {
     unsigned int run;
     double       arc_length;
-    Point<2>     position;
+    Point<3>     position;
+  };
+
+
+  /**
+   * Where a sample of an interface surface (in a 3D body) lies: its
+   * position, its frame (the first tangent t1 and the normal n; t2 = t1 x
+   * n), and the patch of the surface it stands for, a quadrilateral.
+   */
+  struct SurfaceSample
+  {
+    Point<3>                position;
+    Tensor<1, 3>            tangent;
+    Tensor<1, 3>            normal;
+    std::array<Point<3>, 4> patch;
   };
 
 
   /**
    * An interface's profile at one state: where its samples lie, and their
-   * values at every station (one station in plane strain).
+   * values at every station (one station in plane strain and 3D). A curve
+   * (in a 2D mesh) has @p samples, a surface (in a 3D body)
+   * @p surface_samples.
    */
   struct Profile
   {
     std::vector<ProfileSample>                samples;
+    std::vector<SurfaceSample>                surface_samples;
     std::vector<std::vector<InterfaceValues>> stations;
   };
 
@@ -76,7 +97,8 @@ namespace thinlayer
   /**
    * The CSV of a profile (thin layer or zero-thickness elements): one row
    * per sample and station, the run, arc length, position, station angle
-   * (degrees) and the values.
+   * (degrees) and the values. For a surface: the position x, y, z, the
+   * frame (t1 and n) and the values.
    */
   std::string
   profile_csv(const Profile &profile, const Kinematics &kinematics);
@@ -84,7 +106,8 @@ namespace thinlayer
   /**
    * The profile as a VTU for ParaView: each run a polyline through its
    * samples (z = 0), the values as point data (in Fourier scenes one set
-   * per station, suffixed with its angle in degrees).
+   * per station, suffixed with its angle in degrees). A surface: each
+   * sample's patch a quadrilateral, the values as cell data.
    */
   std::string
   profile_vtu(const Profile &profile, const Kinematics &kinematics);

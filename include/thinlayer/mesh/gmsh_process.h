@@ -19,6 +19,8 @@ namespace thinlayer
     unsigned int max_cells;
     /// For messages: the parameter file the job came from.
     std::string parameter_file;
+    /// The dimension to mesh: 2 (surfaces) or 3 (volumes).
+    unsigned int dimension = 2;
   };
 
   /**

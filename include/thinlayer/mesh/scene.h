@@ -15,10 +15,13 @@ namespace thinlayer
   /**
    * The mesh of a scene, from a gmsh geometry (.geo) meshed by gmsh with the
    * parameter file's geometry parameters, or from a gmsh mesh (.msh).
-   * Physical surfaces become material ids and physical curves boundary ids;
-   * a scene is then a parameter file plus a .geo, with nothing about a
-   * particular case in C++.
+   * Physical surfaces become material ids and physical curves boundary ids
+   * (in 3D: physical volumes and physical surfaces); a scene is then a
+   * parameter file plus a .geo, with nothing about a particular case in
+   * C++. @p dim is the mesh's: 2 for plane strain and Fourier kinematics,
+   * 3 for Kinematics/Type = 3d.
    */
+  template <int dim>
   class Scene
   {
   public:
@@ -26,14 +29,15 @@ namespace thinlayer
      * Build the mesh and check it against the parameter file: every
      * material id of the mesh has a material, every material and boundary
      * section and every monitored boundary id exists in the mesh, every
-     * cell is a convex quadrilateral, and there are at most Mesh/Maximum
+     * cell is a convex quadrilateral (a hexahedron whose Jacobian is
+     * positive at its corners), and there are at most Mesh/Maximum
      * cells. Throws InputError otherwise, before anything is written. A
      * .geo is meshed by gmsh (run_gmsh()), which reports on @p progress
      * while it runs.
      */
     Scene(const Parameters &parameters, std::ostream &progress);
 
-    const Triangulation<2> &
+    const Triangulation<dim> &
     triangulation() const;
 
     /// The mesh in gmsh's format, as read (kept with the results).
@@ -41,8 +45,8 @@ namespace thinlayer
     mesh_text() const;
 
   private:
-    Triangulation<2> tria;
-    std::string      msh;
+    Triangulation<dim> tria;
+    std::string        msh;
   };
 
   /**

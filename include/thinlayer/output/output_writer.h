@@ -72,11 +72,11 @@ namespace thinlayer
      */
     template <int dim>
     void
-    write_fields(const unsigned int               step,
-                 const double                     load_factor,
-                 const Analysis<dim>             &analysis,
-                 const double                     theta,
-                 const std::vector<LayerProfile> &interfaces);
+    write_fields(const unsigned int                    step,
+                 const double                          load_factor,
+                 const Analysis<dim>                  &analysis,
+                 const double                          theta,
+                 const std::vector<LayerProfile<dim>> &interfaces);
 
     /**
      * The profile of every one of @p interfaces at load step @p step
@@ -87,11 +87,11 @@ namespace thinlayer
      */
     template <int dim>
     void
-    write_interface_profiles(const unsigned int               step,
-                             const double                     load_factor,
-                             const Analysis<dim>             &analysis,
-                             const std::vector<LayerProfile> &interfaces,
-                             const bool                       with_vtu);
+    write_interface_profiles(const unsigned int                    step,
+                             const double                          load_factor,
+                             const Analysis<dim>                  &analysis,
+                             const std::vector<LayerProfile<dim>> &interfaces,
+                             const bool                            with_vtu);
 
     /**
      * The body revolved about its axis (revolved_view(), @p slices
@@ -107,7 +107,8 @@ namespace thinlayer
 
     /**
      * Vertex positions, displacements and the last step's displacement
-     * increments as displacements.csv (x, y, u_x, u_y, du_x, du_y),
+     * increments as displacements.csv (x, y, u_x, u_y, du_x, du_y; in 3D
+     * with z, u_z and du_z),
      * overwritten every step so that it holds the last one: at a failed
      * step the increment is the mechanism at failure, for plots. For
      * Fourier kinematics the field in the cut at angle @p theta.

@@ -50,14 +50,15 @@ namespace thinlayer
 
   /**
    * Checks that @p expressions, ';'-separated, are @p n_components function
-   * expressions (or one for all) of x, y (of r, z, theta where @p fourier)
+   * expressions (or one for all) of the three comma-separated
+   * @p variables (as FunctionParser<3> takes them: "x,y,z", "r,z,theta")
    * and the @p constants, so that a typo is reported when the file is read,
    * naming @p entry, and not in the middle of a run.
    */
   void
   check_expressions(const std::string                   &expressions,
                     const unsigned int                   n_components,
-                    const bool                           fourier,
+                    const std::string                   &variables,
                     const std::map<std::string, double> &constants,
                     const std::string                   &file,
                     const std::string                   &entry);

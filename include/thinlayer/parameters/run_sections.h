@@ -137,11 +137,15 @@ namespace thinlayer
       x,
       /// Along y (Fourier: the axis, from harmonic 0).
       y,
-      /// Plane strain: about the out-of-plane axis through the origin.
+      /// 3D: along z.
+      z,
+      /// Plane strain and 3D: about the z axis through the origin.
       /// Fourier: about the horizontal axis through the origin normal to
-      /// theta = 0 (overturning, from harmonic 1).
+      /// theta = 0 (overturning, from harmonic 1), the same axis for a
+      /// body whose axis is y and theta = 0 along x.
       moment,
       /// Fourier: about the axis (torsion, the antisymmetric harmonic 0).
+      /// 3D: about the y axis through the origin.
       torque
     };
 

@@ -42,6 +42,8 @@ namespace thinlayer
   struct KinematicsParameters
   {
     bool fourier;
+    /// The mesh's dimension: 3 for Type = 3d (components x, y, z), else 2.
+    unsigned int dimension;
     /// Fourier: the harmonics, the series and the stations (radians).
     /// Plane strain: harmonic 0 and one station at 0.
     std::vector<unsigned int> harmonics;
@@ -56,6 +58,16 @@ namespace thinlayer
     void
     parse(ParameterHandler &prm, const std::string &parameter_file);
 
+    /// The names of the displacement components, as the parameter files
+    /// write them: x, y (plane strain); r, z, theta (Fourier); x, y, z.
+    std::vector<std::string>
+    component_names() const;
+
+    /// The variables of a boundary expression, as FunctionParser<3> takes
+    /// them: "x,y,unused_z", "r,z,theta" or "x,y,z".
+    std::string
+    expression_variables() const;
+
   private:
     /// An InputError unless the stations are equally spaced over [0, 180]
     /// degrees and enough for the highest harmonic.
@@ -67,14 +79,20 @@ namespace thinlayer
   /// "Discretisation": the element and its Gauss points.
   struct DiscretisationParameters
   {
-    /// true: 8-node serendipity (constrained Q2); false: 9-node Q2.
+    /// true: 8-node serendipity (constrained Q2; 20-node in 3D); false:
+    /// 9-node Q2 (27-node).
     bool         serendipity;
     unsigned int gauss_points_per_direction;
+    /// As the file names it (Q8, Q9, Q20 or Q27; Q8 by default, the
+    /// serendipity family in 3D too).
+    std::string element_name;
 
     static void
     declare(ParameterHandler &prm);
     void
-    parse(ParameterHandler &prm);
+    parse(ParameterHandler           &prm,
+          const std::string          &parameter_file,
+          const KinematicsParameters &kinematics);
   };
 
   enum class YieldCriterion
@@ -151,9 +169,9 @@ namespace thinlayer
   private:
     /// An InputError for a traction or pressure on constrained components.
     void
-    check_loads_where_free(const std::string &parameter_file,
-                           const std::string &section,
-                           const bool         fourier) const;
+    check_loads_where_free(const std::string          &parameter_file,
+                           const std::string          &section,
+                           const KinematicsParameters &kinematics) const;
   };
 } // namespace thinlayer
 

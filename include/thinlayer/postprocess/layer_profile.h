@@ -17,6 +17,15 @@ namespace thinlayer
   using namespace dealii;
 
   /**
+   * The profile of a thin-layer interface of a @p dim dimensional mesh.
+   * The 2D one (a layer of cells chained into runs) is below; in 3D the
+   * layer is a surface of hexahedra.
+   */
+  template <int dim>
+  class LayerProfile;
+
+
+  /**
    * The profile of a thin-layer interface: the cells of one material id,
    * one cell thick, chained through their short sides into one or more
    * runs, sampled at the Gauss abscissae along the layer (where the
@@ -36,7 +45,8 @@ namespace thinlayer
    * as straight, as gmsh makes them. In Fourier scenes the profile is
    * taken at every station.
    */
-  class LayerProfile
+  template <>
+  class LayerProfile<2>
   {
   public:
     /**
@@ -104,6 +114,77 @@ namespace thinlayer
                      const unsigned int                         entry_face,
                      const unsigned int                         run,
                      const double                               start);
+
+    types::material_id  material_id;
+    std::vector<Sample> samples;
+  };
+
+
+  /**
+   * The profile of a thin layer in a 3D body: the hexahedra of one material
+   * id, one cell thick, form a surface, sampled at the Gauss points of
+   * each cell's mid-surface (where the stresses live). A cell's thickness
+   * direction is the one in which no cell of the layer adjoins it (the
+   * shortest such where there are several: a cell at the layer's edge or
+   * alone). At each sample:
+   *
+   * - position, and the frame: the normal n of the mid-surface, pointing
+   *   up (n_y > 0; where the layer is vertical, along +x, then +z), the
+   *   first tangent t1 the x axis projected onto the surface (the z axis
+   *   where the surface is normal to x), t2 = t1 x n: on a horizontal
+   *   layer t1, n, t2 are x, y, z;
+   * - slip (along t1 and t2) and opening: the displacement on the two
+   *   faces of the cell at the sample, differenced (the + face minus the -
+   *   face);
+   * - tractions: the stress averaged over the Gauss points across the
+   *   thickness, sigma n along t1, t2 and n.
+   *
+   * The output is a surface: each sample stands for the patch of its
+   * cell's mid-surface around it.
+   */
+  template <>
+  class LayerProfile<3>
+  {
+  public:
+    /// As LayerProfile<2>'s.
+    LayerProfile(const Analysis<3>       &analysis,
+                 const types::material_id material_id,
+                 const std::string       &parameter_file);
+
+    types::material_id
+    get_material_id() const;
+
+    unsigned int
+    n_points() const;
+
+    std::vector<InterfaceValues>
+    evaluate(const Analysis<3> &analysis, const unsigned int station) const;
+
+    Profile
+    profile(const Analysis<3> &analysis) const;
+
+    std::vector<Vector<double>>
+    cell_fields(const Analysis<3> &analysis, const unsigned int station) const;
+
+    static const std::vector<std::string> cell_field_names;
+
+  private:
+    struct Sample
+    {
+      DoFHandler<3>::active_cell_iterator cell;
+      bool                                own;
+      SurfaceSample                       where;
+      Point<3>                            unit_plus;
+      Point<3>                            unit_minus;
+      std::vector<unsigned int>           thickness_points;
+    };
+
+    /// The samples of one cell whose thickness direction is
+    /// @p thickness.
+    void
+    add_cell_samples(const Analysis<3>                         &analysis,
+                     const DoFHandler<3>::active_cell_iterator &cell,
+                     const unsigned int                         thickness);
 
     types::material_id  material_id;
     std::vector<Sample> samples;

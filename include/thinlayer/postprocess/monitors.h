@@ -82,7 +82,7 @@ namespace thinlayer
       point_cell;
     /// Per component, this rank's DoFs on the load's boundary id and
     /// their support points.
-    std::vector<std::vector<std::pair<types::global_dof_index, Point<dim>>>>
+    std::vector<std::vector<std::pair<types::global_dof_index, Point<3>>>>
       reaction_dofs;
   };
 } // namespace thinlayer

@@ -14,6 +14,7 @@
 
 namespace thinlayer
 {
+  template <int dim>
   class LayerProfile;
   class OutputWriter;
   template <int dim>
@@ -35,14 +36,14 @@ namespace thinlayer
   class Programme
   {
   public:
-    Programme(const Parameters                &p,
-              Analysis<dim>                   &analysis,
-              StepSolver<dim>                 &solver,
-              const Monitors<dim>             &monitors,
-              const std::vector<LayerProfile> &layers,
-              OutputWriter                    &writer,
-              TimerOutput                     &timer,
-              std::ostream                    &out)
+    Programme(const Parameters                     &p,
+              Analysis<dim>                        &analysis,
+              StepSolver<dim>                      &solver,
+              const Monitors<dim>                  &monitors,
+              const std::vector<LayerProfile<dim>> &layers,
+              OutputWriter                         &writer,
+              TimerOutput                          &timer,
+              std::ostream                         &out)
       : p(p)
       , analysis(analysis)
       , solver(solver)
@@ -97,15 +98,15 @@ namespace thinlayer
     void
     probe_beyond(const Attempt &failed);
 
-    const Parameters                &p;
-    Analysis<dim>                   &analysis;
-    StepSolver<dim>                 &solver;
-    const Monitors<dim>             &monitors;
-    const std::vector<LayerProfile> &layers;
-    OutputWriter                    &writer;
-    TimerOutput                     &timer;
-    std::ostream                    &out;
-    ProgrammeResult                  result;
+    const Parameters                     &p;
+    Analysis<dim>                        &analysis;
+    StepSolver<dim>                      &solver;
+    const Monitors<dim>                  &monitors;
+    const std::vector<LayerProfile<dim>> &layers;
+    OutputWriter                         &writer;
+    TimerOutput                          &timer;
+    std::ostream                         &out;
+    ProgrammeResult                       result;
   };
 } // namespace thinlayer
 

@@ -1,0 +1,316 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <thinlayer/base/input_error.h>
+#include <thinlayer/parallel/distributed_mesh.h>
+#include <thinlayer/postprocess/layer_profile.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace thinlayer
+{
+  namespace
+  {
+    using CellIterator = DoFHandler<3>::active_cell_iterator;
+
+    /// Whether the neighbour of @p cell across face @p f is in the layer.
+    bool
+    layer_neighbour(const CellIterator      &cell,
+                    const unsigned int       f,
+                    const types::material_id id)
+    {
+      return !cell->at_boundary(f) && cell->neighbor(f)->is_active() &&
+             cell->neighbor(f)->material_id() == id;
+    }
+
+    /// The unit-cell point with coordinate @p a and @p b in the two
+    /// directions other than @p thickness (in increasing order) and
+    /// @p across in it.
+    Point<3>
+    unit_point(const unsigned int thickness,
+               const double       a,
+               const double       b,
+               const double       across)
+    {
+      Point<3>           p;
+      const unsigned int first  = thickness == 0 ? 1 : 0;
+      const unsigned int second = thickness == 2 ? 1 : 2;
+      p[first]                  = a;
+      p[second]                 = b;
+      p[thickness]              = across;
+      return p;
+    }
+
+    /// The normal @p n made to point up (n_y > 0), or along +x, then +z,
+    /// where it lies in the plane normal to y (to rounding).
+    Tensor<1, 3>
+    oriented(Tensor<1, 3> n)
+    {
+      for (const unsigned int d : {1u, 0u, 2u})
+        if (std::abs(n[d]) > 1e-10)
+          return n[d] > 0 ? n : -n;
+      return n;
+    }
+  } // namespace
+
+
+  const std::vector<std::string> LayerProfile<3>::cell_field_names = {
+    "interface_slip_1",
+    "interface_slip_2",
+    "interface_opening",
+    "interface_shear_traction_1",
+    "interface_shear_traction_2",
+    "interface_normal_traction"};
+
+
+  LayerProfile<3>::LayerProfile(const Analysis<3>       &analysis,
+                                const types::material_id material_id,
+                                const std::string       &parameter_file)
+    : material_id(material_id)
+  {
+    // The layer is found on the whole mesh, in the order of its cells;
+    // each rank then evaluates the samples of its own cells.
+    const Triangulation<3> &tria = analysis.whole_mesh();
+    const DoFHandler<3>     dof_handler(tria);
+    const std::string       entry = "Layers/Material ids";
+    const std::string       name = "material id " + std::to_string(material_id);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->material_id() == material_id)
+        {
+          // The thickness direction: no layer neighbour across it, the
+          // shortest such.
+          int    thickness = -1;
+          double shortest  = std::numeric_limits<double>::max();
+          for (unsigned int d = 0; d < 3; ++d)
+            if (!layer_neighbour(cell, 2 * d, material_id) &&
+                !layer_neighbour(cell, 2 * d + 1, material_id))
+              {
+                const double length = (cell->face(2 * d + 1)->center() -
+                                       cell->face(2 * d)->center())
+                                        .norm();
+                if (length < shortest)
+                  {
+                    shortest  = length;
+                    thickness = d;
+                  }
+              }
+          if (thickness < 0)
+            {
+              std::ostringstream message;
+              message << "expected a layer one cell thick: the cell of " << name
+                      << " at (" << cell->center()
+                      << ") has cells of that material on every side";
+              throw InputError(parameter_file, entry, message.str());
+            }
+          add_cell_samples(analysis, cell, thickness);
+        }
+    if (samples.empty())
+      throw InputError(parameter_file,
+                       entry,
+                       "expected a material id of the mesh: no cell has " +
+                         name);
+
+    // The samples' cells as the analysis holds them, where this rank's.
+    for (Sample &sample : samples)
+      {
+        sample.own = analysis.owns_whole_cell(sample.cell->active_cell_index());
+        sample.cell = sample.own
+                        ? cell_of(analysis.get_dof_handler(), sample.cell->id())
+                        : CellIterator();
+      }
+  }
+
+
+  void
+  LayerProfile<3>::add_cell_samples(const Analysis<3>  &analysis,
+                                    const CellIterator &cell,
+                                    const unsigned int  thickness)
+  {
+    const Mapping<3> &mapping = analysis.get_mapping();
+    const auto at = [&](const double a, const double b, const double across) {
+      return mapping.transform_unit_to_real_cell(
+        cell, unit_point(thickness, a, b, across));
+    };
+    // The normal from the mid-surface's two chords through the centre;
+    // which unit face lies on the +n side.
+    const Tensor<1, 3> chord_a = at(1, 0.5, 0.5) - at(0, 0.5, 0.5);
+    const Tensor<1, 3> chord_b = at(0.5, 1, 0.5) - at(0.5, 0, 0.5);
+    Tensor<1, 3>       normal  = cross_product_3d(chord_a, chord_b);
+    normal                     = oriented(normal / normal.norm());
+    const double plus_face =
+      (at(0.5, 0.5, 1) - at(0.5, 0.5, 0)) * normal > 0 ? 1. : 0.;
+    // t1: x projected onto the surface, or z where the surface is normal
+    // to x.
+    Tensor<1, 3> axis({1., 0., 0.});
+    if (std::abs(normal[0]) > 1 - 1e-10)
+      axis = Tensor<1, 3>({0., 0., 1.});
+    Tensor<1, 3> tangent = axis - (axis * normal) * normal;
+    tangent /= tangent.norm();
+
+    const unsigned int n_1d = static_cast<unsigned int>(
+      std::lround(std::cbrt(analysis.n_quadrature_points())));
+    const QGauss<1> gauss_1d(n_1d);
+    const QGauss<3> gauss_3d(n_1d);
+    for (unsigned int i = 0; i < n_1d; ++i)
+      for (unsigned int j = 0; j < n_1d; ++j)
+        {
+          const double a = gauss_1d.point(i)[0];
+          const double b = gauss_1d.point(j)[0];
+          Sample       sample;
+          sample.cell             = cell;
+          sample.where.position   = at(a, b, 0.5);
+          sample.where.tangent    = tangent;
+          sample.where.normal     = normal;
+          const double a0         = double(i) / n_1d;
+          const double a1         = double(i + 1) / n_1d;
+          const double b0         = double(j) / n_1d;
+          const double b1         = double(j + 1) / n_1d;
+          sample.where.patch      = {{at(a0, b0, 0.5),
+                                      at(a1, b0, 0.5),
+                                      at(a1, b1, 0.5),
+                                      at(a0, b1, 0.5)}};
+          sample.unit_plus        = unit_point(thickness, a, b, plus_face);
+          sample.unit_minus       = unit_point(thickness, a, b, 1 - plus_face);
+          const Point<3> in_plane = unit_point(thickness, a, b, 0);
+          for (unsigned int q = 0; q < gauss_3d.size(); ++q)
+            {
+              Point<3> x   = gauss_3d.point(q);
+              x[thickness] = 0;
+              if (x.distance(in_plane) < 1e-12)
+                sample.thickness_points.push_back(q);
+            }
+          samples.push_back(sample);
+        }
+  }
+
+
+  types::material_id
+  LayerProfile<3>::get_material_id() const
+  {
+    return material_id;
+  }
+
+
+  unsigned int
+  LayerProfile<3>::n_points() const
+  {
+    return samples.size();
+  }
+
+
+  std::vector<InterfaceValues>
+  LayerProfile<3>::evaluate(const Analysis<3> &analysis,
+                            const unsigned int station) const
+  {
+    const ModeVector        u  = analysis.displacement_at(0);
+    const ModeVector        du = analysis.displacement_at(0, true);
+    const FiniteElement<3> &fe = analysis.get_dof_handler().get_fe();
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+
+    // The face-to-face difference of @p v at a sample.
+    const auto difference = [&](const ModeVector &v, const Sample &s) {
+      Tensor<1, 3> d;
+      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+        {
+          const unsigned int c = fe.system_to_component_index(i).first;
+          d[c] += v[dofs[i]] * (fe.shape_value(i, s.unit_plus) -
+                                fe.shape_value(i, s.unit_minus));
+        }
+      return d;
+    };
+
+    std::vector<InterfaceValues> values;
+    values.reserve(samples.size());
+    for (const Sample &s : samples)
+      {
+        if (!s.own)
+          {
+            values.emplace_back();
+            continue;
+          }
+        s.cell->get_dof_indices(dofs);
+        const Tensor<1, 3> &t1    = s.where.tangent;
+        const Tensor<1, 3> &n     = s.where.normal;
+        const Tensor<1, 3>  t2    = cross_product_3d(t1, n);
+        const Tensor<1, 3>  jump  = difference(u, s);
+        const Tensor<1, 3>  djump = difference(du, s);
+
+        const unsigned int    cell_index = s.cell->active_cell_index();
+        const MaterialLaw    &law        = analysis.material_law(cell_index);
+        SymmetricTensor<2, 3> stress;
+        InterfaceValues       v;
+        v.plastic     = false;
+        v.yield_ratio = law.can_yield()
+                          ? std::numeric_limits<double>::lowest()
+                          : std::numeric_limits<double>::quiet_NaN();
+        for (const unsigned int q : s.thickness_points)
+          {
+            const PointState &state =
+              analysis.point_state(cell_index, q, station);
+            stress += state.stress / s.thickness_points.size();
+            v.plastic = v.plastic || state.yielding;
+            if (law.can_yield())
+              v.yield_ratio =
+                std::max(v.yield_ratio, law.yield_ratio(state.stress));
+          }
+        const Tensor<1, 3> traction   = stress * n;
+        v.slip                        = jump * t1;
+        v.slip_out_of_plane           = jump * t2;
+        v.opening                     = jump * n;
+        v.slip_increment              = djump * t1;
+        v.opening_increment           = djump * n;
+        v.shear_traction              = traction * t1;
+        v.shear_traction_out_of_plane = traction * t2;
+        v.normal_traction             = traction * n;
+        values.push_back(v);
+      }
+    sum_over_ranks(values);
+    return values;
+  }
+
+
+  Profile
+  LayerProfile<3>::profile(const Analysis<3> &analysis) const
+  {
+    Profile result;
+    for (const Sample &s : samples)
+      result.surface_samples.push_back(s.where);
+    result.stations.push_back(evaluate(analysis, 0));
+    return result;
+  }
+
+
+  std::vector<Vector<double>>
+  LayerProfile<3>::cell_fields(const Analysis<3> &analysis,
+                               const unsigned int station) const
+  {
+    const unsigned int n_cells =
+      analysis.get_dof_handler().get_triangulation().n_active_cells();
+    std::vector<Vector<double>>        fields(cell_field_names.size(),
+                                       Vector<double>(n_cells));
+    std::vector<unsigned int>          count(n_cells);
+    const std::vector<InterfaceValues> values = evaluate(analysis, station);
+    for (unsigned int k = 0; k < samples.size(); ++k)
+      if (samples[k].own)
+        {
+          const unsigned int     c = samples[k].cell->active_cell_index();
+          const InterfaceValues &v = values[k];
+          fields[0][c] += v.slip;
+          fields[1][c] += v.slip_out_of_plane;
+          fields[2][c] += v.opening;
+          fields[3][c] += v.shear_traction;
+          fields[4][c] += v.shear_traction_out_of_plane;
+          fields[5][c] += v.normal_traction;
+          ++count[c];
+        }
+    for (auto &field : fields)
+      for (unsigned int c = 0; c < n_cells; ++c)
+        if (count[c] > 0)
+          field[c] /= count[c];
+    return fields;
+  }
+} // namespace thinlayer

@@ -1,0 +1,171 @@
+// Truth checked: a 3D body held in plane strain is plane strain. Case 1
+// (prm/case1-inclined-adhesive.prm, the column with an inclined Tresca
+// slab) and the same column extruded along z (prm/case1-3d.prm: 20-node
+// hexahedra, one element deep, u_z held on the faces z = 0 and z = depth)
+// must give the same analysis: every load step's load (the 3D reaction per
+// unit depth) and displacement, and at the last converged step the slab's
+// slip, opening and tractions at each sample (the 3D samples at both depths
+// against the 2D one at the same x, y), to a relative 1e-8. A 20-node
+// hexahedron, integrated over its depth, is the 8-node quadrilateral: the
+// plane-strain field is the 3D solution exactly, plastic points and all. A
+// coarse mesh (4 elements along the slab and up each block) and the
+// viscoplastic method, as the scenes name it, to collapse.
+#include <thinlayer/app/command_line.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+  using Table = std::vector<std::map<std::string, double>>;
+
+  /// A CSV of numbers, row by row, by column name.
+  Table
+  read_csv(const std::string &file)
+  {
+    std::ifstream            in(file);
+    std::string              line;
+    std::vector<std::string> names;
+    Table                    rows;
+    std::getline(in, line);
+    std::istringstream header(line);
+    for (std::string name; std::getline(header, name, ',');)
+      names.push_back(name);
+    while (std::getline(in, line))
+      {
+        std::istringstream row(line);
+        rows.emplace_back();
+        std::string value;
+        for (const std::string &name : names)
+          if (std::getline(row, value, ','))
+            rows.back()[name] = std::atof(value.c_str());
+      }
+    return rows;
+  }
+
+  /// Runs @p prm with @p overrides into @p directory; whether it ran.
+  bool
+  run(const std::string              &prm,
+      const std::vector<std::string> &overrides,
+      const std::string              &directory)
+  {
+    std::vector<std::string> arguments = {std::string(SOURCE_DIR) +
+                                          "/../../prm/" + prm};
+    for (const std::string &o : overrides)
+      arguments.insert(arguments.end(), {"-s", o});
+    arguments.insert(
+      arguments.end(),
+      {"-s", "Output/Directory=" + directory, "-s", "Output/Write VTU=false"});
+    std::ostringstream out, err;
+    const int status = thinlayer::run_command_line(arguments, out, err);
+    if (status != 0)
+      std::cout << prm << " failed: " << err.str();
+    return status == 0;
+  }
+
+  double
+  relative(const double a, const double b, const double scale)
+  {
+    return std::abs(a - b) / scale;
+  }
+} // namespace
+
+
+int
+main()
+{
+  const std::string mesh =
+    "Mesh/Geometry parameters=alpha=45, aspect_ratio=10, elements_along=4, "
+    "elements_block=4";
+  if (!run("case1-inclined-adhesive.prm", {mesh}, "plane") ||
+      !run("case1-3d.prm",
+           {mesh + ", depth=0.25, elements_depth=1"},
+           "extruded"))
+    return 0;
+
+  const Table plane      = read_csv("plane/history.csv");
+  const Table extruded   = read_csv("extruded/history.csv");
+  double      load_scale = 0, displacement_scale = 0;
+  for (const auto &row : plane)
+    {
+      load_scale = std::max(load_scale, std::abs(row.at("load")));
+      displacement_scale =
+        std::max(displacement_scale, std::abs(row.at("displacement")));
+    }
+  double       history_error  = 0;
+  unsigned int last_converged = 0;
+  bool         same_steps     = plane.size() == extruded.size();
+  for (unsigned int k = 0; same_steps && k < plane.size(); ++k)
+    {
+      same_steps = same_steps &&
+                   plane[k].at("converged") == extruded[k].at("converged") &&
+                   plane[k].at("load_factor") == extruded[k].at("load_factor");
+      history_error = std::max(
+        {history_error,
+         relative(plane[k].at("load"), extruded[k].at("load"), load_scale),
+         relative(plane[k].at("displacement"),
+                  extruded[k].at("displacement"),
+                  displacement_scale)});
+      if (plane[k].at("converged") == 1)
+        last_converged = plane[k].at("step");
+    }
+  std::printf("plane strain and extruded: the same attempts, load factors "
+              "and verdicts: %s; loads and displacements agree to 1e-8 of "
+              "their largest: %s\n",
+              same_steps ? "yes" : "NO",
+              history_error < 1e-8 ? "yes" : "NO");
+
+  // The slab at the last converged step.
+  char step[16];
+  std::snprintf(step, sizeof(step), "%04u", last_converged);
+  const Table line =
+    read_csv("plane/interface-2-" + std::string(step) + ".csv");
+  const Table surface =
+    read_csv("extruded/interface-2-" + std::string(step) + ".csv");
+  const std::vector<std::pair<std::string, std::string>> fields = {
+    {"slip", "slip_1"},
+    {"opening", "opening"},
+    {"shear_traction", "shear_traction_1"},
+    {"normal_traction", "normal_traction"}};
+  double       profile_error = 0, out_of_plane = 0, scale_slip = 0;
+  unsigned int matched = 0;
+  for (const auto &p : line)
+    scale_slip =
+      std::max({scale_slip, std::abs(p.at("slip")), std::abs(p.at("opening"))});
+  for (const auto &s : surface)
+    for (const auto &p : line)
+      if (std::abs(s.at("x") - p.at("x")) < 1e-9 &&
+          std::abs(s.at("y") - p.at("y")) < 1e-9)
+        {
+          ++matched;
+          for (const auto &[name_2d, name_3d] : fields)
+            profile_error =
+              std::max(profile_error,
+                       relative(p.at(name_2d),
+                                s.at(name_3d),
+                                name_2d.find("traction") != std::string::npos
+                                  ? 1. // the adhesion
+                                  : scale_slip));
+          out_of_plane = std::max({out_of_plane,
+                                   std::abs(s.at("slip_2")) / scale_slip,
+                                   std::abs(s.at("shear_traction_2"))});
+        }
+  std::printf("slab at the last converged step: %zu samples in 2D, %zu on "
+              "the surface, each over a 2D one: %s; slip, opening and "
+              "tractions agree to 1e-8 (of the largest slip, of the "
+              "adhesion): %s; slip and shear along z below 1e-8: %s\n",
+              line.size(),
+              surface.size(),
+              matched == surface.size() && surface.size() == 2 * line.size()
+                ? "yes"
+                : "NO",
+              profile_error < 1e-8 ? "yes" : "NO",
+              out_of_plane < 1e-8 ? "yes" : "NO");
+}
