@@ -12,22 +12,28 @@ same r-z resolution (8 elements across the footing's radius, 12 beyond,
 
 Per model: the collapse load factor (P / (pi R^2 C_w), 1 in closed form),
 the footing's displacement at half the collapse load (interpolated in the
-converged states), the displacement at the last converged state, DoFs,
-wall time and peak memory. Differences are against the richest Fourier
+converged states), the displacement at the last converged state, the row's
+mean slip along x under the footing at that state (mean_slip(), below), DoFs,
+wall time, peak memory, and the time of a constant-stiffness iteration
+against that of its substitutions (every harmonic's). Differences are against the richest Fourier
 model, {1, 3, 5, 7}: the harmonics' series converged on this r-z mesh.
 One run each (the 3D ones are long; their times are quoted as measured,
 on a machine that did nothing else).
 
-    /usr/bin/python3 -m benchmarks.fourier_vs_3d [--levels 4,8] [--output DIR]
+    /usr/bin/python3 -m benchmarks.fourier_vs_3d [--levels 4,8] [--output DIR] [--tables-only]
 
 Writes DIR/fourier-vs-3d.csv and .md (DIR: output/benchmarks) and prints
-the table; the runs go into DIR/runs.
+the table; the runs go into DIR/runs (--tables-only: the tables from the
+runs already there).
 """
 import argparse
 import csv
+import json
+import math
 import os
+import subprocess
 
-from thinlayer_tools import THINLAYER, TOP, run_for_summary
+from thinlayer_tools import THINLAYER, TOP
 from thinlayer_tools.results import collapse_load, history, number, states
 
 OUT = os.path.join(TOP, "output", "benchmarks")
@@ -39,8 +45,8 @@ SOLID_GEOMETRY = ("sector=180, footing=1, half_width=1, width=5, depth=3, "
                   "footing_height=0.5, aspect_ratio=10, n_around=%d, "
                   "n_footing=4, n_side=12, n_depth=10, growth=1.2")
 FIELDS = ["model", "around", "dofs", "equations", "collapse_load", "displacement_half",
-          "displacement_last", "wall_seconds", "peak_memory_mb", "iterations",
-          "seconds_per_iteration"]
+          "displacement_last", "mean_slip", "wall_seconds", "peak_memory_mb", "iterations",
+          "seconds_per_iteration", "seconds_per_substitution"]
 
 
 def displacement_at(rows, load_factor):
@@ -54,8 +60,53 @@ def displacement_at(rows, load_factor):
     return float("nan")
 
 
-def measure(model, around, command, directory):
-    summary = run_for_summary(command, directory)
+def mean_slip(directory, step):
+    """The row's slip along x averaged over the footing's disc (r < R = 1)
+    at load step STEP, from the run's interface-2-NNNN.csv. Fourier: the
+    slip at each station's samples (x = cos(theta) slip_r - sin(theta)
+    slip_theta), weighted by r dr (2-point Gauss pairs: the cell's width is
+    sqrt(3) times their distance) and the trapezoidal rule in theta over the
+    circle. 3D: each cell's 2x2 samples weighted by a quarter of the cell's
+    area (three times that of the quadrilateral through them)."""
+    path = os.path.join(directory, "interface-2-%04d.csv" % step)
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    total = area = 0.0
+    if "angle" in rows[0]:
+        angles = sorted({float(r["angle"]) for r in rows})
+        for angle in angles:
+            at = [r for r in rows if float(r["angle"]) == angle]
+            theta = math.radians(angle)
+            w_theta = 2 * math.pi / (len(angles) - 1) * (
+                0.5 if angle in (angles[0], angles[-1]) else 1.0)
+            for k in range(0, len(at), 2):
+                h = math.sqrt(3) * (float(at[k + 1]["x"]) - float(at[k]["x"]))
+                for r in at[k:k + 2]:
+                    x = float(r["x"])
+                    if x < 1.0:
+                        w = w_theta * x * h / 2
+                        total += w * (float(r["slip"]) * math.cos(theta)
+                                      - float(r["slip_out_of_plane"]) * math.sin(theta))
+                        area += w
+    else:
+        for k in range(0, len(rows), 4):
+            cell = rows[k:k + 4]
+            p = [(float(r["x"]), float(r["z"])) for r in cell]
+            quad = [p[0], p[2], p[3], p[1]]
+            a = 0.5 * abs(sum(quad[i][0] * quad[(i + 1) % 4][1] - quad[(i + 1) % 4][0]
+                              * quad[i][1] for i in range(4)))
+            for r in cell:
+                if math.hypot(float(r["x"]), float(r["z"])) < 1.0:
+                    total += 0.75 * a * float(r["slip_1"])
+                    area += 0.75 * a
+    return total / area
+
+
+def measure(model, around, command, directory, run=True):
+    if run:
+        subprocess.run(command, capture_output=True, text=True, check=True)
+    with open(os.path.join(directory, "summary.json")) as f:
+        summary = json.load(f)
     converged = states(history(directory))
     collapse = collapse_load(summary)
     return {
@@ -65,10 +116,12 @@ def measure(model, around, command, directory):
         "displacement_half": (displacement_at(converged, collapse / 2)
                               if collapse is not None else float("nan")),
         "displacement_last": number(converged[-1]["displacement"]),
+        "mean_slip": mean_slip(directory, int(converged[-1]["step"])),
         "wall_seconds": summary["wall_seconds"],
         "peak_memory_mb": summary["peak_memory_mb_per_rank"],
         "iterations": summary["total_iterations"],
-        "seconds_per_iteration": summary["seconds_per_iteration"]}
+        "seconds_per_iteration": summary["seconds_per_iteration"],
+        "seconds_per_substitution": summary["seconds_per_substitution"]}
 
 
 def common(directory):
@@ -81,6 +134,8 @@ def main():
     parser.add_argument("--levels", default="4,8",
                         help="3D: elements per 45 degrees, comma-separated")
     parser.add_argument("--output", default=OUT, help="the directory of the tables and runs")
+    parser.add_argument("--tables-only", action="store_true",
+                        help="measure the runs already in DIR/runs, run nothing")
     args = parser.parse_args()
     out = os.path.abspath(args.output)
     rows = []
@@ -89,14 +144,15 @@ def main():
         command = [THINLAYER, os.path.join(TOP, "prm", "case3-circular-footing.prm"),
                    "-s", "Kinematics/Harmonics=" + harmonics,
                    "-s", "Kinematics/Stations=" + stations] + common(directory)
-        rows.append(measure("Fourier {%s}" % harmonics, "", command, directory))
+        rows.append(measure("Fourier {%s}" % harmonics, "", command, directory,
+                            not args.tables_only))
         print(rows[-1], flush=True)
     for level in [int(n) for n in args.levels.split(",")]:
         directory = os.path.join(out, "runs", "solid-%d" % level)
         command = [THINLAYER, os.path.join(TOP, "prm", "case3-circular-footing-3d.prm"),
                    "-s", "Mesh/Geometry parameters=" + SOLID_GEOMETRY % level
                    ] + common(directory)
-        rows.append(measure("3D", 4 * level, command, directory))
+        rows.append(measure("3D", 4 * level, command, directory, not args.tables_only))
         print(rows[-1], flush=True)
 
     os.makedirs(out, exist_ok=True)
@@ -107,15 +163,19 @@ def main():
     reference = rows[len(SERIES) - 1]
     lines = ["| model | elements around the half circle | equations | collapse load "
              "(vs {1,3,5,7}) | displacement at half collapse (vs {1,3,5,7}) "
-             "| wall s | peak MB |",
-             "|---|---|---|---|---|---|---|"]
+             "| mean slip at the last converged state x 1e5 (vs {1,3,5,7}) "
+             "| wall s | peak MB | ms per iteration | ms per substitution |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
-        lines.append("| %s | %s | %d | %.4f (%+.2f%%) | %.4f (%+.2f%%) | %.1f | %.0f |" % (
+        lines.append("| %s | %s | %d | %.4f (%+.2f%%) | %.4f (%+.3f%%) | %.4f (%+.2f%%) "
+                     "| %.1f | %.0f | %.2f | %.2f |" % (
             r["model"], r["around"], r["equations"], r["collapse_load"],
             100 * (r["collapse_load"] / reference["collapse_load"] - 1),
             r["displacement_half"],
             100 * (r["displacement_half"] / reference["displacement_half"] - 1),
-            r["wall_seconds"], r["peak_memory_mb"]))
+            1e5 * r["mean_slip"], 100 * (r["mean_slip"] / reference["mean_slip"] - 1),
+            r["wall_seconds"], r["peak_memory_mb"], 1e3 * r["seconds_per_iteration"],
+            1e3 * r["seconds_per_substitution"]))
     with open(os.path.join(out, "fourier-vs-3d.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))

@@ -22,7 +22,8 @@ import sys
 import time
 
 from thinlayer_tools import THINLAYER, TOP, mpirun, run_module
-from thinlayer_tools.report import case1, case4, footings, methods, page, parallel, scaling
+from thinlayer_tools.report import (case1, case4, footings, methods, page, parallel, scaling,
+                                    solid)
 from thinlayer_tools.report.runs import DEFAULT, PAPER, Runs
 
 ALL_ALPHAS = "alpha = 10, 20, 30, 40, 45, 50, 60, 70, 80"
@@ -81,6 +82,8 @@ def run_list(quick):
               ranks) for name, scene, overrides, ranks in parallel.AMG_RUNS]
     # Time and memory against size and ranks.
     runs += scaling.run_list(quick)
+    # 3D bodies: Case 1 extruded, the rigid disc both ways.
+    runs += solid.run_list(quick)
     for material, scene in (("adhesive", "case1-stability-map"),
                             ("frictional", "case1-frictional-stability-map")):
         for method in (("viscoplastic", "default") if quick else METHOD_NAMES):
@@ -121,10 +124,21 @@ def run_benchmark(directory, quick):
         sys.exit("reproduce: the benchmark failed")
 
 
+def run_fourier_vs_3d(directory, quick):
+    """benchmarks/fourier_vs_3d.py's Case 3 by harmonics and in 3D into
+    DIR/benchmarks."""
+    arguments = ["--output", os.path.join(directory, "benchmarks")] + \
+        solid.benchmark_arguments(quick)
+    print("benchmark: python3 -m benchmarks.fourier_vs_3d " + " ".join(arguments), flush=True)
+    if run_module("benchmarks.fourier_vs_3d", arguments).returncode != 0:
+        sys.exit("reproduce: the Fourier-or-3D benchmark failed")
+
+
 def sections(runs, quick):
     return (case1.sections(runs, quick) + footings.sections(runs, quick)
             + case4.sections(runs, quick) + methods.sections(runs, quick)
-            + parallel.sections(runs, quick) + scaling.sections(runs, quick))
+            + parallel.sections(runs, quick) + scaling.sections(runs, quick)
+            + solid.sections(runs, quick))
 
 
 def main():
@@ -149,6 +163,7 @@ def main():
         os.makedirs(os.path.join(work, "logs"))
         run_all(run_list(arguments.quick), work)
         run_benchmark(work, arguments.quick)
+        run_fourier_vs_3d(work, arguments.quick)
     runs = Runs(work)
     print("report: drawing the figures", flush=True)
     items = sections(runs, arguments.quick)

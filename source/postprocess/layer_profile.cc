@@ -159,7 +159,7 @@ namespace thinlayer
       }
 
     // The samples' cells as the analysis holds them, where this rank's.
-    for (Sample &sample : samples)
+    for (LayerSample<2> &sample : samples)
       {
         sample.own = analysis.owns_whole_cell(sample.cell->active_cell_index());
         sample.cell = sample.own
@@ -207,19 +207,21 @@ namespace thinlayer
       std::reverse(abscissae.begin(), abscissae.end());
     for (const double along : abscissae)
       {
-        Sample sample;
+        LayerSample<2> sample;
         sample.cell       = cell;
-        sample.run        = run;
-        sample.position   = mid(along);
-        sample.arc_length = start + (sample.position - entry).norm();
-        sample.tangent    = tangent;
-        sample.normal     = normal;
+        sample.t1         = Tensor<1, 3>({tangent[0], tangent[1], 0});
+        sample.n          = Tensor<1, 3>({normal[0], normal[1], 0});
+        sample.t2         = Tensor<1, 3>({0, 0, 1});
         sample.unit_plus  = unit_point(long_direction, along, plus_face);
         sample.unit_minus = unit_point(long_direction, along, 1 - plus_face);
         for (unsigned int q = 0; q < gauss_2d.size(); ++q)
           if (std::abs(gauss_2d.point(q)[long_direction] - along) < 1e-12)
             sample.thickness_points.push_back(q);
         samples.push_back(sample);
+        const Point<2> position = mid(along);
+        places.push_back({run,
+                          start + (position - entry).norm(),
+                          Point<3>(position[0], position[1], 0)});
       }
     return start + chord.norm();
   }
@@ -243,73 +245,7 @@ namespace thinlayer
   LayerProfile<2>::evaluate(const Analysis<2> &analysis,
                             const unsigned int station) const
   {
-    const Kinematics       &kinematics = analysis.get_kinematics();
-    const double            theta      = kinematics.station_angle(station);
-    const ModeVector        u          = analysis.displacement_at(theta);
-    const ModeVector        du         = analysis.displacement_at(theta, true);
-    const FiniteElement<2> &fe         = analysis.get_dof_handler().get_fe();
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-
-    // The face-to-face difference of @p v at a sample, 3 components.
-    const auto difference = [&](const ModeVector &v, const Sample &s) {
-      Tensor<1, 3> d;
-      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-        {
-          const unsigned int c = fe.system_to_component_index(i).first;
-          d[c] += v[dofs[i]] * (fe.shape_value(i, s.unit_plus) -
-                                fe.shape_value(i, s.unit_minus));
-        }
-      return d;
-    };
-
-    std::vector<InterfaceValues> values;
-    values.reserve(samples.size());
-    for (const Sample &s : samples)
-      {
-        // The points of another rank's cell: their values come from it.
-        if (!s.own)
-          {
-            values.emplace_back();
-            continue;
-          }
-        s.cell->get_dof_indices(dofs);
-        const Tensor<1, 3> t3({s.tangent[0], s.tangent[1], 0});
-        const Tensor<1, 3> n3({s.normal[0], s.normal[1], 0});
-        const Tensor<1, 3> out({0, 0, 1});
-        const Tensor<1, 3> jump  = difference(u, s);
-        const Tensor<1, 3> djump = difference(du, s);
-
-        const unsigned int    cell_index = s.cell->active_cell_index();
-        const MaterialLaw    &law        = analysis.material_law(cell_index);
-        SymmetricTensor<2, 3> stress;
-        InterfaceValues       v;
-        v.plastic     = false;
-        v.yield_ratio = law.can_yield()
-                          ? std::numeric_limits<double>::lowest()
-                          : std::numeric_limits<double>::quiet_NaN();
-        for (const unsigned int q : s.thickness_points)
-          {
-            const PointState &state =
-              analysis.point_state(cell_index, q, station);
-            stress += state.stress / s.thickness_points.size();
-            v.plastic = v.plastic || state.yielding;
-            if (law.can_yield())
-              v.yield_ratio =
-                std::max(v.yield_ratio, law.yield_ratio(state.stress));
-          }
-        const Tensor<1, 3> traction   = stress * n3;
-        v.slip                        = jump * t3;
-        v.slip_out_of_plane           = jump * out;
-        v.opening                     = jump * n3;
-        v.slip_increment              = djump * t3;
-        v.opening_increment           = djump * n3;
-        v.shear_traction              = traction * t3;
-        v.shear_traction_out_of_plane = traction * out;
-        v.normal_traction             = traction * n3;
-        values.push_back(v);
-      }
-    sum_over_ranks(values);
-    return values;
+    return evaluate_layer(analysis, samples, station);
   }
 
 
@@ -317,9 +253,7 @@ namespace thinlayer
   LayerProfile<2>::profile(const Analysis<2> &analysis) const
   {
     Profile result;
-    for (const Sample &s : samples)
-      result.samples.push_back(
-        {s.run, s.arc_length, Point<3>(s.position[0], s.position[1], 0)});
+    result.samples = places;
     for (unsigned int station = 0;
          station < analysis.get_kinematics().n_stations();
          ++station)
@@ -332,26 +266,12 @@ namespace thinlayer
   LayerProfile<2>::cell_fields(const Analysis<2> &analysis,
                                const unsigned int station) const
   {
-    const unsigned int n_cells =
-      analysis.get_dof_handler().get_triangulation().n_active_cells();
-    std::vector<Vector<double>>        fields(cell_field_names.size(),
-                                       Vector<double>(n_cells));
-    std::vector<unsigned int>          count(n_cells);
-    const std::vector<InterfaceValues> values = evaluate(analysis, station);
-    for (unsigned int k = 0; k < samples.size(); ++k)
-      if (samples[k].own)
-        {
-          const unsigned int c = samples[k].cell->active_cell_index();
-          fields[0][c] += values[k].slip;
-          fields[1][c] += values[k].opening;
-          fields[2][c] += values[k].shear_traction;
-          fields[3][c] += values[k].normal_traction;
-          ++count[c];
-        }
-    for (auto &field : fields)
-      for (unsigned int c = 0; c < n_cells; ++c)
-        if (count[c] > 0)
-          field[c] /= count[c];
-    return fields;
+    return layer_cell_averages(analysis,
+                               samples,
+                               evaluate(analysis, station),
+                               {&InterfaceValues::slip,
+                                &InterfaceValues::opening,
+                                &InterfaceValues::shear_traction,
+                                &InterfaceValues::normal_traction});
   }
 } // namespace thinlayer

@@ -115,7 +115,7 @@ namespace thinlayer
                          name);
 
     // The samples' cells as the analysis holds them, where this rank's.
-    for (Sample &sample : samples)
+    for (LayerSample<3> &sample : samples)
       {
         sample.own = analysis.owns_whole_cell(sample.cell->active_cell_index());
         sample.cell = sample.own
@@ -158,21 +158,13 @@ namespace thinlayer
     for (unsigned int i = 0; i < n_1d; ++i)
       for (unsigned int j = 0; j < n_1d; ++j)
         {
-          const double a = gauss_1d.point(i)[0];
-          const double b = gauss_1d.point(j)[0];
-          Sample       sample;
+          const double   a = gauss_1d.point(i)[0];
+          const double   b = gauss_1d.point(j)[0];
+          LayerSample<3> sample;
           sample.cell             = cell;
-          sample.where.position   = at(a, b, 0.5);
-          sample.where.tangent    = tangent;
-          sample.where.normal     = normal;
-          const double a0         = double(i) / n_1d;
-          const double a1         = double(i + 1) / n_1d;
-          const double b0         = double(j) / n_1d;
-          const double b1         = double(j + 1) / n_1d;
-          sample.where.patch      = {{at(a0, b0, 0.5),
-                                      at(a1, b0, 0.5),
-                                      at(a1, b1, 0.5),
-                                      at(a0, b1, 0.5)}};
+          sample.t1               = tangent;
+          sample.n                = normal;
+          sample.t2               = cross_product_3d(tangent, normal);
           sample.unit_plus        = unit_point(thickness, a, b, plus_face);
           sample.unit_minus       = unit_point(thickness, a, b, 1 - plus_face);
           const Point<3> in_plane = unit_point(thickness, a, b, 0);
@@ -183,6 +175,15 @@ namespace thinlayer
               if (x.distance(in_plane) < 1e-12)
                 sample.thickness_points.push_back(q);
             }
+          const double a0 = double(i) / n_1d, a1 = double(i + 1) / n_1d;
+          const double b0 = double(j) / n_1d, b1 = double(j + 1) / n_1d;
+          places.push_back({at(a, b, 0.5),
+                            tangent,
+                            normal,
+                            {{at(a0, b0, 0.5),
+                              at(a1, b0, 0.5),
+                              at(a1, b1, 0.5),
+                              at(a0, b1, 0.5)}}});
           samples.push_back(sample);
         }
   }
@@ -206,70 +207,7 @@ namespace thinlayer
   LayerProfile<3>::evaluate(const Analysis<3> &analysis,
                             const unsigned int station) const
   {
-    const ModeVector        u  = analysis.displacement_at(0);
-    const ModeVector        du = analysis.displacement_at(0, true);
-    const FiniteElement<3> &fe = analysis.get_dof_handler().get_fe();
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-
-    // The face-to-face difference of @p v at a sample.
-    const auto difference = [&](const ModeVector &v, const Sample &s) {
-      Tensor<1, 3> d;
-      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-        {
-          const unsigned int c = fe.system_to_component_index(i).first;
-          d[c] += v[dofs[i]] * (fe.shape_value(i, s.unit_plus) -
-                                fe.shape_value(i, s.unit_minus));
-        }
-      return d;
-    };
-
-    std::vector<InterfaceValues> values;
-    values.reserve(samples.size());
-    for (const Sample &s : samples)
-      {
-        if (!s.own)
-          {
-            values.emplace_back();
-            continue;
-          }
-        s.cell->get_dof_indices(dofs);
-        const Tensor<1, 3> &t1    = s.where.tangent;
-        const Tensor<1, 3> &n     = s.where.normal;
-        const Tensor<1, 3>  t2    = cross_product_3d(t1, n);
-        const Tensor<1, 3>  jump  = difference(u, s);
-        const Tensor<1, 3>  djump = difference(du, s);
-
-        const unsigned int    cell_index = s.cell->active_cell_index();
-        const MaterialLaw    &law        = analysis.material_law(cell_index);
-        SymmetricTensor<2, 3> stress;
-        InterfaceValues       v;
-        v.plastic     = false;
-        v.yield_ratio = law.can_yield()
-                          ? std::numeric_limits<double>::lowest()
-                          : std::numeric_limits<double>::quiet_NaN();
-        for (const unsigned int q : s.thickness_points)
-          {
-            const PointState &state =
-              analysis.point_state(cell_index, q, station);
-            stress += state.stress / s.thickness_points.size();
-            v.plastic = v.plastic || state.yielding;
-            if (law.can_yield())
-              v.yield_ratio =
-                std::max(v.yield_ratio, law.yield_ratio(state.stress));
-          }
-        const Tensor<1, 3> traction   = stress * n;
-        v.slip                        = jump * t1;
-        v.slip_out_of_plane           = jump * t2;
-        v.opening                     = jump * n;
-        v.slip_increment              = djump * t1;
-        v.opening_increment           = djump * n;
-        v.shear_traction              = traction * t1;
-        v.shear_traction_out_of_plane = traction * t2;
-        v.normal_traction             = traction * n;
-        values.push_back(v);
-      }
-    sum_over_ranks(values);
-    return values;
+    return evaluate_layer(analysis, samples, station);
   }
 
 
@@ -277,8 +215,7 @@ namespace thinlayer
   LayerProfile<3>::profile(const Analysis<3> &analysis) const
   {
     Profile result;
-    for (const Sample &s : samples)
-      result.surface_samples.push_back(s.where);
+    result.surface_samples = places;
     result.stations.push_back(evaluate(analysis, 0));
     return result;
   }
@@ -288,29 +225,14 @@ namespace thinlayer
   LayerProfile<3>::cell_fields(const Analysis<3> &analysis,
                                const unsigned int station) const
   {
-    const unsigned int n_cells =
-      analysis.get_dof_handler().get_triangulation().n_active_cells();
-    std::vector<Vector<double>>        fields(cell_field_names.size(),
-                                       Vector<double>(n_cells));
-    std::vector<unsigned int>          count(n_cells);
-    const std::vector<InterfaceValues> values = evaluate(analysis, station);
-    for (unsigned int k = 0; k < samples.size(); ++k)
-      if (samples[k].own)
-        {
-          const unsigned int     c = samples[k].cell->active_cell_index();
-          const InterfaceValues &v = values[k];
-          fields[0][c] += v.slip;
-          fields[1][c] += v.slip_out_of_plane;
-          fields[2][c] += v.opening;
-          fields[3][c] += v.shear_traction;
-          fields[4][c] += v.shear_traction_out_of_plane;
-          fields[5][c] += v.normal_traction;
-          ++count[c];
-        }
-    for (auto &field : fields)
-      for (unsigned int c = 0; c < n_cells; ++c)
-        if (count[c] > 0)
-          field[c] /= count[c];
-    return fields;
+    return layer_cell_averages(analysis,
+                               samples,
+                               evaluate(analysis, station),
+                               {&InterfaceValues::slip,
+                                &InterfaceValues::slip_out_of_plane,
+                                &InterfaceValues::opening,
+                                &InterfaceValues::shear_traction,
+                                &InterfaceValues::shear_traction_out_of_plane,
+                                &InterfaceValues::normal_traction});
   }
 } // namespace thinlayer

@@ -8,6 +8,7 @@
 
 #include <thinlayer/analysis/analysis.h>
 #include <thinlayer/elements/interface_values.h>
+#include <thinlayer/postprocess/layer_sampling.h>
 
 #include <string>
 #include <vector>
@@ -87,23 +88,6 @@ namespace thinlayer
     static const std::vector<std::string> cell_field_names;
 
   private:
-    struct Sample
-    {
-      /// The cell as the analysis holds it, where this rank's (@p own).
-      DoFHandler<2>::active_cell_iterator cell;
-      bool                                own;
-      unsigned int                        run;
-      double                              arc_length;
-      Point<2>                            position;
-      Tensor<1, 2>                        tangent;
-      Tensor<1, 2>                        normal;
-      /// Unit-cell points on the +n and -n faces opposite the sample.
-      Point<2> unit_plus;
-      Point<2> unit_minus;
-      /// The Gauss points across the thickness at this abscissa.
-      std::vector<unsigned int> thickness_points;
-    };
-
     /// The samples of one cell, entered through its short face
     /// @p entry_face, with arc length @p start at that face; returns the
     /// arc length at the far face.
@@ -115,8 +99,10 @@ namespace thinlayer
                      const unsigned int                         run,
                      const double                               start);
 
-    types::material_id  material_id;
-    std::vector<Sample> samples;
+    types::material_id material_id;
+    /// Where the layer is read, and where each sample lies along it.
+    std::vector<LayerSample<2>> samples;
+    std::vector<ProfileSample>  places;
   };
 
 
@@ -169,16 +155,6 @@ namespace thinlayer
     static const std::vector<std::string> cell_field_names;
 
   private:
-    struct Sample
-    {
-      DoFHandler<3>::active_cell_iterator cell;
-      bool                                own;
-      SurfaceSample                       where;
-      Point<3>                            unit_plus;
-      Point<3>                            unit_minus;
-      std::vector<unsigned int>           thickness_points;
-    };
-
     /// The samples of one cell whose thickness direction is
     /// @p thickness.
     void
@@ -186,8 +162,9 @@ namespace thinlayer
                      const DoFHandler<3>::active_cell_iterator &cell,
                      const unsigned int                         thickness);
 
-    types::material_id  material_id;
-    std::vector<Sample> samples;
+    types::material_id          material_id;
+    std::vector<LayerSample<3>> samples;
+    std::vector<SurfaceSample>  places;
   };
 } // namespace thinlayer
 
