@@ -85,11 +85,13 @@ else
   (cd "$debug" && ctest --output-on-failure -j"$(nproc)")
 
   # valgrind: a plane-strain scene (the default method, Newton included), a
-  # Fourier one, and one with zero-thickness interface elements (the mesh
-  # split along a curve, Newton's singular tangent at the mechanism), with
-  # their VTU output, each about 20 s.
+  # Fourier one, one with zero-thickness interface elements (the mesh
+  # split along a curve, Newton's singular tangent at the mechanism), and a
+  # 3D one (hexahedra, a layer's surface profile), with their VTU output,
+  # each about 20 s.
   mkdir -p "$build/valgrind"
-  for scene in case2_default_thin fourier_cylinder_plastic case2_zero_thickness; do
+  for scene in case2_default_thin fourier_cylinder_plastic case2_zero_thickness \
+               case1_3d_default; do
     echo "thinlayer setup: valgrind on tests/scenes/$scene.prm"
     if ! valgrind -q --error-exitcode=99 "$build/thinlayer" "$top/tests/scenes/$scene.prm" \
          -s "Output/Directory=$build/valgrind/$scene" > "$build/valgrind/$scene.log" 2>&1; then
