@@ -154,10 +154,15 @@ namespace thinlayer
         return text_format::printf("%.6g", std::abs(x) < 1e-9 * size ? 0. : x);
       };
       using text_format::printf;
+      // A unit vector, rounding noise below 1e-9 shown as 0.
       const auto direction = [&](const Tensor<1, 3> &v) {
         std::string text;
         for (unsigned int d = 0; d < dimension; ++d)
-          text += (d == 0 ? "(" : ", ") + printf("%.3g", v[d] / v.norm());
+          {
+            const double x = v[d] / v.norm();
+            text += (d == 0 ? "(" : ", ") +
+                    printf("%.3g", std::abs(x) < 1e-9 ? 0. : x);
+          }
         return text + ")";
       };
       if (w.norm() > 1e-6 * t.norm())

@@ -133,6 +133,32 @@ namespace
           solid_scene("cube.msh", "subsection Interface curve 3\nend\n"));
     check("zero-thickness interface elements in 3d", {"interface-3d.prm"});
 
+    // Two cubes stacked along z, their base (z = 0) and top held in their
+    // plane (x, y) only: free to move along z, and nothing else.
+    write_hex_msh("two-cubes.msh",
+                  {"0 0 0",
+                   "1 0 0",
+                   "1 1 0",
+                   "0 1 0",
+                   "0 0 1",
+                   "1 0 1",
+                   "1 1 1",
+                   "0 1 1",
+                   "0 0 2",
+                   "1 0 2",
+                   "1 1 2",
+                   "0 1 2"},
+                  {{1, 2, 3, 4, 5, 6, 7, 8}, {5, 6, 7, 8, 9, 10, 11, 12}});
+    write("sliding.prm", solid_scene("two-cubes.msh", "", "0"));
+    check("a 3D body held in x and y only, on its base and top (free along z)",
+          {"sliding.prm",
+           "-s",
+           "Boundary 1/Constrained components=x, y",
+           "-s",
+           "Boundary 2/Constrained components=x, y",
+           "-s",
+           "Boundary 2/Displacement=0.001; 0; 0"});
+
     write("good-2d-mesh-3d.prm", solid_scene("good.geo"));
     check("a 2D geometry under 3d kinematics", {"good-2d-mesh-3d.prm"});
   }
