@@ -64,7 +64,7 @@ namespace thinlayer
   LayerProfile<2>::LayerProfile(const Analysis<2>       &analysis,
                                 const types::material_id material_id,
                                 const std::string       &parameter_file)
-    : material_id(material_id)
+    : LayerReading<2>(material_id)
   {
     // The layer is chained on the whole mesh (its runs may cross ranks);
     // each rank then evaluates the samples of its own cells.
@@ -224,28 +224,6 @@ namespace thinlayer
                           Point<3>(position[0], position[1], 0)});
       }
     return start + chord.norm();
-  }
-
-
-  types::material_id
-  LayerProfile<2>::get_material_id() const
-  {
-    return material_id;
-  }
-
-
-  unsigned int
-  LayerProfile<2>::n_points() const
-  {
-    return samples.size();
-  }
-
-
-  std::vector<InterfaceValues>
-  LayerProfile<2>::evaluate(const Analysis<2> &analysis,
-                            const unsigned int station) const
-  {
-    return evaluate_layer(analysis, samples, station);
   }
 
 

@@ -70,7 +70,7 @@ namespace thinlayer
   LayerProfile<3>::LayerProfile(const Analysis<3>       &analysis,
                                 const types::material_id material_id,
                                 const std::string       &parameter_file)
-    : material_id(material_id)
+    : LayerReading<3>(material_id)
   {
     // The layer is found on the whole mesh, in the order of its cells;
     // each rank then evaluates the samples of its own cells.
@@ -186,28 +186,6 @@ namespace thinlayer
                               at(a0, b1, 0.5)}}});
           samples.push_back(sample);
         }
-  }
-
-
-  types::material_id
-  LayerProfile<3>::get_material_id() const
-  {
-    return material_id;
-  }
-
-
-  unsigned int
-  LayerProfile<3>::n_points() const
-  {
-    return samples.size();
-  }
-
-
-  std::vector<InterfaceValues>
-  LayerProfile<3>::evaluate(const Analysis<3> &analysis,
-                            const unsigned int station) const
-  {
-    return evaluate_layer(analysis, samples, station);
   }
 
 

@@ -47,7 +47,7 @@ namespace thinlayer
    * taken at every station.
    */
   template <>
-  class LayerProfile<2>
+  class LayerProfile<2> : public LayerReading<2>
   {
   public:
     /**
@@ -59,18 +59,6 @@ namespace thinlayer
     LayerProfile(const Analysis<2>       &analysis,
                  const types::material_id material_id,
                  const std::string       &parameter_file);
-
-    types::material_id
-    get_material_id() const;
-
-    unsigned int
-    n_points() const;
-
-    /// The values at every sample, at station @p station. On many ranks
-    /// every rank calls it, and receives the values of the samples in
-    /// other ranks' cells from them.
-    std::vector<InterfaceValues>
-    evaluate(const Analysis<2> &analysis, const unsigned int station) const;
 
     /// The values at every sample and station (every rank calls it).
     Profile
@@ -99,10 +87,8 @@ namespace thinlayer
                      const unsigned int                         run,
                      const double                               start);
 
-    types::material_id material_id;
-    /// Where the layer is read, and where each sample lies along it.
-    std::vector<LayerSample<2>> samples;
-    std::vector<ProfileSample>  places;
+    /// Where each sample lies along the layer.
+    std::vector<ProfileSample> places;
   };
 
 
@@ -129,22 +115,13 @@ namespace thinlayer
    * cell's mid-surface around it.
    */
   template <>
-  class LayerProfile<3>
+  class LayerProfile<3> : public LayerReading<3>
   {
   public:
     /// As LayerProfile<2>'s.
     LayerProfile(const Analysis<3>       &analysis,
                  const types::material_id material_id,
                  const std::string       &parameter_file);
-
-    types::material_id
-    get_material_id() const;
-
-    unsigned int
-    n_points() const;
-
-    std::vector<InterfaceValues>
-    evaluate(const Analysis<3> &analysis, const unsigned int station) const;
 
     Profile
     profile(const Analysis<3> &analysis) const;
@@ -162,9 +139,7 @@ namespace thinlayer
                      const DoFHandler<3>::active_cell_iterator &cell,
                      const unsigned int                         thickness);
 
-    types::material_id          material_id;
-    std::vector<LayerSample<3>> samples;
-    std::vector<SurfaceSample>  places;
+    std::vector<SurfaceSample> places;
   };
 } // namespace thinlayer
 

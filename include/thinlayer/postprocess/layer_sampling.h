@@ -53,6 +53,45 @@ namespace thinlayer
 
 
   /**
+   * What both LayerProfile classes share: the layer's material id and its
+   * samples, read at a station.
+   */
+  template <int dim>
+  class LayerReading
+  {
+  public:
+    types::material_id
+    get_material_id() const
+    {
+      return material_id;
+    }
+
+    unsigned int
+    n_points() const
+    {
+      return samples.size();
+    }
+
+    /// The values at every sample, at station @p station. On many ranks
+    /// every rank calls it, and receives the values of the samples in
+    /// other ranks' cells from them.
+    std::vector<InterfaceValues>
+    evaluate(const Analysis<dim> &analysis, const unsigned int station) const
+    {
+      return evaluate_layer(analysis, samples, station);
+    }
+
+  protected:
+    explicit LayerReading(const types::material_id material_id)
+      : material_id(material_id)
+    {}
+
+    types::material_id            material_id;
+    std::vector<LayerSample<dim>> samples;
+  };
+
+
+  /**
    * The cell averages of @p fields (each a member of InterfaceValues) of
    * @p values at @p samples, over this rank's active cells: zero off the
    * layer and on other ranks' cells (for the VTU).
