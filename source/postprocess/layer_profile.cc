@@ -3,7 +3,6 @@
 
 #include <thinlayer/base/input_error.h>
 #include <thinlayer/base/text_format.h>
-#include <thinlayer/parallel/distributed_mesh.h>
 #include <thinlayer/postprocess/layer_profile.h>
 
 #include <algorithm>
@@ -41,16 +40,6 @@ namespace thinlayer
         return a[0] < b[0];
       return a[1] < b[1] - tolerance;
     }
-
-    /// Whether the neighbour of @p cell across face @p f is in the layer.
-    bool
-    layer_neighbour(const CellIterator      &cell,
-                    const unsigned int       f,
-                    const types::material_id id)
-    {
-      return !cell->at_boundary(f) && cell->neighbor(f)->is_active() &&
-             cell->neighbor(f)->material_id() == id;
-    }
   } // namespace
 
 
@@ -83,7 +72,7 @@ namespace thinlayer
         {
           std::array<unsigned int, 2> neighbours = {{0, 0}};
           for (const unsigned int f : cell->face_indices())
-            neighbours[f / 2] += layer_neighbour(cell, f, material_id);
+            neighbours[f / 2] += in_layer_across(cell, f);
           unsigned int direction;
           if (neighbours[0] > 0 && neighbours[1] > 0)
             {
@@ -115,7 +104,7 @@ namespace thinlayer
       starts;
     for (const auto &[cell, direction] : long_direction)
       for (const unsigned int f : {2 * direction, 2 * direction + 1})
-        if (!layer_neighbour(cell, f, material_id))
+        if (!in_layer_across(cell, f))
           starts.push_back({cell->face(f)->center(), {cell, f}});
     std::sort(starts.begin(), starts.end(), [&](const auto &a, const auto &b) {
       return lower_left(a.first, b.first, tolerance);
@@ -139,7 +128,7 @@ namespace thinlayer
             arc_length                   = add_cell_samples(
               analysis, cell, direction, entry_face, run, arc_length);
             const unsigned int exit = entry_face ^ 1;
-            if (!layer_neighbour(cell, exit, material_id))
+            if (!in_layer_across(cell, exit))
               break;
             const CellIterator next = cell->neighbor(exit);
             if (visited.count(next) != 0)
@@ -158,14 +147,7 @@ namespace thinlayer
         ++run;
       }
 
-    // The samples' cells as the analysis holds them, where this rank's.
-    for (LayerSample<2> &sample : samples)
-      {
-        sample.own = analysis.owns_whole_cell(sample.cell->active_cell_index());
-        sample.cell = sample.own
-                        ? cell_of(analysis.get_dof_handler(), sample.cell->id())
-                        : CellIterator();
-      }
+    place_on_ranks(analysis);
   }
 
 

@@ -1,9 +1,24 @@
+#include <thinlayer/parallel/distributed_mesh.h>
 #include <thinlayer/postprocess/layer_sampling.h>
 
 #include <limits>
 
 namespace thinlayer
 {
+  template <int dim>
+  void
+  LayerReading<dim>::place_on_ranks(const Analysis<dim> &analysis)
+  {
+    for (LayerSample<dim> &sample : samples)
+      {
+        sample.own = analysis.owns_whole_cell(sample.cell->active_cell_index());
+        sample.cell = sample.own
+                        ? cell_of(analysis.get_dof_handler(), sample.cell->id())
+                        : typename DoFHandler<dim>::active_cell_iterator();
+      }
+  }
+
+
   template <int dim>
   std::vector<InterfaceValues>
   evaluate_layer(const Analysis<dim>                 &analysis,
@@ -105,6 +120,8 @@ namespace thinlayer
   }
 
 
+  template class LayerReading<2>;
+  template class LayerReading<3>;
   template std::vector<InterfaceValues>
   evaluate_layer(const Analysis<2> &,
                  const std::vector<LayerSample<2>> &,

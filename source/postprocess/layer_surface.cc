@@ -2,7 +2,6 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <thinlayer/base/input_error.h>
-#include <thinlayer/parallel/distributed_mesh.h>
 #include <thinlayer/postprocess/layer_profile.h>
 
 #include <algorithm>
@@ -16,16 +15,6 @@ namespace thinlayer
   namespace
   {
     using CellIterator = DoFHandler<3>::active_cell_iterator;
-
-    /// Whether the neighbour of @p cell across face @p f is in the layer.
-    bool
-    layer_neighbour(const CellIterator      &cell,
-                    const unsigned int       f,
-                    const types::material_id id)
-    {
-      return !cell->at_boundary(f) && cell->neighbor(f)->is_active() &&
-             cell->neighbor(f)->material_id() == id;
-    }
 
     /// The unit-cell point with coordinate @p a and @p b in the two
     /// directions other than @p thickness (in increasing order) and
@@ -86,8 +75,8 @@ namespace thinlayer
           int    thickness = -1;
           double shortest  = std::numeric_limits<double>::max();
           for (unsigned int d = 0; d < 3; ++d)
-            if (!layer_neighbour(cell, 2 * d, material_id) &&
-                !layer_neighbour(cell, 2 * d + 1, material_id))
+            if (!in_layer_across(cell, 2 * d) &&
+                !in_layer_across(cell, 2 * d + 1))
               {
                 const double length = (cell->face(2 * d + 1)->center() -
                                        cell->face(2 * d)->center())
@@ -114,14 +103,7 @@ namespace thinlayer
                        "expected a material id of the mesh: no cell has " +
                          name);
 
-    // The samples' cells as the analysis holds them, where this rank's.
-    for (LayerSample<3> &sample : samples)
-      {
-        sample.own = analysis.owns_whole_cell(sample.cell->active_cell_index());
-        sample.cell = sample.own
-                        ? cell_of(analysis.get_dof_handler(), sample.cell->id())
-                        : CellIterator();
-      }
+    place_on_ranks(analysis);
   }
 
 

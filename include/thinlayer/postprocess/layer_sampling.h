@@ -86,6 +86,21 @@ namespace thinlayer
       : material_id(material_id)
     {}
 
+    /// Whether the neighbour of @p cell across face @p f is in the layer.
+    bool
+    in_layer_across(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                    const unsigned int f) const
+    {
+      return !cell->at_boundary(f) && cell->neighbor(f)->is_active() &&
+             cell->neighbor(f)->material_id() == material_id;
+    }
+
+    /// The samples, found on the whole mesh, moved to the cells as
+    /// @p analysis holds them, where this rank's (@p own), so that each
+    /// rank evaluates its own.
+    void
+    place_on_ranks(const Analysis<dim> &analysis);
+
     types::material_id            material_id;
     std::vector<LayerSample<dim>> samples;
   };
