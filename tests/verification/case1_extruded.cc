@@ -22,33 +22,13 @@
 #include <string>
 #include <vector>
 
+#include "../common/run_results.h"
+#include "../common/truths.h"
+
 namespace
 {
-  using Table = std::vector<std::map<std::string, double>>;
-
-  /// A CSV of numbers, row by row, by column name.
-  Table
-  read_csv(const std::string &file)
-  {
-    std::ifstream            in(file);
-    std::string              line;
-    std::vector<std::string> names;
-    Table                    rows;
-    std::getline(in, line);
-    std::istringstream header(line);
-    for (std::string name; std::getline(header, name, ',');)
-      names.push_back(name);
-    while (std::getline(in, line))
-      {
-        std::istringstream row(line);
-        rows.emplace_back();
-        std::string value;
-        for (const std::string &name : names)
-          if (std::getline(row, value, ','))
-            rows.back()[name] = std::atof(value.c_str());
-      }
-    return rows;
-  }
+  using run_results::read_csv;
+  using run_results::Table;
 
   /// Runs @p prm with @p overrides into @p directory; whether it ran.
   bool
@@ -88,7 +68,7 @@ main()
       !run("case1-3d.prm",
            {mesh + ", depth=0.25, elements_depth=1"},
            "extruded"))
-    return 0;
+    return 1;
 
   const Table plane      = read_csv("plane/history.csv");
   const Table extruded   = read_csv("extruded/history.csv");
@@ -116,11 +96,10 @@ main()
       if (plane[k].at("converged") == 1)
         last_converged = plane[k].at("step");
     }
-  std::printf("plane strain and extruded: the same attempts, load factors "
-              "and verdicts: %s; loads and displacements agree to 1e-8 of "
-              "their largest: %s\n",
-              same_steps ? "yes" : "NO",
-              history_error < 1e-8 ? "yes" : "NO");
+  std::printf("plane strain and extruded:\n");
+  truths::expect(same_steps, "the same attempts, load factors and verdicts");
+  truths::expect(std::isfinite(history_error) && history_error < 1e-8,
+                 "loads and displacements agree to 1e-8 of their largest");
 
   // The slab at the last converged step.
   char step[16];
@@ -158,14 +137,15 @@ main()
                                    std::abs(s.at("shear_traction_2"))});
         }
   std::printf("slab at the last converged step: %zu samples in 2D, %zu on "
-              "the surface, each over a 2D one: %s; slip, opening and "
-              "tractions agree to 1e-8 (of the largest slip, of the "
-              "adhesion): %s; slip and shear along z below 1e-8: %s\n",
+              "the surface\n",
               line.size(),
-              surface.size(),
-              matched == surface.size() && surface.size() == 2 * line.size()
-                ? "yes"
-                : "NO",
-              profile_error < 1e-8 ? "yes" : "NO",
-              out_of_plane < 1e-8 ? "yes" : "NO");
+              surface.size());
+  truths::expect(matched == surface.size() && surface.size() == 2 * line.size(),
+                 "each surface sample over a 2D one");
+  truths::expect(std::isfinite(profile_error) && profile_error < 1e-8,
+                 "slip, opening and tractions agree to 1e-8 (of the largest "
+                 "slip, of the adhesion)");
+  truths::expect(std::isfinite(out_of_plane) && out_of_plane < 1e-8,
+                 "slip and shear along z below 1e-8");
+  return truths::conclude();
 }

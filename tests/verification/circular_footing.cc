@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include "../common/run_results.h"
+
 namespace
 {
   /// The collapse load (the plateau) of one run, from its summary.json.
@@ -27,11 +29,7 @@ namespace
     std::ostringstream out, err;
     if (thinlayer::run_command_line(arguments, out, err) != 0)
       std::cout << "run failed: " << err.str();
-    std::ostringstream text;
-    text << std::ifstream("results/summary.json").rdbuf();
-    const std::string json = text.str();
-    const auto        at   = json.find("\"collapse_load\": ") + 17;
-    return std::atof(json.c_str() + at);
+    return run_results::summary_number("results", "collapse_load");
   }
 } // namespace
 

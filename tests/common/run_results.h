@@ -1,0 +1,56 @@
+// What the tests that run whole scenes read back: a number of a run's
+// summary.json, and a CSV (history, profiles) by column name.
+#ifndef thinlayer_tests_run_results_h
+#define thinlayer_tests_run_results_h
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace run_results
+{
+  /// The number @p key of @p directory/summary.json (NaN if it has none).
+  inline double
+  summary_number(const std::string &directory, const std::string &key)
+  {
+    std::ostringstream text;
+    text << std::ifstream(directory + "/summary.json").rdbuf();
+    const std::string json = text.str();
+    const auto        at   = json.find("\"" + key + "\": ");
+    return at == std::string::npos
+             ? NAN
+             : std::atof(json.c_str() + at + key.size() + 4);
+  }
+
+  using Table = std::vector<std::map<std::string, double>>;
+
+  /// A CSV of numbers, row by row, by column name.
+  inline Table
+  read_csv(const std::string &file)
+  {
+    std::ifstream            in(file);
+    std::string              line;
+    std::vector<std::string> names;
+    Table                    rows;
+    std::getline(in, line);
+    std::istringstream header(line);
+    for (std::string name; std::getline(header, name, ',');)
+      names.push_back(name);
+    while (std::getline(in, line))
+      {
+        std::istringstream row(line);
+        rows.emplace_back();
+        std::string value;
+        for (const std::string &name : names)
+          if (std::getline(row, value, ','))
+            rows.back()[name] = std::atof(value.c_str());
+      }
+    return rows;
+  }
+} // namespace run_results
+
+#endif
