@@ -164,27 +164,10 @@ def _difference(row, reference, key):
     return results.number(row[key]) / results.number(reference[key]) - 1
 
 
-def fourier_or_3d_section(directory):
-    rows_csv = results.read_csv(os.path.join(directory, "benchmarks", "fourier-vs-3d.csv"))
-    fourier = [r for r in rows_csv if r["model"].startswith("Fourier")]
-    solid = [r for r in rows_csv if r["model"] == "3D"]
-    reference = fourier[-1]
-    table = [["model", "elements around the half circle", "equations", "collapse load",
-              "displacement at half collapse (x 1e-5)", "vs the richest Fourier",
-              "mean slip under the footing at the last converged state (x 1e-5)", "vs the richest Fourier",
-              "wall s", "peak MB", "ms per iteration", "ms per substitution"]]
-    for r in rows_csv:
-        table.append([r["model"], r["around"] or "-", r["equations"],
-                      "%.4f" % results.number(r["collapse_load"]),
-                      "%.4f" % results.number(r["displacement_half"]),
-                      "%+.3f%%" % (100 * _difference(r, reference, "displacement_half")),
-                      "%.4f" % (1e5 * results.number(r["mean_slip"])),
-                      "%+.2f%%" % (100 * _difference(r, reference, "mean_slip")),
-                      "%.1f" % results.number(r["wall_seconds"]),
-                      "%.0f" % results.number(r["peak_memory_mb"]),
-                      "%.2f" % (1e3 * results.number(r["seconds_per_iteration"])),
-                      "%.2f" % (1e3 * results.number(r["seconds_per_substitution"]))])
-
+def _error_cost_figure(fourier, solid, reference):
+    """Each model's difference from REFERENCE against its wall time: the
+    displacement at half collapse and the mean slip, Fourier and 3D as
+    series."""
     fig, axes = plt.subplots(1, 2, figsize=(10, 4))
     for ax, key, title in ((axes[0], "displacement_half",
                             "footing displacement at half the collapse load"),
@@ -211,6 +194,31 @@ def fourier_or_3d_section(directory):
     fig.tight_layout()
     figure = data_uri(fig)
     plt.close(fig)
+    return figure
+
+
+def fourier_or_3d_section(directory):
+    rows_csv = results.read_csv(os.path.join(directory, "benchmarks", "fourier-vs-3d.csv"))
+    fourier = [r for r in rows_csv if r["model"].startswith("Fourier")]
+    solid = [r for r in rows_csv if r["model"] == "3D"]
+    reference = fourier[-1]
+    table = [["model", "elements around the half circle", "equations", "collapse load",
+              "displacement at half collapse (x 1e-5)", "vs the richest Fourier",
+              "mean slip under the footing at the last converged state (x 1e-5)", "vs the richest Fourier",
+              "wall s", "peak MB", "ms per iteration", "ms per substitution"]]
+    for r in rows_csv:
+        table.append([r["model"], r["around"] or "-", r["equations"],
+                      "%.4f" % results.number(r["collapse_load"]),
+                      "%.4f" % results.number(r["displacement_half"]),
+                      "%+.3f%%" % (100 * _difference(r, reference, "displacement_half")),
+                      "%.4f" % (1e5 * results.number(r["mean_slip"])),
+                      "%+.2f%%" % (100 * _difference(r, reference, "mean_slip")),
+                      "%.1f" % results.number(r["wall_seconds"]),
+                      "%.0f" % results.number(r["peak_memory_mb"]),
+                      "%.2f" % (1e3 * results.number(r["seconds_per_iteration"])),
+                      "%.2f" % (1e3 * results.number(r["seconds_per_substitution"]))])
+
+    figure = _error_cost_figure(fourier, solid, reference)
 
     def first_within(key, tolerance):
         return next((r["model"].replace("Fourier ", "") for r in fourier[:-1]
