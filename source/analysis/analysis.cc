@@ -416,11 +416,11 @@ namespace thinlayer
     const unsigned int n = dof_component.size();
     for (unsigned int m = 0; m < systems.size(); ++m)
       {
-        const double t1 = kinematics.T1_at(m, theta);
-        const double t2 = kinematics.T2_at(m, theta);
+        const double t[3] = {kinematics.T_at(0, m, theta),
+                             kinematics.T_at(1, m, theta),
+                             kinematics.T_at(2, m, theta)};
         for (unsigned int k = 0; k < n; ++k)
-          u.local_element(k) +=
-            (dof_component[k] < 2 ? t1 : t2) * modes[m].local_element(k);
+          u.local_element(k) += t[dof_component[k]] * modes[m].local_element(k);
       }
     u.set_ghost_state(true);
     return u;

@@ -316,9 +316,9 @@ namespace thinlayer
                   const double p = pressure(c->second, x, thetas[j]);
                   for (unsigned int d = 0; d < dim; ++d)
                     g[d] -= p * fe_face.normal_vector(q)[d];
-                  t[0] += g[0] * kinematics.T1_at(m, thetas[j]) * weights[j];
-                  t[1] += g[1] * kinematics.T1_at(m, thetas[j]) * weights[j];
-                  t[2] += g[2] * kinematics.T2_at(m, thetas[j]) * weights[j];
+                  for (unsigned int k = 0; k < 3; ++k)
+                    t[k] +=
+                      g[k] * kinematics.T_at(k, m, thetas[j]) * weights[j];
                 }
               for (const unsigned int i : fe_face.dof_indices())
                 {

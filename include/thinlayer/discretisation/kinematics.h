@@ -147,6 +147,28 @@ namespace thinlayer
     double
     T2_at(const unsigned int m, const double theta) const;
 
+    /// Whether displacement component @p c varies with T2 (theta of a
+    /// Fourier scene) rather than T1 (x, y and, in 3D, z; r and z).
+    bool
+    is_circumferential(const unsigned int c) const
+    {
+      return fourier && c == 2;
+    }
+
+    /// T1_at() or T2_at() as component @p c varies.
+    double
+    T_at(const unsigned int c, const unsigned int m, const double theta) const
+    {
+      return is_circumferential(c) ? T2_at(m, theta) : T1_at(m, theta);
+    }
+
+    /// T1() or T2() as component @p c varies.
+    double
+    T(const unsigned int c, const unsigned int m, const unsigned int s) const
+    {
+      return is_circumferential(c) ? T2(m, s) : T1(m, s);
+    }
+
     /**
      * Whether component @p c plays no part in mode @p m (u_theta for n = 0
      * of the symmetric series; u_r and u_z for n = 0 of the antisymmetric
