@@ -3,14 +3,16 @@
 // one element thick (the interface).
 //
 // Parameters: those of inclined-column.geo (alpha, aspect_ratio,
-// block_height, elements_along, elements_block, x0; zero_thickness must be
-// 0), and
+// block_height, elements_along, elements_block, x0, zero_thickness), and
 //   depth            the column's extent along z
 //   elements_depth   elements along z
 //
 // Physical groups:
 //   volume  1 "block"      the column above and below the interface
-//   volume  2 "interface"  the inclined slab
+//   volume  2 "interface"  the inclined slab (none with zero_thickness)
+//   surface 3 "interface"  the inclined plane where the blocks meet
+//                          (zero_thickness only), for zero-thickness
+//                          interface elements ("Interface curve 3")
 //   surface 1 "bottom"     base of the column (y = 0)
 //   surface 2 "top"        top of the column
 //   surface 5 "back"       the face z = 0
@@ -21,21 +23,32 @@ DefineConstant[
 ];
 
 Include "inclined-column.geo";
-If (zero_thickness)
-  Error("inclined-column-3d.geo: zero_thickness = 1 is for 2D meshes");
-EndIf
 Delete Physicals;
 
-// For each of the surfaces 1 (lower block), 2 (interface) and 3 (upper
-// block) six entries: the far face, the volume, and the faces swept by the
-// curves of its loop in order (1: 1, 2, 3, 4; 3: 6, 8, 9, 10).
-out[] = Extrude {0, 0, depth} {
-  Surface{1, 2, 3}; Layers{elements_depth}; Recombine;
-};
-
-Physical Volume("block", 1) = {out[1], out[13]};
-Physical Volume("interface", 2) = {out[7]};
-Physical Surface("bottom", 1) = {out[2]};
-Physical Surface("top", 2) = {out[16]};
-Physical Surface("back", 5) = {1, 2, 3};
-Physical Surface("front", 6) = {out[0], out[6], out[12]};
+If (zero_thickness)
+  // For each of the surfaces 1 (lower block) and 3 (upper block) six
+  // entries: the far face, the volume, and the faces swept by the curves of
+  // its loop in order (1: 1, 2, 3, 4; 3: 3, 8, 9, 10).
+  out[] = Extrude {0, 0, depth} {
+    Surface{1, 3}; Layers{elements_depth}; Recombine;
+  };
+  Physical Volume("block", 1) = {out[1], out[7]};
+  Physical Surface("bottom", 1) = {out[2]};
+  Physical Surface("top", 2) = {out[10]};
+  Physical Surface("interface", 3) = {out[4]};
+  Physical Surface("back", 5) = {1, 3};
+  Physical Surface("front", 6) = {out[0], out[6]};
+Else
+  // For each of the surfaces 1 (lower block), 2 (interface) and 3 (upper
+  // block) six entries: the far face, the volume, and the faces swept by
+  // the curves of its loop in order (1: 1, 2, 3, 4; 3: 6, 8, 9, 10).
+  out[] = Extrude {0, 0, depth} {
+    Surface{1, 2, 3}; Layers{elements_depth}; Recombine;
+  };
+  Physical Volume("block", 1) = {out[1], out[13]};
+  Physical Volume("interface", 2) = {out[7]};
+  Physical Surface("bottom", 1) = {out[2]};
+  Physical Surface("top", 2) = {out[16]};
+  Physical Surface("back", 5) = {1, 2, 3};
+  Physical Surface("front", 6) = {out[0], out[6], out[12]};
+EndIf

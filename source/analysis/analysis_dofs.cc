@@ -18,29 +18,28 @@
 namespace thinlayer
 {
   template <int dim>
-  std::vector<FacingSides>
+  std::vector<FacingSides<dim>>
   Analysis<dim>::facing_sides(const DoFHandler<dim> &whole_mesh) const
   {
-    std::vector<FacingSides> sides;
-    if constexpr (dim == 2)
-      if (!parameters.interface_elements.empty())
-        {
-          std::set<types::boundary_id> curves;
-          for (const auto &[id, curve] : parameters.interface_elements)
-            curves.insert(id);
-          sides =
-            pair_facing_sides(whole_mesh, curves, parameters.parameter_file);
-        }
+    std::vector<FacingSides<dim>> sides;
+    if (!parameters.interface_elements.empty())
+      {
+        std::set<types::boundary_id> curves;
+        for (const auto &[id, curve] : parameters.interface_elements)
+          curves.insert(id);
+        sides =
+          pair_facing_sides(whole_mesh, curves, parameters.parameter_file);
+      }
     return sides;
   }
 
 
   template <int dim>
   void
-  Analysis<dim>::split_mesh(const std::vector<FacingSides> &sides)
+  Analysis<dim>::split_mesh(const std::vector<FacingSides<dim>> &sides)
   {
     std::vector<std::pair<unsigned int, unsigned int>> joined;
-    for (const FacingSides &pair : sides)
+    for (const FacingSides<dim> &pair : sides)
       joined.emplace_back(pair.plus_cell->active_cell_index(),
                           pair.minus_cell->active_cell_index());
     whole_partition =
@@ -59,8 +58,8 @@ namespace thinlayer
     // facing sides of the interface elements (their runs and arc lengths
     // span the ranks), and the partition, which keeps each element's two
     // cells on one rank.
-    const DoFHandler<dim>          whole_mesh(tria);
-    const std::vector<FacingSides> sides = facing_sides(whole_mesh);
+    const DoFHandler<dim>               whole_mesh(tria);
+    const std::vector<FacingSides<dim>> sides = facing_sides(whole_mesh);
     if (mpi::n_ranks() > 1)
       split_mesh(sides);
     dof_handler.distribute_dofs(fe);
@@ -237,10 +236,10 @@ namespace thinlayer
   }
 
 
-  template std::vector<FacingSides>
+  template std::vector<FacingSides<2>>
   Analysis<2>::facing_sides(const DoFHandler<2> &) const;
   template void
-  Analysis<2>::split_mesh(const std::vector<FacingSides> &);
+  Analysis<2>::split_mesh(const std::vector<FacingSides<2>> &);
   template void
   Analysis<2>::setup_dofs_and_constraints();
   template void
@@ -251,10 +250,10 @@ namespace thinlayer
   Analysis<2>::setup_dof_partitioner();
   template void
   Analysis<2>::setup_dof_components();
-  template std::vector<FacingSides>
+  template std::vector<FacingSides<3>>
   Analysis<3>::facing_sides(const DoFHandler<3> &) const;
   template void
-  Analysis<3>::split_mesh(const std::vector<FacingSides> &);
+  Analysis<3>::split_mesh(const std::vector<FacingSides<3>> &);
   template void
   Analysis<3>::setup_dofs_and_constraints();
   template void

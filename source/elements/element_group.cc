@@ -1,4 +1,3 @@
-#include <thinlayer/base/input_error.h>
 #include <thinlayer/elements/continuum_cells.h>
 #include <thinlayer/elements/element_group.h>
 #include <thinlayer/elements/interface_elements.h>
@@ -17,14 +16,14 @@ namespace thinlayer
 
   template <int dim>
   std::vector<std::unique_ptr<ElementGroup>>
-  create_element_groups(const Parameters               &parameters,
-                        const DoFHandler<dim>          &dof_handler,
-                        const Mapping<dim>             &mapping,
-                        const Quadrature<dim>          &quadrature,
-                        const Kinematics               &kinematics,
-                        const CellPartition            &partition,
-                        const std::vector<FacingSides> &facing_sides,
-                        const CellPartition            &whole_partition)
+  create_element_groups(const Parameters                    &parameters,
+                        const DoFHandler<dim>               &dof_handler,
+                        const Mapping<dim>                  &mapping,
+                        const Quadrature<dim>               &quadrature,
+                        const Kinematics                    &kinematics,
+                        const CellPartition                 &partition,
+                        const std::vector<FacingSides<dim>> &facing_sides,
+                        const CellPartition                 &whole_partition)
   {
     std::vector<std::unique_ptr<ElementGroup>> groups;
     groups.push_back(std::make_unique<ContinuumCells<dim>>(dof_handler,
@@ -35,29 +34,16 @@ namespace thinlayer
                                                            partition));
     if (!parameters.interface_elements.empty())
       {
-        // The interface elements join the sides of quadrilaterals: a family
-        // of 2D meshes (on a 3D mesh they would join faces, a family of its
-        // own).
-        if constexpr (dim == 2)
-          {
-            auto elements = std::make_unique<InterfaceElements>();
-            elements->reinit(facing_sides,
-                             dof_handler,
-                             mapping,
-                             kinematics,
-                             parameters.interface_elements,
-                             parameters.materials,
-                             whole_partition,
-                             parameters.parameter_file);
-            groups.push_back(std::move(elements));
-          }
-        else
-          throw InputError(
-            parameters.parameter_file,
-            InterfaceElementParameters::section(
-              parameters.interface_elements.begin()->first),
-            "interface elements along curves of a 2D mesh; this mesh is " +
-              std::to_string(dim) + "D");
+        auto elements = std::make_unique<InterfaceElements<dim>>();
+        elements->reinit(facing_sides,
+                         dof_handler,
+                         mapping,
+                         kinematics,
+                         parameters.interface_elements,
+                         parameters.materials,
+                         whole_partition,
+                         parameters.parameter_file);
+        groups.push_back(std::move(elements));
       }
     return groups;
   }
@@ -70,7 +56,7 @@ namespace thinlayer
                         const Quadrature<2> &,
                         const Kinematics &,
                         const CellPartition &,
-                        const std::vector<FacingSides> &,
+                        const std::vector<FacingSides<2>> &,
                         const CellPartition &);
   template std::vector<std::unique_ptr<ElementGroup>>
   create_element_groups(const Parameters &,
@@ -79,6 +65,6 @@ namespace thinlayer
                         const Quadrature<3> &,
                         const Kinematics &,
                         const CellPartition &,
-                        const std::vector<FacingSides> &,
+                        const std::vector<FacingSides<3>> &,
                         const CellPartition &);
 } // namespace thinlayer

@@ -1,4 +1,6 @@
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
 
 #include <thinlayer/base/input_error.h>
 #include <thinlayer/elements/interface_elements.h>
@@ -14,11 +16,12 @@ namespace thinlayer
 {
 
 
+  template <int dim>
   void
-  InterfaceElements::reinit(
-    const std::vector<FacingSides>                                 &pairs,
-    const DoFHandler<2>                                            &dof_handler,
-    const Mapping<2>                                               &mapping,
+  InterfaceElements<dim>::reinit(
+    const std::vector<FacingSides<dim>>                            &pairs,
+    const DoFHandler<dim>                                          &dof_handler,
+    const Mapping<dim>                                             &mapping,
     const Kinematics                                               &kinematics,
     const std::map<types::boundary_id, InterfaceElementParameters> &curves,
     const std::map<types::material_id, MaterialParameters>         &materials,
@@ -32,7 +35,7 @@ namespace thinlayer
     for (const auto &[id, parameters] : curves)
       laws[id] = std::make_unique<InterfaceLaw>(parameters);
     rank = partition.rank;
-    for (const FacingSides &pair : pairs)
+    for (const FacingSides<dim> &pair : pairs)
       {
         check_stiffness(pair, curves.at(pair.curve), materials, parameter_file);
         // Another rank's element: its points' places along the curve, for
@@ -74,14 +77,17 @@ namespace thinlayer
   }
 
 
+  template <int dim>
   void
-  InterfaceElements::check_stiffness(
-    const FacingSides                                      &pair,
+  InterfaceElements<dim>::check_stiffness(
+    const FacingSides<dim>                                 &pair,
     const InterfaceElementParameters                       &curve,
     const std::map<types::material_id, MaterialParameters> &materials,
     const std::string                                      &parameter_file)
   {
-    const double h = pair.entry.distance(pair.exit);
+    const auto   face = pair.plus_cell->face(pair.plus_face);
+    const double h =
+      dim == 2 ? pair.entry.distance(pair.exit) : std::sqrt(face->measure());
     const double E =
       std::min(materials.at(pair.plus_cell->material_id()).youngs_modulus,
                materials.at(pair.minus_cell->material_id()).youngs_modulus);
@@ -95,7 +101,7 @@ namespace thinlayer
           std::ostringstream message;
           message << "expected at most " << max_stiffness_ratio
                   << " E / h = " << limit << " for the element at ("
-                  << 0.5 * (pair.entry + pair.exit) << ") (E = " << E
+                  << face->center() << ") (E = " << E
                   << " of the cells beside it, side h = " << h << "), got "
                   << stiffness
                   << ": a stiffer interface adds no accuracy, and round-off "
@@ -108,53 +114,153 @@ namespace thinlayer
   }
 
 
-  void
-  InterfaceElements::add_element(const FacingSides                &pair,
-                                 const InterfaceElementParameters &curve,
-                                 const bool                        own,
-                                 const DoFHandler<2>              &dof_handler,
-                                 const Mapping<2>                 &mapping)
+  template <int dim>
+  std::vector<typename InterfaceElements<dim>::PointPlace>
+  InterfaceElements<dim>::side_points(const FacingSides<dim>           &pair,
+                                      const InterfaceElementParameters &curve,
+                                      const Mapping<dim> &mapping) const
   {
-    const FiniteElement<2>              &fe = dof_handler.get_fe();
-    std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
-    const Tensor<1, 2>                   chord   = pair.exit - pair.entry;
-    const double                         length  = chord.norm();
-    const Tensor<1, 2>                   tangent = chord / length;
-    const Tensor<1, 2>                   normal({-tangent[1], tangent[0]});
-    const Quadrature<1>                  rule =
+    const Quadrature<1> rule =
       curve.integration == InterfaceElementParameters::Integration::lobatto
-                         ? Quadrature<1>(QGaussLobatto<1>(3))
-                         : Quadrature<1>(QGauss<1>(curve.points));
+        ? Quadrature<1>(QGaussLobatto<1>(3))
+        : Quadrature<1>(QGauss<1>(curve.points));
+    std::vector<PointPlace> places;
+    if constexpr (dim == 2)
+      {
+        // A straight side: the points along its chord.
+        (void)mapping;
+        const Tensor<1, 2> chord   = pair.exit - pair.entry;
+        const double       length  = chord.norm();
+        const Tensor<1, 2> tangent = chord / length;
+        const Tensor<2, 3> frame({{tangent[0], tangent[1], 0.},
+                                  {-tangent[1], tangent[0], 0.},
+                                  {0., 0., 1.}});
+        for (unsigned int q = 0; q < rule.size(); ++q)
+          {
+            PointPlace place;
+            place.position = pair.entry + rule.point(q)[0] * chord;
+            place.frame    = frame;
+            place.weight =
+              rule.weight(q) * length * kinematics->area_factor(place.position);
+            place.arc_length   = pair.arc_length + rule.point(q)[0] * length;
+            place.unit_plus[0] = std::numeric_limits<double>::quiet_NaN();
+            places.push_back(place);
+          }
+      }
+    else
+      {
+        // The plus cell's face f: unit coordinate d = f / 2 fixed at f % 2,
+        // the points a tensor product over the other two; each point's
+        // patch spans the rule's cumulative weights around it.
+        const unsigned int f      = pair.plus_face;
+        const unsigned int d      = f / 2;
+        const double       across = f % 2;
+        const unsigned int first  = d == 0 ? 1 : 0;
+        const unsigned int second = d == 2 ? 1 : 2;
+        const auto         unit   = [&](const double a, const double b) {
+          Point<3> p;
+          p[first]  = a;
+          p[second] = b;
+          p[d]      = across;
+          return p;
+        };
+        std::vector<double> bounds = {0.};
+        for (unsigned int k = 0; k < rule.size(); ++k)
+          bounds.push_back(bounds.back() + rule.weight(k));
 
-    Element element{laws.at(pair.curve).get(),
+        std::vector<Point<3>> units;
+        for (unsigned int j = 0; j < rule.size(); ++j)
+          for (unsigned int i = 0; i < rule.size(); ++i)
+            units.push_back(unit(rule.point(i)[0], rule.point(j)[0]));
+        const FE_Q<3>                                  linear(1);
+        FEValues<3>                                    values(mapping,
+                           linear,
+                           Quadrature<3>(units),
+                           update_quadrature_points | update_jacobians);
+        const typename Triangulation<3>::cell_iterator cell(pair.plus_cell);
+        values.reinit(cell);
+        for (unsigned int j = 0, q = 0; j < rule.size(); ++j)
+          for (unsigned int i = 0; i < rule.size(); ++i, ++q)
+            {
+              const DerivativeForm<1, 3, 3> &J = values.jacobian(q);
+              Tensor<1, 3>                   e_a, e_b, e_d;
+              for (unsigned int c = 0; c < 3; ++c)
+                {
+                  e_a[c] = J[c][first];
+                  e_b[c] = J[c][second];
+                  e_d[c] = J[c][d];
+                }
+              const Tensor<1, 3> area = cross_product_3d(e_a, e_b);
+              // The normal points away from the plus cell, whose inside
+              // lies along +e_d from the face at unit 0, along -e_d at 1.
+              Tensor<1, 3> n = area / area.norm();
+              if ((n * e_d) * (across == 0 ? 1. : -1.) < 0)
+                n = -n;
+              const Tensor<1, 3> t1 = first_tangent(n);
+              PointPlace         place;
+              place.position = values.quadrature_point(q);
+              place.frame    = Tensor<2, 3>(
+                {{t1[0], t1[1], t1[2]}, {n[0], n[1], n[2]}, {0., 0., 0.}});
+              const Tensor<1, 3> t2 = cross_product_3d(t1, n);
+              for (unsigned int c = 0; c < 3; ++c)
+                place.frame[2][c] = t2[c];
+              place.weight     = rule.weight(i) * rule.weight(j) * area.norm();
+              place.arc_length = 0;
+              place.unit_plus  = units[q];
+              const double a0 = bounds[i], a1 = bounds[i + 1];
+              const double b0 = bounds[j], b1 = bounds[j + 1];
+              place.patch = {
+                {mapping.transform_unit_to_real_cell(cell, unit(a0, b0)),
+                 mapping.transform_unit_to_real_cell(cell, unit(a1, b0)),
+                 mapping.transform_unit_to_real_cell(cell, unit(a1, b1)),
+                 mapping.transform_unit_to_real_cell(cell, unit(a0, b1))}};
+              places.push_back(place);
+            }
+      }
+    return places;
+  }
+
+
+  template <int dim>
+  void
+  InterfaceElements<dim>::add_element(const FacingSides<dim>           &pair,
+                                      const InterfaceElementParameters &curve,
+                                      const bool                        own,
+                                      const DoFHandler<dim> &dof_handler,
+                                      const Mapping<dim>    &mapping)
+  {
+    const FiniteElement<dim>            &fe = dof_handler.get_fe();
+    std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
+    Element                              element{laws.at(pair.curve).get(),
                     pair.plus_cell->active_cell_index(),
                     {},
                     {}};
     std::map<types::global_dof_index, unsigned int> local;
-    for (unsigned int q = 0; q < rule.size(); ++q)
+    for (const PointPlace &place : side_points(pair, curve, mapping))
       {
         IntegrationPoint point;
         point.element    = elements.size();
         point.curve      = pair.curve;
         point.run        = pair.run;
-        point.position   = pair.entry + rule.point(q)[0] * chord;
-        point.arc_length = pair.arc_length + rule.point(q)[0] * length;
-        point.tangent    = tangent;
-        point.normal     = normal;
-        point.weight =
-          rule.weight(q) * length * kinematics->area_factor(point.position);
+        point.position   = place.position;
+        point.arc_length = place.arc_length;
+        point.frame      = place.frame;
+        point.weight     = place.weight;
+        point.patch      = place.patch;
         // The jump: shape values on the plus side less those on the minus
         // side, at the point's place in each cell (the pair's cells as
         // @p dof_handler holds them).
         for (const auto &[serial_cell, sign] :
-             {std::pair<DoFHandler<2>::active_cell_iterator, double>{
+             {std::pair<typename DoFHandler<dim>::active_cell_iterator, double>{
                 pair.plus_cell, 1.},
               {pair.minus_cell, -1.}})
           if (own)
             {
               const auto cell = cell_of(dof_handler, serial_cell->id());
-              const dealii::Point<2> unit =
-                mapping.transform_real_to_unit_cell(cell, point.position);
+              const dealii::Point<dim> unit =
+                (sign > 0 && std::isfinite(place.unit_plus[0]))
+                  ? place.unit_plus
+                  : mapping.transform_real_to_unit_cell(cell, point.position);
               cell->get_dof_indices(cell_dofs);
               for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
                 {
@@ -177,66 +283,60 @@ namespace thinlayer
   }
 
 
+  template <int dim>
   bool
-  InterfaceElements::empty() const
+  InterfaceElements<dim>::empty() const
   {
     return elements.empty();
   }
 
 
+  template <int dim>
   Tensor<1, 3>
-  InterfaceElements::local_jump(const IntegrationPoint &point,
-                                const unsigned int      s,
-                                const ModeVectors      &vectors) const
+  InterfaceElements<dim>::local_jump(const IntegrationPoint &point,
+                                     const unsigned int      s,
+                                     const ModeVectors      &vectors) const
   {
     const Element &element = elements[point.element];
-    Tensor<1, 3>   jump; // (x, y, theta) summed over the modes
+    Tensor<1, 3>   jump; // (x, y, theta or z) summed over the modes
     for (unsigned int m = 0; m < vectors.size(); ++m)
       {
-        const ModeVector &v  = vectors[m];
-        const double      t1 = kinematics->T1(m, s);
-        const double      t2 = kinematics->T2(m, s);
+        const ModeVector &v = vectors[m];
         for (const Entry &e : point.entries)
-          jump[e.component] += (e.component < 2 ? t1 : t2) * e.value *
+          jump[e.component] += kinematics->T(e.component, m, s) * e.value *
                                v[element.dofs[e.local_dof]];
       }
-    return Tensor<1, 3>(
-      {jump[0] * point.tangent[0] + jump[1] * point.tangent[1],
-       jump[0] * point.normal[0] + jump[1] * point.normal[1],
-       jump[2]});
+    return point.frame * jump;
   }
 
 
+  template <int dim>
   void
-  InterfaceElements::add_forces(const IntegrationPoint &point,
-                                const unsigned int      s,
-                                const Tensor<1, 3>     &traction,
-                                ModeVectors            &target) const
+  InterfaceElements<dim>::add_forces(const IntegrationPoint &point,
+                                     const unsigned int      s,
+                                     const Tensor<1, 3>     &traction,
+                                     ModeVectors            &target) const
   {
     const Element &element = elements[point.element];
     const double   weight  = kinematics->station_weight(s) * point.weight;
-    // The traction in (x, y, theta).
-    const double global[3] = {traction[0] * point.tangent[0] +
-                                traction[1] * point.normal[0],
-                              traction[0] * point.tangent[1] +
-                                traction[1] * point.normal[1],
-                              traction[2]};
+    // The traction in (x, y, theta or z).
+    const Tensor<1, 3> global = traction * point.frame;
     for (unsigned int m = 0; m < target.size(); ++m)
       {
-        ModeVector  &v  = target[m];
-        const double t1 = kinematics->T1(m, s);
-        const double t2 = kinematics->T2(m, s);
+        ModeVector &v = target[m];
         for (const Entry &e : point.entries)
-          v[element.dofs[e.local_dof]] += weight * (e.component < 2 ? t1 : t2) *
+          v[element.dofs[e.local_dof]] += weight *
+                                          kinematics->T(e.component, m, s) *
                                           e.value * global[e.component];
       }
   }
 
 
+  template <int dim>
   void
-  InterfaceElements::jump_operator(const IntegrationPoint &point,
-                                   const unsigned int      s,
-                                   FullMatrix<double>     &G) const
+  InterfaceElements<dim>::jump_operator(const IntegrationPoint &point,
+                                        const unsigned int      s,
+                                        FullMatrix<double>     &G) const
   {
     const Element     &element = elements[point.element];
     const unsigned int n       = element.dofs.size();
@@ -245,25 +345,20 @@ namespace thinlayer
     else
       G = 0;
     for (unsigned int m = 0; m < kinematics->n_modes(); ++m)
-      {
-        const double t1 = kinematics->T1(m, s), t2 = kinematics->T2(m, s);
-        for (const Entry &e : point.entries)
-          {
-            const unsigned int column = m * n + e.local_dof;
-            if (e.component < 2)
-              {
-                G(0, column) += t1 * e.value * point.tangent[e.component];
-                G(1, column) += t1 * e.value * point.normal[e.component];
-              }
-            else
-              G(2, column) += t2 * e.value;
-          }
-      }
+      for (const Entry &e : point.entries)
+        {
+          const unsigned int column = m * n + e.local_dof;
+          const double       value = kinematics->T(e.component, m, s) * e.value;
+          for (unsigned int a = 0; a < 3; ++a)
+            G(a, column) += value * point.frame[a][e.component];
+        }
   }
 
 
+  template <int dim>
   void
-  InterfaceElements::add_dofs(std::vector<types::global_dof_index> &dofs) const
+  InterfaceElements<dim>::add_dofs(
+    std::vector<types::global_dof_index> &dofs) const
   {
     for (unsigned int k = 0; k < elements.size(); ++k)
       if (owns_element(k))
@@ -273,8 +368,9 @@ namespace thinlayer
   }
 
 
+  template <int dim>
   void
-  InterfaceElements::add_sparsity(
+  InterfaceElements<dim>::add_sparsity(
     DynamicSparsityPattern          &dsp,
     const AffineConstraints<double> &constraints) const
   {
@@ -286,13 +382,15 @@ namespace thinlayer
   }
 
 
+  template <int dim>
   void
-  InterfaceElements::assemble_elastic(const unsigned int    m,
-                                      const CellMatrixSink &add) const
+  InterfaceElements<dim>::assemble_elastic(const unsigned int    m,
+                                           const CellMatrixSink &add) const
   {
     // K_m = int (c1 G1^T K G1 + c2 G2^T K G2) w: the in-plane components
     // with T1, the out-of-plane one with T2, integrated exactly over the
-    // circle (as the cells' stiffness), so the harmonics decouple.
+    // circle (as the cells' stiffness), so the harmonics decouple. In plane
+    // strain and 3D, c1 = 1.
     std::vector<FullMatrix<double>> matrices(elements.size());
     for (unsigned int k = 0; k < elements.size(); ++k)
       matrices[k].reinit(elements[k].dofs.size(), elements[k].dofs.size());
@@ -303,16 +401,14 @@ namespace thinlayer
         const Tensor<2, 3> K       = element.law->elasticity();
         FullMatrix<double> G(3, n);
         for (const Entry &e : point.entries)
-          if (e.component < 2)
-            {
-              G(0, e.local_dof) += e.value * point.tangent[e.component];
-              G(1, e.local_dof) += e.value * point.normal[e.component];
-            }
-          else
-            G(2, e.local_dof) += e.value;
+          for (unsigned int a = 0; a < 3; ++a)
+            G(a, e.local_dof) += e.value * point.frame[a][e.component];
+        // The frame of a curve keeps theta apart, so each local component
+        // takes its global one's factor.
         const double        c[3] = {kinematics->c1(m),
                                     kinematics->c1(m),
-                                    kinematics->c2(m)};
+                             kinematics->is_fourier() ? kinematics->c2(m)
+                                                             : kinematics->c1(m)};
         FullMatrix<double> &A    = matrices[point.element];
         for (unsigned int i = 0; i < n; ++i)
           for (unsigned int j = 0; j < n; ++j)
@@ -325,10 +421,11 @@ namespace thinlayer
   }
 
 
+  template <int dim>
   template <typename Rule>
   unsigned int
-  InterfaceElements::for_each_point(const ModeVectors &step_increment,
-                                    const Rule        &rule)
+  InterfaceElements<dim>::for_each_point(const ModeVectors &step_increment,
+                                         const Rule        &rule)
   {
     const unsigned int n_stations = kinematics->n_stations();
     unsigned int       n_yielding = 0;
@@ -345,9 +442,10 @@ namespace thinlayer
   }
 
 
+  template <int dim>
   unsigned int
-  InterfaceElements::viscoplastic_update(const ModeVectors &step_increment,
-                                         ModeVectors       &body_load_change)
+  InterfaceElements<dim>::viscoplastic_update(const ModeVectors &step_increment,
+                                              ModeVectors &body_load_change)
   {
     // The paper's rule: the traction of the step's jump less its
     // viscoplastic jump; where F > 0, a viscoplastic jump increment
@@ -380,11 +478,13 @@ namespace thinlayer
   }
 
 
+  template <int dim>
   unsigned int
-  InterfaceElements::return_mapping_update(const ModeVectors &step_increment,
-                                           const bool         with_tangents,
-                                           ModeVectors       &internal_forces,
-                                           ModeVectors       &stress_excess)
+  InterfaceElements<dim>::return_mapping_update(
+    const ModeVectors &step_increment,
+    const bool         with_tangents,
+    ModeVectors       &internal_forces,
+    ModeVectors       &stress_excess)
   {
     // The trial traction returned to the admissible set: the traction
     // gives the internal forces, the excess a body load.
@@ -413,8 +513,10 @@ namespace thinlayer
   }
 
 
+  template <int dim>
   void
-  InterfaceElements::add_internal_forces(ModeVectors &internal_forces) const
+  InterfaceElements<dim>::add_internal_forces(
+    ModeVectors &internal_forces) const
   {
     const unsigned int n_stations = kinematics->n_stations();
     for (unsigned int p = 0; p < points.size(); ++p)
@@ -427,8 +529,9 @@ namespace thinlayer
   }
 
 
+  template <int dim>
   void
-  InterfaceElements::accept()
+  InterfaceElements<dim>::accept()
   {
     for (InterfacePointState &state : states)
       {
@@ -441,8 +544,9 @@ namespace thinlayer
   }
 
 
+  template <int dim>
   void
-  InterfaceElements::reject()
+  InterfaceElements<dim>::reject()
   {
     for (InterfacePointState &state : states)
       {
@@ -453,8 +557,9 @@ namespace thinlayer
   }
 
 
+  template <int dim>
   void
-  InterfaceElements::check_state(StateCheck &check) const
+  InterfaceElements<dim>::check_state(StateCheck &check) const
   {
     const unsigned int n_stations = kinematics ? kinematics->n_stations() : 1;
     for (unsigned int p = 0; p < points.size(); ++p)
@@ -477,8 +582,9 @@ namespace thinlayer
   }
 
 
+  template <int dim>
   bool
-  InterfaceElements::all_associated() const
+  InterfaceElements<dim>::all_associated() const
   {
     for (const auto &[id, law] : laws)
       if (!law->is_associated())
@@ -487,8 +593,9 @@ namespace thinlayer
   }
 
 
+  template <int dim>
   void
-  InterfaceElements::add_coupled_sparsity(const DofSink &add)
+  InterfaceElements<dim>::add_coupled_sparsity(const DofSink &add)
   {
     for (unsigned int k = 0; k < elements.size(); ++k)
       if (owns_element(k))
@@ -496,8 +603,9 @@ namespace thinlayer
   }
 
 
+  template <int dim>
   void
-  InterfaceElements::add_coupled_tangent(const CellMatrixSink &add)
+  InterfaceElements<dim>::add_coupled_tangent(const CellMatrixSink &add)
   {
     const unsigned int n_stations = kinematics->n_stations();
     for (auto &matrix : coupled_matrices)
@@ -527,10 +635,11 @@ namespace thinlayer
   }
 
 
+  template <int dim>
   std::vector<NamedProfile>
-  InterfaceElements::profiles(const ModeVectors &solution,
-                              const ModeVectors &step_increment,
-                              const bool         pending) const
+  InterfaceElements<dim>::profiles(const ModeVectors &solution,
+                                   const ModeVectors &step_increment,
+                                   const bool         pending) const
   {
     std::vector<NamedProfile> result;
     for (const auto &[id, law] : laws)
@@ -540,11 +649,12 @@ namespace thinlayer
   }
 
 
+  template <int dim>
   Profile
-  InterfaceElements::profile(const types::boundary_id curve,
-                             const ModeVectors       &solution,
-                             const ModeVectors       &step_increment,
-                             const bool               pending) const
+  InterfaceElements<dim>::profile(const types::boundary_id curve,
+                                  const ModeVectors       &solution,
+                                  const ModeVectors       &step_increment,
+                                  const bool               pending) const
   {
     const unsigned int        n_stations = kinematics->n_stations();
     Profile                   result;
@@ -552,10 +662,15 @@ namespace thinlayer
     for (unsigned int p = 0; p < points.size(); ++p)
       if (points[p].curve == curve)
         {
-          result.samples.push_back(
-            {points[p].run,
-             points[p].arc_length,
-             Point<3>(points[p].position[0], points[p].position[1], 0)});
+          const IntegrationPoint &point = points[p];
+          if constexpr (dim == 2)
+            result.samples.push_back(
+              {point.run,
+               point.arc_length,
+               Point<3>(point.position[0], point.position[1], 0)});
+          else
+            result.surface_samples.push_back(
+              {point.position, point.frame[0], point.frame[1], point.patch});
           indices.push_back(p);
         }
     for (unsigned int s = 0; s < n_stations; ++s)
@@ -593,4 +708,8 @@ namespace thinlayer
       }
     return result;
   }
+
+
+  template class InterfaceElements<2>;
+  template class InterfaceElements<3>;
 } // namespace thinlayer

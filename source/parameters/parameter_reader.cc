@@ -349,12 +349,6 @@ namespace thinlayer
         p.boundaries[id].parse(prm, file, id, p.kinematics, p.mesh);
       for (const auto id : curve_ids)
         {
-          if (p.kinematics.dimension == 3)
-            throw InputError(file,
-                             InterfaceElementParameters::section(id),
-                             "zero-thickness interface elements join the "
-                             "sides of a 2D mesh; in 3d they are not built "
-                             "yet (a thin layer of hexahedra, Layers, is)");
           if (boundary_ids.count(id) != 0)
             throw InputError(file,
                              InterfaceElementParameters::section(id),

@@ -2,6 +2,7 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <thinlayer/base/input_error.h>
+#include <thinlayer/mesh/interface_pairing.h>
 #include <thinlayer/postprocess/layer_profile.h>
 
 #include <algorithm>
@@ -32,17 +33,6 @@ namespace thinlayer
       p[second]                 = b;
       p[thickness]              = across;
       return p;
-    }
-
-    /// The normal @p n made to point up (n_y > 0), or along +x, then +z,
-    /// where it lies in the plane normal to y (to rounding).
-    Tensor<1, 3>
-    oriented(Tensor<1, 3> n)
-    {
-      for (const unsigned int d : {1u, 0u, 2u})
-        if (std::abs(n[d]) > 1e-10)
-          return n[d] > 0 ? n : -n;
-      return n;
     }
   } // namespace
 
@@ -122,16 +112,10 @@ namespace thinlayer
     const Tensor<1, 3> chord_a = at(1, 0.5, 0.5) - at(0, 0.5, 0.5);
     const Tensor<1, 3> chord_b = at(0.5, 1, 0.5) - at(0.5, 0, 0.5);
     Tensor<1, 3>       normal  = cross_product_3d(chord_a, chord_b);
-    normal                     = oriented(normal / normal.norm());
+    normal                     = upward(normal / normal.norm());
     const double plus_face =
       (at(0.5, 0.5, 1) - at(0.5, 0.5, 0)) * normal > 0 ? 1. : 0.;
-    // t1: x projected onto the surface, or z where the surface is normal
-    // to x.
-    Tensor<1, 3> axis({1., 0., 0.});
-    if (std::abs(normal[0]) > 1 - 1e-10)
-      axis = Tensor<1, 3>({0., 0., 1.});
-    Tensor<1, 3> tangent = axis - (axis * normal) * normal;
-    tangent /= tangent.norm();
+    const Tensor<1, 3> tangent = first_tangent(normal);
 
     const unsigned int n_1d = static_cast<unsigned int>(
       std::lround(std::cbrt(analysis.n_quadrature_points())));

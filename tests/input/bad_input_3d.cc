@@ -3,7 +3,8 @@
 // mesh) and what was expected, a non-zero exit, and nothing written (the
 // previous run kept byte for byte): the elements and components of the
 // other dimension, entries that take one coordinate or expression per
-// component, and hexahedra that are inverted, folded, flat or tiny.
+// component, interface elements on a surface the mesh does not have, and
+// hexahedra that are inverted, folded, flat or tiny.
 #include "../common/bad_input_utilities.h"
 
 using namespace bad_input;
@@ -131,7 +132,8 @@ namespace
 
     write("interface-3d.prm",
           solid_scene("cube.msh", "subsection Interface curve 3\nend\n"));
-    check("zero-thickness interface elements in 3d", {"interface-3d.prm"});
+    check("interface elements on a surface the mesh does not have",
+          {"interface-3d.prm"});
 
     // Two cubes stacked along z, their base (z = 0) and top held in their
     // plane (x, y) only: free to move along z, and nothing else.

@@ -66,7 +66,7 @@ main()
   bool       along = pairs.size() == 4, sides = pairs.size() == 4;
   for (unsigned int k = 0; k < pairs.size(); ++k)
     {
-      const FacingSides &p = pairs[k];
+      const FacingSides<2> &p = pairs[k];
       std::printf("  run %u, arc length %.4f, from (%.4f, %.4f) to (%.4f, "
                   "%.4f), plus cell at y = %.4f, minus cell at y = %.4f\n",
                   p.run,

@@ -379,14 +379,14 @@ namespace thinlayer
 
     /// The facing sides of the interface elements on @p whole_mesh (a
     /// DoFHandler of the mesh as read, without DoFs).
-    std::vector<FacingSides>
+    std::vector<FacingSides<dim>>
     facing_sides(const DoFHandler<dim> &whole_mesh) const;
 
     /// On many ranks: partition the mesh as read (each interface element's
     /// two cells together, @p sides) and put the DoFHandler on this rank's
     /// part of it.
     void
-    split_mesh(const std::vector<FacingSides> &sides);
+    split_mesh(const std::vector<FacingSides<dim>> &sides);
 
     /// The stiffness's sparsity: whole on one rank, each rank's rows on
     /// several.

@@ -225,7 +225,7 @@ namespace thinlayer
                         const Quadrature<dim>          &quadrature,
                         const Kinematics               &kinematics,
                         const CellPartition            &partition,
-                        const std::vector<FacingSides> &facing_sides,
+                        const std::vector<FacingSides<dim>> &facing_sides,
                         const CellPartition            &whole_partition);
 } // namespace thinlayer
 

@@ -16,6 +16,7 @@
 #include <thinlayer/mesh/interface_pairing.h>
 #include <thinlayer/parameters/parameters.h>
 
+#include <array>
 #include <map>
 #include <memory>
 #include <set>
@@ -41,26 +42,32 @@ namespace thinlayer
 
   /**
    * Zero-thickness (Goodman-type) interface elements along physical
-   * curves. The mesh is split along each curve when read
-   * (split_along_curves()), so each curve shows as pairs of facing cell
-   * sides, boundary faces with the curve's id; an element pairs two facing
-   * sides (6 nodes of the quadratic field) and couples their DoFs through
-   * an InterfaceLaw of the relative displacement
+   * curves of a 2D mesh or surfaces of a 3D one. The mesh is split along
+   * each interface when read (split_along_curves()), so it shows as pairs
+   * of facing cell sides, boundary faces with the interface's id; an
+   * element pairs two facing sides (6 nodes of the quadratic field on a
+   * curve, 16 on a surface: two 8-node faces) and couples their DoFs
+   * through an InterfaceLaw of the relative displacement
    *   delta = u(+ side) - u(- side)
-   * in the local frame: s along the curve (runs from the lower-left end,
-   * as LayerProfile), n = s turned a quarter turn anticlockwise, t out
-   * of the plane. The integral over the side uses Gauss or Lobatto
-   * points, weighted by r in Fourier scenes.
+   * in the local frame (s, n, t):
+   * - on a curve s runs along it (runs from the lower-left end, as
+   *   LayerProfile), n = s turned a quarter turn anticlockwise, t out of
+   *   the plane (theta in Fourier scenes);
+   * - on a surface n is the upward normal (upward()), s = t1 the first
+   *   tangent (first_tangent()), t = t2 = t1 x n, at each point: the two
+   *   shears slip together, on sqrt(t_s^2 + t_t^2), as the law has it.
+   * The integral over the side uses Gauss or Lobatto points (per
+   * direction of a face), weighted by r in Fourier scenes.
    *
    * As an ElementGroup the elements take part in everything the cells do:
    * the elastic stiffness of every mode, the viscoplastic point rule, the
    * return mapping with internal forces and stress excess, the acceptance
    * and rejection of a step, Newton's tangent, and a profile per curve.
-   * The elements join the sides of quadrilaterals: a family of 2D meshes.
    * Station by station as the point loop: the relative displacement of the
    * harmonics summed at each station (u_r, u_z with T1, u_theta with T2), the
    * tractions projected back with the station weights.
    */
+  template <int dim>
   class InterfaceElements : public ElementGroup
   {
   public:
@@ -76,10 +83,10 @@ namespace thinlayer
      */
     void
     reinit(
-      const std::vector<FacingSides> &pairs,
-      const DoFHandler<2>            &dof_handler,
-      const Mapping<2>               &mapping,
-      const Kinematics               &kinematics,
+      const std::vector<FacingSides<dim>> &pairs,
+      const DoFHandler<dim>               &dof_handler,
+      const Mapping<dim>                  &mapping,
+      const Kinematics                    &kinematics,
       const std::map<types::boundary_id, InterfaceElementParameters> &curves,
       const std::map<types::material_id, MaterialParameters>         &materials,
       const CellPartition                                            &partition,
@@ -88,10 +95,10 @@ namespace thinlayer
     /**
      * The largest interface stiffness accepted, in units of E / h (E the
      * smaller Young's modulus of the two cells beside an element, h its
-     * side's length). Stiffer interfaces add no accuracy (the interface's
-     * compliance is already a millionth of the cells'), but the tractions,
-     * k times a jump that is the difference of two nearly equal
-     * displacements, lose their digits to round-off: in
+     * side's length, or the square root of its face's area). Stiffer interfaces
+     * add no accuracy (the interface's compliance is already a millionth of the
+     * cells'), but the tractions, k times a jump that is the difference of two
+     * nearly equal displacements, lose their digits to round-off: in
      * benchmarks/interfaces.py, Cases 2 and 3 at 1.25e6 E/h and above end
      * in "collapses" at a tenth of the sliding load, or do not converge.
      */
@@ -148,7 +155,7 @@ namespace thinlayer
     void
     add_coupled_tangent(const CellMatrixSink &add) override;
 
-    /// One profile per curve, "interface-curve-<id>".
+    /// One profile per interface, "interface-curve-<id>".
     std::vector<NamedProfile>
     profiles(const ModeVectors &solution,
              const ModeVectors &step_increment,
@@ -179,12 +186,30 @@ namespace thinlayer
       types::boundary_id curve;
       unsigned int       run;
       double             arc_length;
-      dealii::Point<2>   position;
-      Tensor<1, 2>       tangent;
-      Tensor<1, 2>       normal;
-      /// Quadrature weight times side length, times r for Fourier.
+      dealii::Point<dim> position;
+      /// The local axes (s, n, t) as rows, in the displacement's
+      /// components: (x, y, theta or z) on a curve, (x, y, z) on a surface.
+      Tensor<2, 3> frame;
+      /// Quadrature weight times side length or face area, times r for
+      /// Fourier.
       double             weight;
       std::vector<Entry> entries;
+      /// On a surface: the patch of the face the point stands for (its
+      /// weight's share), for the profile's VTU.
+      std::array<dealii::Point<3>, 4> patch;
+    };
+
+    /// Where a point of a side lies, before its jump operator is known.
+    struct PointPlace
+    {
+      dealii::Point<dim>              position;
+      Tensor<2, 3>                    frame;
+      double                          weight;
+      double                          arc_length;
+      std::array<dealii::Point<3>, 4> patch;
+      /// The point in the plus cell's unit cell (NaN where it is found
+      /// from @p position, as along a curve).
+      dealii::Point<dim> unit_plus;
     };
 
     struct Element
@@ -218,7 +243,7 @@ namespace thinlayer
     /// max_stiffness_ratio E / h for the cells of @p pair.
     static void
     check_stiffness(
-      const FacingSides                                      &pair,
+      const FacingSides<dim>                                 &pair,
       const InterfaceElementParameters                       &curve,
       const std::map<types::material_id, MaterialParameters> &materials,
       const std::string                                      &parameter_file);
@@ -227,11 +252,19 @@ namespace thinlayer
     /// each with the jump operator over the two cells' DoFs where it is
     /// this rank's (@p own), its points' places alone where not.
     void
-    add_element(const FacingSides                &pair,
+    add_element(const FacingSides<dim>           &pair,
                 const InterfaceElementParameters &curve,
                 const bool                        own,
-                const DoFHandler<2>              &dof_handler,
-                const Mapping<2>                 &mapping);
+                const DoFHandler<dim>            &dof_handler,
+                const Mapping<dim>               &mapping);
+
+    /// The integration points of @p pair's side: along its chord (a
+    /// curve's sides are straight), or over the plus cell's face.
+    std::vector<PointPlace>
+    side_points(const FacingSides<dim>           &pair,
+                const InterfaceElementParameters &curve,
+                const Mapping<dim>               &mapping) const;
+
 
     /**
      * Run @p rule(point, station, law, state, jump, point_station) at every
