@@ -10,9 +10,11 @@
 // side r = width. It is meshed once and extruded: down through the soil,
 // and, where footing = 1, up through an interface row of thickness
 // t = R / aspect_ratio over the whole surface and a footing of height
-// footing_height over the disc (Griffiths' Case 3). With footing = 0 the
-// soil's top over the disc is the footing's base (a rigid footing is a
-// prescribed displacement there).
+// footing_height over the disc (Griffiths' Case 3). With zero_thickness = 1
+// there is no row: the footing stands on the soil, the two meeting on the
+// disc, a physical surface for zero-thickness interface elements. With
+// footing = 0 the soil's top over the disc is the footing's base (a rigid
+// footing is a prescribed displacement there).
 //
 // Parameters:
 //   sector          90 or 180 (degrees of the circle modelled)
@@ -29,14 +31,18 @@
 //                   footing's edge, outwards and downwards
 //   core            the core's half-size as a fraction of R
 //   footing         1: footing and interface row (Case 3); 0: soil only
+//   zero_thickness  1 (with footing = 1): no row; the footing on the soil,
+//                   joined on the disc (physical surface 7)
 //
 // Physical groups:
-//   volumes  1 "footing", 2 "interface" (footing = 1), 3 "soil"
+//   volumes  1 "footing", 2 "interface" (footing = 1, zero_thickness = 0),
+//            3 "soil"
 //   surfaces 1 "footing top" (footing = 1) or "footing base" (footing = 0:
 //            the soil's surface over the disc), 2 "surface" (the soil's
-//            free surface beyond the disc, footing = 0), 3 "bottom",
-//            4 "side" (r = width), 5 "plane z = 0", 6 "plane x = 0"
-//            (sector = 90)
+//            free surface beyond the disc, footing = 0 or zero_thickness =
+//            1), 3 "bottom", 4 "side" (r = width), 5 "plane z = 0", 6
+//            "plane x = 0" (sector = 90), 7 "footing base" (zero_thickness
+//            = 1: the disc where footing and soil meet)
 DefineConstant[
   sector         = {180, Name "Parameters/sector"},
   half_width     = {1, Name "Parameters/half_width"},
@@ -50,7 +56,8 @@ DefineConstant[
   n_depth        = {8, Name "Parameters/n_depth"},
   growth         = {1.2, Name "Parameters/growth"},
   core           = {0.5, Name "Parameters/core"},
-  footing        = {1, Name "Parameters/footing"}
+  footing        = {1, Name "Parameters/footing"},
+  zero_thickness = {0, Name "Parameters/zero_thickness"}
 ];
 If (sector != 90 && sector != 180)
   Error("circular-footing-3d.geo: sector must be 90 or 180");
@@ -169,7 +176,21 @@ For k In {0 : n_plan - 1}
   EndIf
 EndFor
 
-If (footing)
+If (footing && zero_thickness)
+  block[] = Extrude {0, footing_height, 0} {
+    Surface{disc[]}; Layers{2}; Recombine;
+  };
+  footing_volumes[] = {};
+  footing_top[] = {};
+  For k In {0 : n_disc - 1}
+    footing_volumes[] += block[6 * k + 1];
+    footing_top[] += block[6 * k];
+  EndFor
+  Physical Volume("footing", 1) = {footing_volumes[]};
+  Physical Surface("footing top", 1) = {footing_top[]};
+  Physical Surface("surface", 2) = {ring[]};
+  Physical Surface("footing base", 7) = {disc[]};
+ElseIf (footing)
   t = R / aspect_ratio;
   row[] = Extrude {0, t, 0} { Surface{plan[]}; Layers{1}; Recombine; };
   row_volumes[] = {};
@@ -201,7 +222,8 @@ EndIf
 Physical Volume("soil", 3) = {soil_volumes[]};
 
 e = 1e-6 * width;
-top = footing ? (R / aspect_ratio + footing_height) : 0;
+top = footing ? ((zero_thickness ? 0 : R / aspect_ratio) + footing_height)
+              : 0;
 Physical Surface("bottom", 3) =
   Surface In BoundingBox{-width - e, -depth - e, -e, width + e, -depth + e,
                          width + e};

@@ -1,5 +1,6 @@
 // Truths checked for the one reader of gmsh meshes (MshFile), the
-// triangulation built from it, and the splitting along interface curves:
+// triangulation built from it, and the splitting along interface curves
+// and surfaces:
 // 1. The triangulation is deal.II's own: for meshes/block.geo and
 //    meshes/interface-patch.geo meshed by gmsh (format 2.2), for a
 //    two-cell block written by hand in formats 2.2 and 4.1, and for two
@@ -14,7 +15,13 @@
 //    triangulation 8 faces carry id 3, in 4 coincident pairs with one cell
 //    above and one below the curve. Splitting along curve 1 (the bottom, a
 //    cell on one side only) is refused.
-// 5. A quadrilateral naming a node twice is found (repeated_corner()), and
+// 5. Splitting interface-patch-3d.geo (nx = 4, nz = 2) along its surface
+//    3: each of its 15 nodes gets a copy, its 8 quadrilaterals become 16,
+//    the hexahedra stay 32, and deal.II reads the result as our reader
+//    does. A surface that ends inside the body (four hexahedra, the face
+//    between two of them): only its 2 nodes on the boundary are copied, the
+//    2 on its front stay joined, and both of its sides are boundary faces.
+// 6. A quadrilateral naming a node twice is found (repeated_corner()), and
 //    none in a good mesh.
 #include <deal.II/grid/grid_in.h>
 
@@ -38,10 +45,13 @@ namespace
   const std::string meshes = SOURCE_DIR "/../../meshes/";
 
   std::string
-  gmsh(const std::string &geo, const std::map<std::string, double> &values)
+  gmsh(const std::string                   &geo,
+       const std::map<std::string, double> &values,
+       const unsigned int                   dimension = 2)
   {
     std::ostringstream progress; // timing-dependent lines stay out
-    return run_gmsh({meshes + geo, values, 100000, "msh_file.cc"}, progress);
+    return run_gmsh({meshes + geo, values, 100000, "msh_file.cc", dimension},
+                    progress);
   }
 
 
@@ -281,7 +291,76 @@ main()
     expect(refused, "a curve on the boundary is refused");
   }
 
-  std::cout << "5. Repeated corners\n";
+  std::cout << "5. Splitting along a surface\n";
+  {
+    // The two blocks of interface-patch.geo extruded, 2 elements deep: the
+    // surface y = 0 reaches the boundary all round, so each of its
+    // (4 + 1) x (2 + 1) nodes gets a copy.
+    const MshFile mesh(gmsh("interface-patch-3d.geo", {}, 3),
+                       "interface-patch-3d.geo");
+    const MshFile split = split_along_curves(mesh, {3});
+    const auto    count = [](const MshFile &m, const int type, const long id) {
+      unsigned int n = 0;
+      for (const MshElement &e : m.elements)
+        n += (e.type == type && (id < 0 || e.physical() == id));
+      return n;
+    };
+    std::cout << "  nodes " << mesh.node_ids.size() << " -> "
+              << split.node_ids.size() << ", quadrilaterals of surface 3 "
+              << count(mesh, 3, 3) << " -> " << count(split, 3, 3)
+              << ", hexahedra " << count(mesh, 5, -1) << " -> "
+              << count(split, 5, -1) << '\n';
+    expect(split.node_ids.size() == mesh.node_ids.size() + 15, "15 copies");
+    expect(count(mesh, 3, 3) == 8 && count(split, 3, 3) == 16,
+           "each quadrilateral of the surface twice");
+    expect(count(split, 5, -1) == count(mesh, 5, -1), "the cells kept");
+    expect(as_deal_ii_reads<3>(split.text(), "interface-patch-3d.geo split"),
+           "deal.II reads it alike");
+
+    // Four hexahedra, 2 x 2 in x-y, one deep; the surface is the face
+    // y = 1 between the two with x < 1 alone, so it ends at x = 1 inside
+    // the body (a crack front): the nodes there stay joined, the two at
+    // x = 0 are copied.
+    std::ostringstream msh;
+    msh << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n18\n";
+    for (int k = 0; k < 2; ++k)
+      for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < 3; ++i)
+          msh << 1 + i + 3 * j + 9 * k << ' ' << i << ' ' << j << ' ' << k
+              << '\n';
+    const auto node = [](const int i, const int j, const int k) {
+      return 1 + i + 3 * j + 9 * k;
+    };
+    msh << "$EndNodes\n$Elements\n5\n1 3 2 3 3 " << node(0, 1, 0) << ' '
+        << node(1, 1, 0) << ' ' << node(1, 1, 1) << ' ' << node(0, 1, 1)
+        << '\n';
+    for (int c = 0; c < 4; ++c)
+      {
+        const int i = c % 2, j = c / 2;
+        msh << 2 + c << " 5 2 1 1";
+        for (int k = 0; k < 2; ++k)
+          msh << ' ' << node(i, j, k) << ' ' << node(i + 1, j, k) << ' '
+              << node(i + 1, j + 1, k) << ' ' << node(i, j + 1, k);
+        msh << '\n';
+      }
+    msh << "$EndElements\n";
+    const MshFile front(msh.str(), "front.msh");
+    const MshFile cut = split_along_curves(front, {3});
+    std::cout << "  a surface ending inside the body: nodes "
+              << front.node_ids.size() << " -> " << cut.node_ids.size() << '\n';
+    expect(cut.node_ids.size() == 20, "the 2 nodes on the boundary copied");
+    expect(count(cut, 3, 3) == 2, "the quadrilateral twice");
+    Triangulation<3> tria;
+    create_triangulation(cut, tria);
+    unsigned int n_faces = 0;
+    for (const auto &cell : tria.active_cell_iterators())
+      for (const auto f : cell->face_indices())
+        n_faces +=
+          cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == 3;
+    expect(n_faces == 2, "deal.II sees both sides as boundary faces");
+  }
+
+  std::cout << "6. Repeated corners\n";
   {
     std::string bad = block_2;
     bad.replace(bad.find("5 3 2 7 1 1 2 5 4"), 17, "5 3 2 7 1 1 2 2 4");
