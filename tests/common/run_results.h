@@ -1,7 +1,10 @@
-// What the tests that run whole scenes read back: a number of a run's
-// summary.json, and a CSV (history, profiles) by column name.
+// What the tests that run whole scenes share: running the text of a
+// parameter file, and reading back a number of a run's summary.json, and a
+// CSV (history, profiles) by column name.
 #ifndef thinlayer_tests_run_results_h
 #define thinlayer_tests_run_results_h
+
+#include <thinlayer/app/command_line.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -13,6 +16,22 @@
 
 namespace run_results
 {
+  /// Write @p prm to @p file and run it as the command line would, with
+  /// @p options after it; what it wrote to stderr if it failed, else "".
+  inline std::string
+  run_text(const std::string              &prm,
+           const std::vector<std::string> &options = {},
+           const std::string              &file    = "scene.prm")
+  {
+    std::ofstream(file) << prm;
+    std::vector<std::string> arguments = {file};
+    arguments.insert(arguments.end(), options.begin(), options.end());
+    std::ostringstream out, err;
+    if (thinlayer::run_command_line(arguments, out, err) != 0)
+      return err.str().empty() ? std::string("failed\n") : err.str();
+    return "";
+  }
+
   /// The number @p key of @p directory/summary.json (NaN if it has none).
   inline double
   summary_number(const std::string &directory, const std::string &key)

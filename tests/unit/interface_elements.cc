@@ -32,6 +32,8 @@
 #include <string>
 #include <vector>
 
+#include "../common/run_results.h"
+
 namespace
 {
   const std::string patch = SOURCE_DIR "/../../meshes/interface-patch.geo";
@@ -64,13 +66,10 @@ namespace
   bool
   run(const std::string &prm, const std::vector<std::string> &options = {})
   {
-    std::ofstream("patch.prm") << prm;
-    std::vector<std::string> arguments = {"patch.prm"};
-    arguments.insert(arguments.end(), options.begin(), options.end());
-    std::ostringstream out, err;
-    if (thinlayer::run_command_line(arguments, out, err) != 0)
+    const std::string error = run_results::run_text(prm, options, "patch.prm");
+    if (!error.empty())
       {
-        std::cout << "  run failed: " << err.str();
+        std::cout << "  run failed: " << error;
         return false;
       }
     return true;

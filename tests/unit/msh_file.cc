@@ -55,6 +55,18 @@ namespace
   }
 
 
+  /// The elements of gmsh type @p type in @p m, of physical id @p id (any
+  /// where negative).
+  unsigned int
+  count(const MshFile &m, const int type, const long id)
+  {
+    unsigned int n = 0;
+    for (const MshElement &e : m.elements)
+      n += (e.type == type && (id < 0 || e.physical() == id));
+    return n;
+  }
+
+
   /// Whether @p a and @p b have the same cells (vertices in order,
   /// material ids) and boundary faces (ids), to round-off.
   template <int dim>
@@ -242,12 +254,6 @@ main()
   {
     const MshFile mesh(patch, "interface-patch.geo");
     const MshFile split = split_along_curves(mesh, {3});
-    const auto    count = [](const MshFile &m, const int type, const long id) {
-      unsigned int n = 0;
-      for (const MshElement &e : m.elements)
-        n += (e.type == type && (id < 0 || e.physical() == id));
-      return n;
-    };
     std::cout << "  nodes " << mesh.node_ids.size() << " -> "
               << split.node_ids.size() << ", lines of curve 3 "
               << count(mesh, 1, 3) << " -> " << count(split, 1, 3) << ", cells "
@@ -299,12 +305,6 @@ main()
     const MshFile mesh(gmsh("interface-patch-3d.geo", {}, 3),
                        "interface-patch-3d.geo");
     const MshFile split = split_along_curves(mesh, {3});
-    const auto    count = [](const MshFile &m, const int type, const long id) {
-      unsigned int n = 0;
-      for (const MshElement &e : m.elements)
-        n += (e.type == type && (id < 0 || e.physical() == id));
-      return n;
-    };
     std::cout << "  nodes " << mesh.node_ids.size() << " -> "
               << split.node_ids.size() << ", quadrilaterals of surface 3 "
               << count(mesh, 3, 3) << " -> " << count(split, 3, 3)
