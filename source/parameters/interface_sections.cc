@@ -81,8 +81,9 @@ namespace thinlayer
     prm.declare_entry("Name",
                       "",
                       Patterns::Anything(),
-                      "A name for this interface (the gmsh physical curve "
-                      "with the same number), used in output.");
+                      "A name for this interface (the gmsh physical curve, "
+                      "or surface in 3d, with the same number), used in "
+                      "output.");
     prm.declare_entry("Normal stiffness",
                       "1e8",
                       Patterns::Double(),
@@ -121,15 +122,16 @@ namespace thinlayer
     prm.declare_entry("Integration",
                       "gauss",
                       Patterns::Selection(integration_names.pattern()),
-                      "gauss: Gauss points along each cell side; lobatto: "
+                      "gauss: Gauss points along each cell side (each "
+                      "direction of a face in 3d); lobatto: "
                       "Newton-Cotes/Lobatto points at the side's three "
-                      "nodes, which keep tractions from oscillating at high "
-                      "stiffness.");
+                      "nodes (3 x 3 on a face), which keep tractions from "
+                      "oscillating at high stiffness.");
     prm.declare_entry("Points per side",
                       "3",
                       Patterns::Integer(2, 3),
-                      "Gauss points per cell side (2 or 3); Lobatto always "
-                      "uses 3.");
+                      "Gauss points per cell side (2 or 3; per direction "
+                      "of a face in 3d); Lobatto always uses 3.");
     prm.leave_subsection();
   }
 

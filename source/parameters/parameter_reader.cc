@@ -449,8 +449,9 @@ namespace thinlayer
     out
       << "# thinlayer parameters. 'Material <id>' and 'Boundary <id>' may be\n"
       << "# repeated for every physical surface and curve id of the mesh,\n"
-      << "# 'Interface curve <id>' for every physical curve of zero-thickness\n"
-      << "# interface elements.\n";
+      << "# 'Interface curve <id>' for every physical curve (a physical "
+         "surface\n"
+      << "# in 3d) of zero-thickness interface elements.\n";
     prm.print_parameters(out, ParameterHandler::PRM);
   }
 } // namespace thinlayer

@@ -1,5 +1,6 @@
 """The report's sections on 3D bodies (Kinematics/Type = 3d): Case 1
-extruded (plane strain held, then free), a rigid disc's stiffnesses from
+extruded (plane strain held, then free), zero-thickness interface elements
+in 3D (Cases 1 and 3), a rigid disc's stiffnesses from
 the 3D body and from Fourier harmonics, and Case 3 computed both ways,
 error against cost."""
 import math
@@ -57,9 +58,29 @@ WIDE_MOTIONS = ("vertical", "horizontal")
 E, NU = 1e5, 0.3
 
 
+# Zero-thickness interface elements: Case 1 (plane strain, and extruded
+# with u_z held) and Case 3 (Fourier harmonics 1, 3, and the half body),
+# each sliding at its analytic load.
+INTERFACE_RUNS = [
+    ("case1-zt-plane", "case1-inclined-adhesive-zero-thickness", ("Output/Write VTU=false",)),
+    ("case1-zt-3d", "case1-3d-zero-thickness", ("Output/Write VTU=false",)),
+    ("case3-zt-fourier", "case3-circular-footing-zero-thickness", ("Output/Write VTU=false",)),
+    ("case3-zt-3d", "case3-circular-footing-3d-zero-thickness", ("Output/Write VTU=false",)),
+]
+# In --quick the half body has 8 elements around the half circle (not 16),
+# and is loaded from 0.9 in steps of 0.01.
+INTERFACE_QUICK = ("Mesh/Geometry parameters=sector=180, footing=1, zero_thickness=1, "
+                   "half_width=1, width=5, depth=3, footing_height=0.5, n_around=2, "
+                   "n_footing=4, n_side=12, n_depth=10, growth=1.2",
+                   "Loading/Load increments=0.9, 12*0.01")
+
+
 def run_list(quick):
     """The runs of these sections: (name, scene, overrides)."""
     runs = list(CASE1_RUNS)
+    for name, scene, overrides in INTERFACE_RUNS:
+        quick_3d = quick and name == "case3-zt-3d"
+        runs.append((name, scene, overrides + (INTERFACE_QUICK if quick_3d else ())))
     for motion, solid, fourier, _ in DISC_MOTIONS:
         runs.append(("disc-%s-3d" % motion, "rigid-disc-3d", solid))
         runs.append(("disc-%s-fourier" % motion, "rigid-disc-fourier", fourier))
@@ -117,6 +138,61 @@ def case1_section(runs):
                    our_value=("3D held = plane strain, bit for bit" if difference == 0 else
                               "3D held = plane strain to %.0e" % difference)
                    if agree else "differs")
+
+
+def _bracket(summary):
+    """(last converged, first failed) load factor of a collapse, else None."""
+    if not results.collapse_detected(summary):
+        return None
+    return (results.number(summary["last_converged_load"]),
+            results.number(summary["first_failed_load"]))
+
+
+def interface_section(runs):
+    plane = results.states(results.history(runs.path("case1-zt-plane")))
+    held = results.states(results.history(runs.path("case1-zt-3d")))
+    scale_load = max(abs(results.number(r["load"])) for r in plane)
+    scale_u = max(abs(results.number(r["displacement"])) for r in plane)
+    difference = max((max(abs(results.number(a["load"]) - results.number(b["load"])) / scale_load,
+                          abs(results.number(a["displacement"])
+                              - results.number(b["displacement"])) / scale_u)
+                      for a, b in zip(plane, held)), default=math.inf)
+    same = len(plane) == len(held) and difference <= PLANE_STRAIN_AGREEMENT
+    rows = [["run", "kinematics", "cells", "DoFs", "outcome", "collapse bracket (load factor)",
+             "analytic", "contains it", "wall s"]]
+    contained = True
+    names = [name for name, _, _ in INTERFACE_RUNS]
+    for name in names:
+        s = runs.summary(name)
+        bracket = _bracket(s)
+        # Case 1's load factor is P / P_ult, Case 3's P / (pi R^2 C_w): 1.
+        inside = bracket is not None and bracket[0] <= 1 + 1e-12 and 1 - 1e-12 <= bracket[1]
+        contained = contained and inside
+        rows.append([name, s["kinematics"], "%d" % s["cells"], "%d" % s["dofs"], s["outcome"],
+                     "%.4f - %.4f" % bracket if bracket else "-", "1",
+                     "yes" if inside else "NO", "%.1f" % s["wall_seconds"]])
+    why = ("Zero-thickness interface elements (Tresca, adhesion C_w = 1) in 3D: 16-node "
+           "elements pairing the 8-node faces on either side of a physical surface. Case 1's "
+           "column extruded along z with u_z held (prm/case1-3d-zero-thickness.prm) against "
+           "its plane-strain column (prm/case1-inclined-adhesive-zero-thickness.prm): %s "
+           "converged states, loads and displacements within %.1e of the largest (asked: "
+           "%.0e). Case 3's footing as a half body standing on the soil "
+           "(prm/case3-circular-footing-3d-zero-thickness.prm) against Fourier harmonics 1, 3 "
+           "(prm/case3-circular-footing-zero-thickness.prm): pure sliding needs "
+           "P = pi R^2 C_w, load factor 1. %s" % (
+               "the same" if len(plane) == len(held) else "A DIFFERENT number of",
+               difference, PLANE_STRAIN_AGREEMENT,
+               "Every run's collapse bracket contains the analytic load factor."
+               if contained else "NOT every run's collapse bracket contains the analytic load "
+               "factor."))
+    return Section("interface-elements-3d", "Zero-thickness interface elements in 3D",
+                   "(not in the paper) Goodman-type elements along a line, in plane strain "
+                   "and for the footing's Fourier harmonics.",
+                   "beyond" if same and contained else "differs", why, rows=rows,
+                   cost="%.1f s for the %d runs" % (runs.seconds(*names), len(names)),
+                   paper_value="(not in the paper)",
+                   our_value=("3D = plane strain to %.0e; slides at the analytic load" % difference)
+                   if same and contained else "differs")
 
 
 def disc_section(runs):
@@ -270,4 +346,5 @@ def fourier_or_3d_section(directory):
 
 
 def sections(runs, quick):
-    return [case1_section(runs), disc_section(runs), fourier_or_3d_section(runs.directory)]
+    return [case1_section(runs), interface_section(runs), disc_section(runs),
+            fourier_or_3d_section(runs.directory)]
