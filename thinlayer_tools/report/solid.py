@@ -75,9 +75,21 @@ INTERFACE_QUICK = ("Mesh/Geometry parameters=sector=180, footing=1, zero_thickne
                    "Loading/Load increments=0.9, 12*0.01")
 
 
+# The rough rigid circular footing: the 3D quarter body (not in --quick: it
+# takes some 15 minutes) and harmonic 0 on the like r-z mesh.
+FOOTING_3D = ("footing-rigid-3d", "circular-footing-rigid-3d", ("Output/Write VTU=false",))
+FOOTING_FOURIER = ("footing-rigid-fourier", "circular-footing-rigid",
+                   ("Output/Write VTU=false",
+                    "Mesh/Geometry parameters=half_width=1, width=5, depth=3, n_footing=8, "
+                    "n_side=16, n_depth=16, growth=1.3",
+                    "Discretisation/Element=Q8", "Boundary 1/Constrained components=r, z",
+                    "Reference/Analytic load=6.05"))
+FOOTING_TARGET = 0.02
+
+
 def run_list(quick):
     """The runs of these sections: (name, scene, overrides)."""
-    runs = list(CASE1_RUNS)
+    runs = list(CASE1_RUNS) + [FOOTING_FOURIER] + ([] if quick else [FOOTING_3D])
     for name, scene, overrides in INTERFACE_RUNS:
         quick_3d = quick and name == "case3-zt-3d"
         runs.append((name, scene, overrides + (INTERFACE_QUICK if quick_3d else ())))
@@ -158,18 +170,22 @@ def interface_section(runs):
                               - results.number(b["displacement"])) / scale_u)
                       for a, b in zip(plane, held)), default=math.inf)
     same = len(plane) == len(held) and difference <= PLANE_STRAIN_AGREEMENT
-    rows = [["run", "kinematics", "cells", "DoFs", "outcome", "collapse bracket (load factor)",
+    rows = [["run", "kinematics", "cells", "DoFs", "outcome", "collapse bracket",
              "analytic", "contains it", "wall s"]]
     contained = True
     names = [name for name, _, _ in INTERFACE_RUNS]
     for name in names:
         s = runs.summary(name)
         bracket = _bracket(s)
-        # Case 1's load factor is P / P_ult, Case 3's P / (pi R^2 C_w): 1.
-        inside = bracket is not None and bracket[0] <= 1 + 1e-12 and 1 - 1e-12 <= bracket[1]
+        # Case 1's load is P / C_w (its analytic 1 / (sin cos)), Case 3's
+        # P / (pi R^2 C_w) (1).
+        reference = results.number(s.get("reference_load"))
+        inside = (bracket is not None and math.isfinite(reference)
+                  and bracket[0] <= reference * (1 + 1e-12)
+                  and reference * (1 - 1e-12) <= bracket[1])
         contained = contained and inside
         rows.append([name, s["kinematics"], "%d" % s["cells"], "%d" % s["dofs"], s["outcome"],
-                     "%.4f - %.4f" % bracket if bracket else "-", "1",
+                     "%.4f - %.4f" % bracket if bracket else "-", "%.4g" % reference,
                      "yes" if inside else "NO", "%.1f" % s["wall_seconds"]])
     why = ("Zero-thickness interface elements (Tresca, adhesion C_w = 1) in 3D: 16-node "
            "elements pairing the 8-node faces on either side of a physical surface. Case 1's "
@@ -179,7 +195,7 @@ def interface_section(runs):
            "%.0e). Case 3's footing as a half body standing on the soil "
            "(prm/case3-circular-footing-3d-zero-thickness.prm) against Fourier harmonics 1, 3 "
            "(prm/case3-circular-footing-zero-thickness.prm): pure sliding needs "
-           "P = pi R^2 C_w, load factor 1. %s" % (
+           "P = pi R^2 C_w. Case 1's load is P / C_w, Case 3's P / (pi R^2 C_w). %s" % (
                "the same" if len(plane) == len(held) else "A DIFFERENT number of",
                difference, PLANE_STRAIN_AGREEMENT,
                "Every run's collapse bracket contains the analytic load factor."
@@ -193,6 +209,39 @@ def interface_section(runs):
                    paper_value="(not in the paper)",
                    our_value=("3D = plane strain to %.0e; slides at the analytic load" % difference)
                    if same and contained else "differs")
+
+
+def footing_section(runs):
+    rows = [["model", "cells", "DoFs", "collapse pressure / c", "vs 6.05", "wall s", "peak MB"]]
+    names = [FOOTING_FOURIER[0]] + ([FOOTING_3D[0]] if runs.has(FOOTING_3D[0]) else [])
+    errors = {}
+    for name in names:
+        s = runs.summary(name)
+        load, error = results.collapse_load(s), results.collapse_error(s)
+        errors[name] = error
+        rows.append([name, "%d" % s["cells"], "%d" % s["dofs"],
+                     "%.4f" % load if load is not None else "-",
+                     "%+.2f%%" % (100 * error) if error is not None else "-",
+                     "%.0f" % s["wall_seconds"], "%.0f" % s["peak_memory_mb_per_rank"]])
+    solid = errors.get(FOOTING_3D[0])
+    if solid is None and not runs.has(FOOTING_3D[0]):
+        verdict, value = "not run", "not run in --quick"
+    else:
+        within = solid is not None and abs(solid) <= FOOTING_TARGET
+        verdict = "agrees" if within else "disagrees"
+        value = "%+.2f%% (3D)" % (100 * solid) if solid is not None else "no plateau"
+    why = ("A rough rigid circular footing (radius R = 1) pushed into weightless Tresca soil "
+           "(c = 1) to its plateau: the Eason-Shield limit 6.05 c. 3D: a quarter of the body "
+           "(prm/circular-footing-rigid-3d.prm), 20-node hexahedra graded towards the "
+           "footing's edge outwards and downwards (growth 1.3 over 16 elements each way); "
+           "Fourier: harmonic 0 on the like r-z mesh (8-node cells, 8 across the footing). "
+           "Asked of the 3D body: within %.0f%%. The 3D disc is a polygon of 32 sides, its "
+           "area 0.64%% short of pi R^2, by which its pressure per pi R^2 comes low." % (
+               100 * FOOTING_TARGET))
+    return Section("footing-rigid-3d", "The rough rigid circular footing in 3D",
+                   "(not in the paper) 6.05 c (Eason and Shield 1960).", verdict, why,
+                   rows=rows, cost="%.0f s for the %d runs" % (runs.seconds(*names), len(names)),
+                   paper_value="6.05 c (closed form)", our_value=value)
 
 
 def disc_section(runs):
@@ -346,5 +395,5 @@ def fourier_or_3d_section(directory):
 
 
 def sections(runs, quick):
-    return [case1_section(runs), interface_section(runs), disc_section(runs),
-            fourier_or_3d_section(runs.directory)]
+    return [case1_section(runs), interface_section(runs), footing_section(runs),
+            disc_section(runs), fourier_or_3d_section(runs.directory)]
