@@ -8,7 +8,7 @@
 #   scripts/setup.sh test   install what is missing, build (Release), run ctest;
 #                           then build in Debug against deal.II's debug
 #                           library and run ctest there (its assertions on),
-#                           run three scenes under valgrind (memory errors
+#                           run five scenes under valgrind (memory errors
 #                           fail the test), and reproduce the paper into its
 #                           report (--quick) and open it in headless Chromium
 #
@@ -86,12 +86,12 @@ else
 
   # valgrind: a plane-strain scene (the default method, Newton included), a
   # Fourier one, one with zero-thickness interface elements (the mesh
-  # split along a curve, Newton's singular tangent at the mechanism), and a
-  # 3D one (hexahedra, a layer's surface profile), with their VTU output,
-  # each about 20 s.
+  # split along a curve, Newton's singular tangent at the mechanism), and
+  # two 3D ones (hexahedra, a layer's surface profile; a mesh split along a
+  # surface and 16-node interface elements), with their VTU output.
   mkdir -p "$build/valgrind"
   for scene in case2_default_thin fourier_cylinder_plastic case2_zero_thickness \
-               case1_3d_default; do
+               case1_3d_default case1_3d_zero_thickness; do
     echo "thinlayer setup: valgrind on tests/scenes/$scene.prm"
     if ! valgrind -q --error-exitcode=99 "$build/thinlayer" "$top/tests/scenes/$scene.prm" \
          -s "Output/Directory=$build/valgrind/$scene" > "$build/valgrind/$scene.log" 2>&1; then
