@@ -11,6 +11,7 @@
 
 #include <thinlayer/discretisation/kinematics.h>
 #include <thinlayer/elements/element_group.h>
+#include <thinlayer/elements/interface_geometry.h>
 #include <thinlayer/elements/interface_values.h>
 #include <thinlayer/materials/interface_law.h>
 #include <thinlayer/mesh/interface_pairing.h>
@@ -199,19 +200,6 @@ namespace thinlayer
       std::array<dealii::Point<3>, 4> patch;
     };
 
-    /// Where a point of a side lies, before its jump operator is known.
-    struct PointPlace
-    {
-      dealii::Point<dim>              position;
-      Tensor<2, 3>                    frame;
-      double                          weight;
-      double                          arc_length;
-      std::array<dealii::Point<3>, 4> patch;
-      /// The point in the plus cell's unit cell (NaN where it is found
-      /// from @p position, as along a curve).
-      dealii::Point<dim> unit_plus;
-    };
-
     struct Element
     {
       const InterfaceLaw *law;
@@ -257,13 +245,6 @@ namespace thinlayer
                 const bool                        own,
                 const DoFHandler<dim>            &dof_handler,
                 const Mapping<dim>               &mapping);
-
-    /// The integration points of @p pair's side: along its chord (a
-    /// curve's sides are straight), or over the plus cell's face.
-    std::vector<PointPlace>
-    side_points(const FacingSides<dim>           &pair,
-                const InterfaceElementParameters &curve,
-                const Mapping<dim>               &mapping) const;
 
 
     /**
