@@ -56,6 +56,9 @@ WIDE_FOURIER = ("Mesh/Geometry parameters=half_width=1, width=20, depth=20, n_fo
                 "n_side=12, n_depth=12, growth=1.3",)
 WIDE_MOTIONS = ("vertical", "horizontal")
 E, NU = 1e5, 0.3
+# The collapse resolution of prm/case3-circular-footing-3d.prm's runs (the
+# default, a share of the load).
+COLLAPSE_RESOLUTION = 0.005
 
 
 # Zero-thickness interface elements: Case 1 (plane strain, and extruded
@@ -104,9 +107,9 @@ def run_list(quick):
 
 
 def benchmark_arguments(quick):
-    """benchmarks/fourier_vs_3d.py's arguments: 16 elements around the half
+    """benchmarks/fourier_vs_3d.py's arguments: 8 elements around the half
     circle in --quick, 16 and 32 otherwise."""
-    return ["--levels", "4" if quick else "4,8"]
+    return ["--levels", "2" if quick else "4,8"]
 
 
 def case1_section(runs):
@@ -349,8 +352,10 @@ def fourier_or_3d_section(directory):
         return next((r["model"].replace("Fourier ", "") for r in fourier[:-1]
                      if abs(_difference(r, reference, key)) < tolerance), "{1, 3, 5, 7}")
 
+    # The runs bracket the collapse to the scene's resolution, 0.5% of the
+    # load: loads one bracket apart are the same collapse.
     loads = [results.number(r["collapse_load"]) for r in rows_csv]
-    same_collapse = max(loads) - min(loads) < 1e-9
+    same_collapse = max(loads) - min(loads) <= COLLAPSE_RESOLUTION * min(loads) + 1e-9
     cheapest = fourier[-1]
     last = solid[-1] if solid else None
     cost = (results.number(last["wall_seconds"]) / results.number(cheapest["wall_seconds"])
@@ -363,8 +368,12 @@ def fourier_or_3d_section(directory):
            "at the last converged state, near collapse, needs %s for 1%%: harmonic 1 with a "
            "little of 3 and 5. %s Fourier harmonics suffice for this body of revolution; 3D "
            "is for bodies that are not." % (
-               "Every model finds the same collapse load factor, %.4f (the row of R/t = 10 is "
-               "15.5%% strong, the paper's own finding)." % loads[0]
+               ("Every model finds the same collapse load factor, %.4f" % loads[0]
+                if max(loads) == min(loads) else
+                "Every model finds the collapse load factor between %.4f and %.4f, within the "
+                "runs' resolution of %.1f%%" % (min(loads), max(loads),
+                                                100 * COLLAPSE_RESOLUTION))
+               + " (the row of R/t = 10 is some 15.5% strong, the paper's own finding)."
                if same_collapse else "The collapse loads DIFFER between the models.",
                first_within("displacement_half", 1e-3), first_within("mean_slip", 1e-2),
                ("The 3D body with %s elements around the half circle lies %+.3f%% and %+.2f%% "
