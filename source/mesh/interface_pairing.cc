@@ -40,7 +40,7 @@ namespace thinlayer
 
 
     /// The interfaces' sides, each with the one facing it (the same centre
-    /// on another cell), found along a sweep in x.
+    /// on another cell), found along a sweep.
     template <int dim>
     std::vector<std::pair<Side<dim>, Side<dim>>>
     facing_pairs(const DoFHandler<dim>              &dof_handler,
@@ -68,19 +68,26 @@ namespace thinlayer
                              (dim == 2 ? "curve " : "surface ") +
                              std::to_string(id));
 
+      // Sorted along an oblique direction, so that sides on a line or plane
+      // of the axes rarely share a key while facing ones (the same centre)
+      // always lie within twice the tolerance of each other.
+      const auto key = [&](const unsigned int k) {
+        const Point<dim> &c = sides[k].centre;
+        return c[0] + 0.3183 * c[1] + (dim == 3 ? 0.1415 * c[dim - 1] : 0.);
+      };
       std::vector<unsigned int> order(sides.size());
       for (unsigned int k = 0; k < order.size(); ++k)
         order[k] = k;
       std::stable_sort(order.begin(),
                        order.end(),
                        [&](const unsigned int a, const unsigned int b) {
-                         return sides[a].centre[0] < sides[b].centre[0];
+                         return key(a) < key(b);
                        });
       std::vector<unsigned int> facing(sides.size(), sides.size());
       for (unsigned int a = 0; a < order.size(); ++a)
         for (unsigned int b = a + 1;
              b < order.size() && facing[order[a]] == sides.size() &&
-             sides[order[b]].centre[0] - sides[order[a]].centre[0] < tolerance;
+             key(order[b]) - key(order[a]) < 2 * tolerance;
              ++b)
           {
             const auto &i = sides[order[a]], &j = sides[order[b]];

@@ -246,7 +246,6 @@ namespace thinlayer
                 const DoFHandler<dim>            &dof_handler,
                 const Mapping<dim>               &mapping);
 
-
     /**
      * Run @p rule(point, station, law, state, jump, point_station) at every
      * point and station, with the jump of the modes' step increments; the
