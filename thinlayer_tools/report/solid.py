@@ -70,10 +70,10 @@ INTERFACE_RUNS = [
     ("case3-zt-fourier", "case3-circular-footing-zero-thickness", ("Output/Write VTU=false",)),
     ("case3-zt-3d", "case3-circular-footing-3d-zero-thickness", ("Output/Write VTU=false",)),
 ]
-# In --quick the half body has 8 elements around the half circle (not 16),
+# In --quick the half body has 4 elements around the half circle (not 16),
 # and is loaded from 0.9 in steps of 0.01.
 INTERFACE_QUICK = ("Mesh/Geometry parameters=sector=180, footing=1, zero_thickness=1, "
-                   "half_width=1, width=5, depth=3, footing_height=0.5, n_around=2, "
+                   "half_width=1, width=5, depth=3, footing_height=0.5, n_around=1, "
                    "n_footing=4, n_side=12, n_depth=10, growth=1.2",
                    "Loading/Load increments=0.9, 12*0.01")
 
