@@ -193,10 +193,13 @@ namespace thinlayer
     Tensor<1, 3>   jump; // (x, y, theta or z) summed over the modes
     for (unsigned int m = 0; m < vectors.size(); ++m)
       {
-        const ModeVector &v = vectors[m];
+        const ModeVector &v    = vectors[m];
+        const double      T[3] = {kinematics->T(0, m, s),
+                                  kinematics->T(1, m, s),
+                                  kinematics->T(2, m, s)};
         for (const Entry &e : point.entries)
-          jump[e.component] += kinematics->T(e.component, m, s) * e.value *
-                               v[element.dofs[e.local_dof]];
+          jump[e.component] +=
+            T[e.component] * e.value * v[element.dofs[e.local_dof]];
       }
     return point.frame * jump;
   }
@@ -215,11 +218,13 @@ namespace thinlayer
     const Tensor<1, 3> global = traction * point.frame;
     for (unsigned int m = 0; m < target.size(); ++m)
       {
-        ModeVector &v = target[m];
+        ModeVector  &v    = target[m];
+        const double T[3] = {kinematics->T(0, m, s),
+                             kinematics->T(1, m, s),
+                             kinematics->T(2, m, s)};
         for (const Entry &e : point.entries)
-          v[element.dofs[e.local_dof]] += weight *
-                                          kinematics->T(e.component, m, s) *
-                                          e.value * global[e.component];
+          v[element.dofs[e.local_dof]] +=
+            weight * T[e.component] * e.value * global[e.component];
       }
   }
 
@@ -237,13 +242,18 @@ namespace thinlayer
     else
       G = 0;
     for (unsigned int m = 0; m < kinematics->n_modes(); ++m)
-      for (const Entry &e : point.entries)
-        {
-          const unsigned int column = m * n + e.local_dof;
-          const double       value = kinematics->T(e.component, m, s) * e.value;
-          for (unsigned int a = 0; a < 3; ++a)
-            G(a, column) += value * point.frame[a][e.component];
-        }
+      {
+        const double T[3] = {kinematics->T(0, m, s),
+                             kinematics->T(1, m, s),
+                             kinematics->T(2, m, s)};
+        for (const Entry &e : point.entries)
+          {
+            const unsigned int column = m * n + e.local_dof;
+            const double       value  = T[e.component] * e.value;
+            for (unsigned int a = 0; a < 3; ++a)
+              G(a, column) += value * point.frame[a][e.component];
+          }
+      }
   }
 
 

@@ -21,13 +21,8 @@ namespace thinlayer
       unsigned int                                   face;
       types::boundary_id                             curve;
       Point<dim>                                     centre;
-
-      /// The ends of a side of a 2D cell.
-      std::array<Point<dim>, 2>
-      ends() const
-      {
-        return {{cell->face(face)->vertex(0), cell->face(face)->vertex(1)}};
-      }
+      /// The face's first two vertices: a 2D side's ends.
+      std::array<Point<dim>, 2> ends;
     };
 
     bool
@@ -54,7 +49,11 @@ namespace thinlayer
           if (cell->at_boundary(f) &&
               curves.count(cell->face(f)->boundary_id()))
             sides.push_back(
-              {cell, f, cell->face(f)->boundary_id(), cell->face(f)->center()});
+              {cell,
+               f,
+               cell->face(f)->boundary_id(),
+               cell->face(f)->center(),
+               {{cell->face(f)->vertex(0), cell->face(f)->vertex(1)}}});
       for (const types::boundary_id id : curves)
         if (std::none_of(sides.begin(), sides.end(), [id](const auto &s) {
               return s.curve == id;
@@ -139,11 +138,11 @@ namespace thinlayer
       for (unsigned int k = 0; k < pairs.size(); ++k)
         for (unsigned int e = 0; e < 2; ++e)
           {
-            const Point<2> end    = pairs[k].first.ends()[e];
+            const Point<2> end    = pairs[k].first.ends[e];
             bool           shared = false;
             for (unsigned int l = 0; l < pairs.size() && !shared; ++l)
               if (l != k && curve_of(l) == curve_of(k))
-                for (const Point<2> &other : pairs[l].first.ends())
+                for (const Point<2> &other : pairs[l].first.ends)
                   shared = shared || same(other, end);
             if (!shared)
               starts.push_back({end, {k, e}});
@@ -154,7 +153,7 @@ namespace thinlayer
                   return lower_left(a.first, b.first, tolerance);
                 });
       for (unsigned int k = 0; k < pairs.size(); ++k)
-        starts.push_back({pairs[k].first.ends()[0], {k, 0}});
+        starts.push_back({pairs[k].first.ends[0], {k, 0}});
 
       std::vector<FacingSides<2>>                result;
       std::vector<bool>                          done(pairs.size(), false);
@@ -164,7 +163,7 @@ namespace thinlayer
           unsigned int k = start.second.first;
           if (done[k])
             continue;
-          Point<2>           entry = pairs[k].first.ends()[start.second.second];
+          Point<2>           entry = pairs[k].first.ends[start.second.second];
           const unsigned int run   = runs[curve_of(k)]++;
           double             arc   = 0;
           while (true)
@@ -172,7 +171,7 @@ namespace thinlayer
               done[k]               = true;
               const Side<2> &first  = pairs[k].first;
               const Side<2> &second = pairs[k].second;
-              const auto     ends   = first.ends();
+              const auto     ends   = first.ends;
               const Point<2> exit   = same(ends[0], entry) ? ends[1] : ends[0];
               const Tensor<1, 2> chord = exit - entry;
               const Tensor<1, 2> normal({-chord[1], chord[0]});
@@ -195,7 +194,7 @@ namespace thinlayer
               int next = -1;
               for (unsigned int l = 0; l < pairs.size() && next < 0; ++l)
                 if (!done[l] && curve_of(l) == first.curve)
-                  for (const Point<2> &e : pairs[l].first.ends())
+                  for (const Point<2> &e : pairs[l].first.ends)
                     if (same(e, exit))
                       next = l;
               if (next < 0)

@@ -219,14 +219,14 @@ namespace thinlayer
    */
   template <int dim>
   std::vector<std::unique_ptr<ElementGroup>>
-  create_element_groups(const Parameters               &parameters,
-                        const DoFHandler<dim>          &dof_handler,
-                        const Mapping<dim>             &mapping,
-                        const Quadrature<dim>          &quadrature,
-                        const Kinematics               &kinematics,
-                        const CellPartition            &partition,
+  create_element_groups(const Parameters                    &parameters,
+                        const DoFHandler<dim>               &dof_handler,
+                        const Mapping<dim>                  &mapping,
+                        const Quadrature<dim>               &quadrature,
+                        const Kinematics                    &kinematics,
+                        const CellPartition                 &partition,
                         const std::vector<FacingSides<dim>> &facing_sides,
-                        const CellPartition            &whole_partition);
+                        const CellPartition                 &whole_partition);
 } // namespace thinlayer
 
 #endif
