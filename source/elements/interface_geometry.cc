@@ -10,6 +10,115 @@
 // straight side, or over a hexahedron's face.
 namespace thinlayer
 {
+  namespace
+  {
+    /// The points along a straight side of a curve.
+    std::vector<InterfacePointPlace<2>>
+    points_on_side(const FacingSides<2> &pair,
+                   const Quadrature<1>  &rule,
+                   const Kinematics     &kinematics)
+    {
+      std::vector<InterfacePointPlace<2>> places;
+      // A straight side: the points along its chord.
+      const Tensor<1, 2> chord   = pair.exit - pair.entry;
+      const double       length  = chord.norm();
+      const Tensor<1, 2> tangent = chord / length;
+      const Tensor<2, 3> frame({{tangent[0], tangent[1], 0.},
+                                {-tangent[1], tangent[0], 0.},
+                                {0., 0., 1.}});
+      for (unsigned int q = 0; q < rule.size(); ++q)
+        {
+          InterfacePointPlace<2> place;
+          place.position = pair.entry + rule.point(q)[0] * chord;
+          place.frame    = frame;
+          place.weight =
+            rule.weight(q) * length * kinematics.area_factor(place.position);
+          place.arc_length   = pair.arc_length + rule.point(q)[0] * length;
+          place.unit_plus[0] = std::numeric_limits<double>::quiet_NaN();
+          places.push_back(place);
+        }
+      return places;
+    }
+
+
+    /// The points over the plus cell's face of a pair on a surface.
+    std::vector<InterfacePointPlace<3>>
+    points_on_face(const FacingSides<3> &pair,
+                   const Quadrature<1>  &rule,
+                   const Mapping<3>     &mapping)
+    {
+      std::vector<InterfacePointPlace<3>> places;
+      // The plus cell's face f: unit coordinate d = f / 2 fixed at f % 2,
+      // the points a tensor product over the other two; each point's
+      // patch spans the rule's cumulative weights around it.
+      const unsigned int f      = pair.plus_face;
+      const unsigned int d      = f / 2;
+      const double       across = f % 2;
+      const unsigned int first  = d == 0 ? 1 : 0;
+      const unsigned int second = d == 2 ? 1 : 2;
+      const auto         unit   = [&](const double a, const double b) {
+        Point<3> p;
+        p[first]  = a;
+        p[second] = b;
+        p[d]      = across;
+        return p;
+      };
+      std::vector<double> bounds = {0.};
+      for (unsigned int k = 0; k < rule.size(); ++k)
+        bounds.push_back(bounds.back() + rule.weight(k));
+
+      std::vector<Point<3>> units;
+      for (unsigned int j = 0; j < rule.size(); ++j)
+        for (unsigned int i = 0; i < rule.size(); ++i)
+          units.push_back(unit(rule.point(i)[0], rule.point(j)[0]));
+      const FE_Q<3>                                  linear(1);
+      FEValues<3>                                    values(mapping,
+                         linear,
+                         Quadrature<3>(units),
+                         update_quadrature_points | update_jacobians);
+      const typename Triangulation<3>::cell_iterator cell(pair.plus_cell);
+      values.reinit(cell);
+      for (unsigned int j = 0, q = 0; j < rule.size(); ++j)
+        for (unsigned int i = 0; i < rule.size(); ++i, ++q)
+          {
+            const DerivativeForm<1, 3, 3> &J = values.jacobian(q);
+            Tensor<1, 3>                   e_a, e_b, e_d;
+            for (unsigned int c = 0; c < 3; ++c)
+              {
+                e_a[c] = J[c][first];
+                e_b[c] = J[c][second];
+                e_d[c] = J[c][d];
+              }
+            const Tensor<1, 3> area = cross_product_3d(e_a, e_b);
+            // The normal points away from the plus cell, whose inside
+            // lies along +e_d from the face at unit 0, along -e_d at 1.
+            Tensor<1, 3> n = area / area.norm();
+            if ((n * e_d) * (across == 0 ? 1. : -1.) < 0)
+              n = -n;
+            const Tensor<1, 3>     t1 = first_tangent(n);
+            const Tensor<1, 3>     t2 = cross_product_3d(t1, n);
+            InterfacePointPlace<3> place;
+            place.position   = values.quadrature_point(q);
+            place.frame      = Tensor<2, 3>({{t1[0], t1[1], t1[2]},
+                                             {n[0], n[1], n[2]},
+                                             {t2[0], t2[1], t2[2]}});
+            place.weight     = rule.weight(i) * rule.weight(j) * area.norm();
+            place.arc_length = 0;
+            place.unit_plus  = units[q];
+            const double a0 = bounds[i], a1 = bounds[i + 1];
+            const double b0 = bounds[j], b1 = bounds[j + 1];
+            place.patch = {
+              {mapping.transform_unit_to_real_cell(cell, unit(a0, b0)),
+               mapping.transform_unit_to_real_cell(cell, unit(a1, b0)),
+               mapping.transform_unit_to_real_cell(cell, unit(a1, b1)),
+               mapping.transform_unit_to_real_cell(cell, unit(a0, b1))}};
+            places.push_back(place);
+          }
+      return places;
+    }
+  } // namespace
+
+
   template <int dim>
   std::vector<InterfacePointPlace<dim>>
   interface_point_places(const FacingSides<dim>           &pair,
@@ -21,100 +130,16 @@ namespace thinlayer
       curve.integration == InterfaceElementParameters::Integration::lobatto
         ? Quadrature<1>(QGaussLobatto<1>(3))
         : Quadrature<1>(QGauss<1>(curve.points));
-    std::vector<InterfacePointPlace<dim>> places;
     if constexpr (dim == 2)
       {
-        // A straight side: the points along its chord.
         (void)mapping;
-        const Tensor<1, 2> chord   = pair.exit - pair.entry;
-        const double       length  = chord.norm();
-        const Tensor<1, 2> tangent = chord / length;
-        const Tensor<2, 3> frame({{tangent[0], tangent[1], 0.},
-                                  {-tangent[1], tangent[0], 0.},
-                                  {0., 0., 1.}});
-        for (unsigned int q = 0; q < rule.size(); ++q)
-          {
-            InterfacePointPlace<dim> place;
-            place.position = pair.entry + rule.point(q)[0] * chord;
-            place.frame    = frame;
-            place.weight =
-              rule.weight(q) * length * kinematics.area_factor(place.position);
-            place.arc_length   = pair.arc_length + rule.point(q)[0] * length;
-            place.unit_plus[0] = std::numeric_limits<double>::quiet_NaN();
-            places.push_back(place);
-          }
+        return points_on_side(pair, rule, kinematics);
       }
     else
       {
-        // The plus cell's face f: unit coordinate d = f / 2 fixed at f % 2,
-        // the points a tensor product over the other two; each point's
-        // patch spans the rule's cumulative weights around it.
-        const unsigned int f      = pair.plus_face;
-        const unsigned int d      = f / 2;
-        const double       across = f % 2;
-        const unsigned int first  = d == 0 ? 1 : 0;
-        const unsigned int second = d == 2 ? 1 : 2;
-        const auto         unit   = [&](const double a, const double b) {
-          Point<3> p;
-          p[first]  = a;
-          p[second] = b;
-          p[d]      = across;
-          return p;
-        };
-        std::vector<double> bounds = {0.};
-        for (unsigned int k = 0; k < rule.size(); ++k)
-          bounds.push_back(bounds.back() + rule.weight(k));
-
-        std::vector<Point<3>> units;
-        for (unsigned int j = 0; j < rule.size(); ++j)
-          for (unsigned int i = 0; i < rule.size(); ++i)
-            units.push_back(unit(rule.point(i)[0], rule.point(j)[0]));
-        const FE_Q<3>                                  linear(1);
-        FEValues<3>                                    values(mapping,
-                           linear,
-                           Quadrature<3>(units),
-                           update_quadrature_points | update_jacobians);
-        const typename Triangulation<3>::cell_iterator cell(pair.plus_cell);
-        values.reinit(cell);
-        for (unsigned int j = 0, q = 0; j < rule.size(); ++j)
-          for (unsigned int i = 0; i < rule.size(); ++i, ++q)
-            {
-              const DerivativeForm<1, 3, 3> &J = values.jacobian(q);
-              Tensor<1, 3>                   e_a, e_b, e_d;
-              for (unsigned int c = 0; c < 3; ++c)
-                {
-                  e_a[c] = J[c][first];
-                  e_b[c] = J[c][second];
-                  e_d[c] = J[c][d];
-                }
-              const Tensor<1, 3> area = cross_product_3d(e_a, e_b);
-              // The normal points away from the plus cell, whose inside
-              // lies along +e_d from the face at unit 0, along -e_d at 1.
-              Tensor<1, 3> n = area / area.norm();
-              if ((n * e_d) * (across == 0 ? 1. : -1.) < 0)
-                n = -n;
-              const Tensor<1, 3>       t1 = first_tangent(n);
-              InterfacePointPlace<dim> place;
-              place.position = values.quadrature_point(q);
-              place.frame    = Tensor<2, 3>(
-                {{t1[0], t1[1], t1[2]}, {n[0], n[1], n[2]}, {0., 0., 0.}});
-              const Tensor<1, 3> t2 = cross_product_3d(t1, n);
-              for (unsigned int c = 0; c < 3; ++c)
-                place.frame[2][c] = t2[c];
-              place.weight     = rule.weight(i) * rule.weight(j) * area.norm();
-              place.arc_length = 0;
-              place.unit_plus  = units[q];
-              const double a0 = bounds[i], a1 = bounds[i + 1];
-              const double b0 = bounds[j], b1 = bounds[j + 1];
-              place.patch = {
-                {mapping.transform_unit_to_real_cell(cell, unit(a0, b0)),
-                 mapping.transform_unit_to_real_cell(cell, unit(a1, b0)),
-                 mapping.transform_unit_to_real_cell(cell, unit(a1, b1)),
-                 mapping.transform_unit_to_real_cell(cell, unit(a0, b1))}};
-              places.push_back(place);
-            }
+        (void)kinematics;
+        return points_on_face(pair, rule, mapping);
       }
-    return places;
   }
 
 
