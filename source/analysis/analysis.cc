@@ -6,6 +6,7 @@
 
 #include <thinlayer/analysis/analysis.h>
 #include <thinlayer/base/input_error.h>
+#include <thinlayer/base/work_counts.h>
 #include <thinlayer/discretisation/mode_constraints.h>
 #include <thinlayer/discretisation/serendipity_constraints.h>
 #include <thinlayer/mesh/interface_pairing.h>
@@ -300,6 +301,7 @@ namespace thinlayer
   unsigned int
   Analysis<dim>::viscoplastic_update(ModeVectors &body_load_change)
   {
+    ++work_counts().sweeps;
     // Each rank adds its points' loads, into its ghosts where another rank
     // owns the DoF; compress() adds those to their owners.
     unsigned int n_yielding = 0;
@@ -322,6 +324,7 @@ namespace thinlayer
   Analysis<dim>::return_mapping_update(const bool   with_tangents,
                                        ModeVectors &stress_excess)
   {
+    ++work_counts().sweeps;
     for (unsigned int m = 0; m < systems.size(); ++m)
       {
         internal_force_vectors[m] = 0;

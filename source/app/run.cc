@@ -4,6 +4,7 @@
 #include <thinlayer/app/run.h>
 #include <thinlayer/base/interruption.h>
 #include <thinlayer/base/text_format.h>
+#include <thinlayer/base/work_counts.h>
 #include <thinlayer/mesh/scene.h>
 #include <thinlayer/output/output_writer.h>
 #include <thinlayer/output/reference_check.h>
@@ -214,6 +215,7 @@ namespace thinlayer
       writer.write_file("parameters.prm", p.effective_parameters);
       print_model(p, scene, analysis, summary.warnings, out);
 
+      const WorkCounts      work_before = work_counts();
       const ProgrammeResult run =
         Programme<dim>(
           p, analysis, *solver, monitors, layers, writer, timer, out)
@@ -243,6 +245,10 @@ namespace thinlayer
       summary.steps_with_drift       = run.steps_with_drift;
       summary.total_iterations       = run.total_iterations;
       summary.converged_iterations   = run.converged_iterations;
+      const WorkCounts work          = work_counts().since(work_before);
+      summary.factorisations         = work.factorisations;
+      summary.substitutions          = work.substitutions;
+      summary.sweeps                 = work.sweeps;
       print_outcome(p, run, summary, out);
       if (const ReferenceCheck check = check_reference(p.reference, summary);
           check.checked)

@@ -1,5 +1,6 @@
 #include <deal.II/lac/exceptions.h>
 
+#include <thinlayer/base/work_counts.h>
 #include <thinlayer/parallel/mpi.h>
 #include <thinlayer/solvers/distributed_factorisation.h>
 #include <thinlayer/solvers/linear_solver_failure.h>
@@ -91,6 +92,7 @@ namespace thinlayer
     const PETScWrappers::MPI::SparseMatrix &matrix,
     const std::vector<IndexSet>            &owned_per_rank)
   {
+    ++work_counts().factorisations;
     const PetscInt error_code =
       try_factorize(matrix, owned_per_rank, /*exact_work_space=*/symmetric);
     // In parallel MUMPS schedules its work as it goes, and may need more
@@ -184,6 +186,7 @@ namespace thinlayer
   void
   DistributedFactorisation::solve(const ArrayView<double> &rows) const
   {
+    ++work_counts().substitutions;
     Assert(solver && solver->factorised,
            ExcMessage("factorize() first, successfully."));
     solver->rows.scatter(rows);

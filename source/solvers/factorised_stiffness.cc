@@ -1,20 +1,57 @@
+#include <thinlayer/base/work_counts.h>
 #include <thinlayer/solvers/factorised_stiffness.h>
 #include <thinlayer/solvers/linear_solver_failure.h>
 #include <thinlayer/solvers/singular_matrix.h>
 
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
 
+#include <dlfcn.h>
 #include <suitesparse/cholmod.h>
 #include <suitesparse/umfpack.h>
 
 namespace thinlayer
 {
+  namespace
+  {
+    /**
+     * Debian's CHOLMOD (SuiteSparse 5) runs the copy loops of its
+     * supernodal factorisation as OpenMP regions with a thread count fixed
+     * when it was compiled (4), which neither OMP_NUM_THREADS nor any
+     * CHOLMOD setting lowers. On a machine with fewer cores, or under
+     * mpirun with a rank per core, those threads contend for the cores at
+     * every supernode: on the project's 2-core machine a Newton iteration
+     * of Prandtl's footing with 8192 cells spent a third of its time in
+     * the kernel's scheduler (500 000 context switches in 11.9 s), and took
+     * 6.9 s without them. The work itself is BLAS's (serial here) and
+     * thinlayer's; so OpenMP regions are made inactive (one thread each)
+     * for the whole process, by the runtime's maximum of active levels,
+     * which bounds the thread count of every region whatever its clause.
+     * The runtime is found in the process (CHOLMOD loaded it) rather than
+     * linked, so that no OpenMP flag changes how thinlayer is compiled;
+     * without one there is nothing to do.
+     */
+    void
+    make_openmp_serial()
+    {
+      static std::once_flag once;
+      std::call_once(once, [] {
+        using SetLevels = void (*)(int);
+        if (const auto set_levels = reinterpret_cast<SetLevels>(
+              dlsym(RTLD_DEFAULT, "omp_set_max_active_levels")))
+          set_levels(0);
+      });
+    }
+  } // namespace
+
+
   struct FactorisedStiffness::Cholmod
   {
     Cholmod()
     {
+      make_openmp_serial();
       cholmod_l_start(&common);
       common.supernodal = CHOLMOD_SUPERNODAL;
       // A tangent that is not positive definite is reported to the caller
@@ -118,6 +155,7 @@ namespace thinlayer
   void
   FactorisedStiffness::factorize(const SparseMatrix<double> &matrix)
   {
+    ++work_counts().factorisations;
     if (method == Method::umfpack)
       {
         factorize_umfpack(matrix);
@@ -267,6 +305,7 @@ namespace thinlayer
   void
   FactorisedStiffness::solve(const ArrayView<double> &rhs)
   {
+    ++work_counts().substitutions;
     if (method == Method::umfpack)
       {
         Umfpack &u = *umfpack;

@@ -61,6 +61,11 @@ namespace thinlayer
     /// The iterations of the steps up to the last converged one (those of
     /// a failed step depend on rounding).
     unsigned int converged_iterations = 0;
+    /// The work of the load programme: factorisations and substitutions of
+    /// the direct solvers, and sweeps over the points (WorkCounts).
+    unsigned int factorisations = 0;
+    unsigned int substitutions  = 0;
+    unsigned int sweeps         = 0;
     std::string  method;
     double       seconds_per_substitution;
     /// With an iterative linear solver, its mean iterations per solve
@@ -137,6 +142,9 @@ namespace thinlayer
       visitor("steps_with_drift", steps_with_drift);
       visitor("total_iterations", total_iterations);
       visitor("iterations_to_last_converged_step", converged_iterations);
+      visitor("factorisations", factorisations);
+      visitor("substitutions", substitutions);
+      visitor("sweeps", sweeps);
       visitor("method", method);
       visitor("seconds_per_substitution", seconds_per_substitution);
       visitor("linear_iterations_per_solve", linear_iterations_per_solve);

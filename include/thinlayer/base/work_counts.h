@@ -1,0 +1,43 @@
+#ifndef thinlayer_base_work_counts_h
+#define thinlayer_base_work_counts_h
+
+namespace thinlayer
+{
+  /**
+   * The units of work a solution method spends, counted where the work is
+   * done: factorisations and forward/backward substitutions of a direct
+   * solver (the elastic stiffness, Newton's tangent, on one rank or by
+   * MUMPS on several), and sweeps of the point rules over every point of
+   * the body. Iterations of different methods cost different amounts
+   * (Newton's an assembly, a factorisation and a substitution; the
+   * constant-stiffness methods' a substitution): these counts are the
+   * currency in which summary.json and the benchmarks compare them, beside
+   * the time, which depends on the machine and its load.
+   */
+  struct WorkCounts
+  {
+    unsigned long factorisations = 0;
+    unsigned long substitutions  = 0;
+    unsigned long sweeps         = 0;
+
+    /// The work done since @p earlier.
+    WorkCounts
+    since(const WorkCounts &earlier) const
+    {
+      return {factorisations - earlier.factorisations,
+              substitutions - earlier.substitutions,
+              sweeps - earlier.sweeps};
+    }
+  };
+
+  /**
+   * The process's running counts. One process runs one body at a time,
+   * and a run reports the difference over its load programme
+   * (WorkCounts::since()), so that set-up work and earlier runs of a
+   * sweep are not in it.
+   */
+  WorkCounts &
+  work_counts();
+} // namespace thinlayer
+
+#endif
