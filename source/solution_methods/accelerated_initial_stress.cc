@@ -33,6 +33,26 @@ namespace thinlayer
 
   template <int dim>
   void
+  AcceleratedInitialStressMethod<dim>::give_up_when_slow()
+  {
+    slow_attempts_given_up = true;
+  }
+
+
+  template <int dim>
+  bool
+  AcceleratedInitialStressMethod<dim>::gives_up(
+    const ConvergenceWatch &watch) const
+  {
+    constexpr unsigned int window = 10;
+    return slow_attempts_given_up && watch.iterations() >= window &&
+           watch.predicted_iterations(this->parameters.tolerance, window) >
+             this->max_iterations();
+  }
+
+
+  template <int dim>
+  void
   AcceleratedInitialStressMethod<dim>::start_attempt()
   {
     anderson.reset();

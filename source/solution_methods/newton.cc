@@ -54,6 +54,14 @@ namespace thinlayer
 
   template <int dim>
   bool
+  NewtonMethod<dim>::gives_up(const ConvergenceWatch &watch) const
+  {
+    return watch.stagnating(6, 0.5);
+  }
+
+
+  template <int dim>
+  bool
   NewtonMethod<dim>::iterate(const double   target,
                              ResidualNorms &norms,
                              StepResult    &result)

@@ -28,6 +28,7 @@ namespace thinlayer
   {
     accelerated_parameters.max_iterations =
       std::min(parameters.max_iterations, accelerated_budget);
+    accelerated.give_up_when_slow();
     accelerated.report_acceptance_to(*this);
     newton.report_acceptance_to(*this);
   }
@@ -77,6 +78,15 @@ namespace thinlayer
   {
     accelerated.state_rejected();
     newton.state_rejected();
+  }
+
+
+  template <int dim>
+  void
+  NewtonFallbackMethod<dim>::set_final_attempt(const bool final)
+  {
+    accelerated.set_final_attempt(false);
+    newton.set_final_attempt(final);
   }
 
 

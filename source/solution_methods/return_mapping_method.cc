@@ -127,6 +127,14 @@ namespace thinlayer
 
 
   template <int dim>
+  bool
+  ReturnMappingMethod<dim>::gives_up(const ConvergenceWatch &) const
+  {
+    return false;
+  }
+
+
+  template <int dim>
   StepResult
   ReturnMappingMethod<dim>::solve_step(const double new_load_factor)
   {
@@ -166,6 +174,7 @@ namespace thinlayer
     start_attempt();
 
     ResidualNorms norms = starting_residual(target);
+    watch.start();
     for (unsigned int k = 0; k < max_iterations(); ++k)
       {
         if (interrupted())
@@ -180,6 +189,9 @@ namespace thinlayer
         growth.iteration_done(k + 1,
                               max_iterations(),
                               analysis.step_increment());
+        watch.add(norms.max / norms.forces);
+        if (!this->final_attempt && gives_up(watch))
+          return false;
       }
     result.growth_ratio = growth.growth_ratio(analysis.step_increment());
     return false;

@@ -21,6 +21,14 @@ namespace thinlayer
 
   template <int dim>
   void
+  SolutionMethod<dim>::set_final_attempt(const bool final)
+  {
+    final_attempt = final;
+  }
+
+
+  template <int dim>
+  void
   SolutionMethod<dim>::report_acceptance_to(SolutionMethod<dim> &composite)
   {
     acceptance_listener = &composite;

@@ -57,6 +57,21 @@ namespace thinlayer
   }
 
 
+  bool
+  LoadStepping::failure_is_final() const
+  {
+    if (!automatic())
+      return true;
+    // Bracketed to the resolution of the load factor, or of the first
+    // increment where the collapse load is near zero; and never more
+    // than max_step_cuts halvings of one step.
+    const double bracket =
+      resolution * std::max(std::abs(target()), std::abs(increments.front()));
+    return std::abs(target() - accepted) <= bracket ||
+           step_cuts == max_step_cuts;
+  }
+
+
   LoadStepping::Next
   LoadStepping::report(const StepResult &result)
   {
@@ -70,16 +85,9 @@ namespace thinlayer
 
     if (automatic())
       {
-        // Bracketed to the resolution of the load factor, or of the first
-        // increment where the collapse load is near zero; and never more
-        // than max_step_cuts halvings of one step.
-        const double attempted = target() - accepted;
-        const double bracket =
-          resolution *
-          std::max(std::abs(target()), std::abs(increments.front()));
-        if (std::abs(attempted) <= bracket || step_cuts == max_step_cuts)
+        if (failure_is_final())
           return Next::stop;
-        increment = attempted / 2;
+        increment = (target() - accepted) / 2;
         ++step_cuts;
         return Next::retry;
       }

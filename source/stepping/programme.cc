@@ -67,7 +67,9 @@ namespace thinlayer
                           p.solver.max_iterations / 4);
     while (!stepping.finished())
       {
-        const Attempt a = attempt(stepping.step(), stepping.target());
+        const Attempt a = attempt(stepping.step(),
+                                  stepping.target(),
+                                  stepping.failure_is_final());
         // A signal stopped the step: it is neither a failure nor a
         // result, so it is not recorded; the accepted steps are the run.
         if (interrupted())
@@ -127,7 +129,9 @@ namespace thinlayer
 
   template <int dim>
   typename Programme<dim>::Attempt
-  Programme<dim>::attempt(const unsigned int step, const double load_factor)
+  Programme<dim>::attempt(const unsigned int step,
+                          const double       load_factor,
+                          const bool         final)
   {
     Attempt a{step, load_factor, {}, 0, 0, false, false};
     {
@@ -136,7 +140,7 @@ namespace thinlayer
                                   step,
                                   load_factor,
                                   p.output.progress_interval);
-      a.result            = solver.solve(load_factor);
+      a.result            = solver.solve(load_factor, final);
       a.load              = monitors.load();
       result.displacement = monitors.displacement();
     }
@@ -246,7 +250,8 @@ namespace thinlayer
     const double probe_load_factor =
       failed.load_factor +
       (failed.load_factor - result.last_converged_load_factor);
-    const Attempt probe = attempt(failed.step + 1, probe_load_factor);
+    const Attempt probe =
+      attempt(failed.step + 1, probe_load_factor, /*final=*/true);
     record(probe, LoadStepping::Next::stop, true);
     if ((!probe.result.converged || probe.on_mechanism) &&
         shows_mechanism(probe.stiffness_ratio, probe.result.growth_ratio))

@@ -18,8 +18,9 @@ namespace thinlayer
 
   template <int dim>
   StepResult
-  StepSolver<dim>::solve(const double load_factor)
+  StepSolver<dim>::solve(const double load_factor, const bool final)
   {
+    method->set_final_attempt(final);
     StepResult       result = method->solve_step(load_factor);
     const StateCheck check  = analysis.end_attempt(load_factor);
     result.max_yield_ratio  = check.max_yield_ratio;

@@ -12,7 +12,11 @@
 //   with Solver/Continue after failure it is accepted and the programme
 //   goes on;
 // - a non-finite result ends the run at once, whatever r;
-// - a programme without failures attempts exactly its own load factors.
+// - a programme without failures attempts exactly its own load factors;
+// - failure_is_final() says beforehand, at every attempt, whether a failure
+//   there is kept (ends the run, or is accepted and the programme goes on)
+//   rather than cut back: what the solution method is told, so that it runs
+//   such an attempt to its iteration limit.
 #include <thinlayer/stepping/load_stepping.h>
 
 #include <cmath>
@@ -27,6 +31,9 @@ using truths::expect;
 
 namespace
 {
+  /// Failed attempts whose end failure_is_final() did not foretell.
+  unsigned int final_mispredicted = 0;
+
   StepResult
   result(const bool converged, const unsigned int iterations)
   {
@@ -63,7 +70,10 @@ namespace
       {
         target               = stepping.target();
         const bool converged = target <= limit * (1 + 1e-14);
+        const bool final     = stepping.failure_is_final();
         const auto next      = stepping.report(result(converged, iterations));
+        if (!converged && (next != LoadStepping::Next::retry) != final)
+          ++final_mispredicted;
         if (print)
           std::printf("    attempt at %.6g: %s\n",
                       target,
@@ -171,6 +181,12 @@ main()
              attempted[1] == 0.3 + 0.3 && attempted[2] == 0.3 + 0.3 + 0.1,
            "attempts exactly the programme's running sums");
   }
+
+  std::cout << "* every run above\n";
+  expect(final_mispredicted == 0,
+         "failure_is_final() foretold, before each failed attempt, whether "
+         "it would be kept (ending the run, or accepted) rather than cut "
+         "back");
 
   return truths::conclude();
 }

@@ -26,6 +26,18 @@ namespace thinlayer
     void
     initialize() override;
 
+    /**
+     * Give an attempt up as soon as its rate of convergence over the last
+     * ten iterations says it will not converge within its iteration limit
+     * (ConvergenceWatch::predicted_iterations()), rather than at the
+     * limit: for a part of a method that has a costlier way to finish the
+     * step (NewtonFallbackMethod). On its own the method runs every
+     * attempt to its limit, where the growth of the displacement is the
+     * evidence of a mechanism.
+     */
+    void
+    give_up_when_slow();
+
   protected:
     bool
     iterate(const double   target,
@@ -36,6 +48,9 @@ namespace thinlayer
     void
     start_attempt() override;
 
+    bool
+    gives_up(const ConvergenceWatch &watch) const override;
+
   private:
     AndersonAcceleration<ModeVector> anderson;
     /// The step increments of all modes and their corrections, each rank's
@@ -43,6 +58,7 @@ namespace thinlayer
     /// m * n_dofs + i): the vectors Anderson acceleration works on.
     ModeVector stacked_increment;
     ModeVector stacked_correction;
+    bool       slow_attempts_given_up = false;
   };
 } // namespace thinlayer
 

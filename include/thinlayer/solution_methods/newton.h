@@ -55,6 +55,18 @@ namespace thinlayer
     ResidualNorms
     starting_residual(const double target) override;
 
+    /**
+     * When the residual stagnates (ConvergenceWatch::stagnating()): six
+     * iterations that did not halve the best residual before them. While
+     * a thin layer's set of yielding points settles, Newton's residual
+     * wanders for a few iterations before it falls (four gave up a step
+     * of Case 2 at aspect ratio 1000 that converges); an attempt given up
+     * is only ever one the stepping halves anyway
+     * (SolutionMethod::set_final_attempt()).
+     */
+    bool
+    gives_up(const ConvergenceWatch &watch) const override;
+
 
   private:
     /// Assemble and factorise the tangent; false if it is singular.

@@ -47,6 +47,11 @@ namespace thinlayer
     void
     state_rejected() override;
 
+    /// Newton's attempt is the one a final failure shows; the accelerated
+    /// part may give up early whatever (Newton takes the step over).
+    void
+    set_final_attempt(const bool final) override;
+
   private:
     /// The solver parameters of the accelerated method: its iteration
     /// limit capped (accelerated_budget in the source).

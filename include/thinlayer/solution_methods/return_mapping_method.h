@@ -4,6 +4,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <thinlayer/analysis/analysis.h>
+#include <thinlayer/solution_methods/convergence_watch.h>
 #include <thinlayer/solution_methods/solution_method.h>
 #include <thinlayer/stepping/growth_monitor.h>
 
@@ -99,6 +100,14 @@ namespace thinlayer
     virtual ResidualNorms
     starting_residual(const double target);
 
+    /**
+     * Whether to end the attempt, as failed, before its iteration limit,
+     * from the residuals so far (@p watch): never, unless a method knows
+     * better.
+     */
+    virtual bool
+    gives_up(const ConvergenceWatch &watch) const;
+
 
     /**
      * Stresses at every point and station by return mapping of the trial
@@ -128,7 +137,8 @@ namespace thinlayer
     ModeVectors residual;
 
   private:
-    GrowthMonitor growth;
+    GrowthMonitor    growth;
+    ConvergenceWatch watch;
 
     /**
      * The secant predictor: each mode's increment of the last accepted

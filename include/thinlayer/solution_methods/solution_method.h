@@ -60,6 +60,17 @@ namespace thinlayer
     state_rejected();
 
     /**
+     * Whether a failure of the next step would be final (the stepping
+     * cuts it back no more): the failed state is then the evidence of
+     * how the run ended (a mechanism, by its growth and secant
+     * stiffness), so the method runs to its iteration limit. Otherwise a
+     * method may give a hopeless attempt up early (ReturnMappingMethod::
+     * gives_up()): the stepping halves it anyway.
+     */
+    virtual void
+    set_final_attempt(const bool final);
+
+    /**
      * Tell @p composite, rather than this method, when the method accepts
      * a converged part of a step in the analysis: for a method that is part
      * of another (NewtonFallbackMethod), whose parts all keep state of the
@@ -71,6 +82,8 @@ namespace thinlayer
   protected:
     /// The method to tell of a converged part of a step it accepted.
     SolutionMethod<dim> *acceptance_listener = this;
+    /// set_final_attempt(): attempts run to their iteration limit.
+    bool final_attempt = true;
   };
 
   /**

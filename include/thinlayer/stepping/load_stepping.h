@@ -76,6 +76,16 @@ namespace thinlayer
     automatic() const;
 
     /**
+     * Whether a failure of the attempt at target() would be final: no
+     * cut-back follows (the programme as given, or a step already at the
+     * collapse resolution). Such an attempt is the evidence of how the run
+     * ended, so its method runs it to its iteration limit rather than
+     * giving it up early (SolutionMethod::set_final_attempt()).
+     */
+    bool
+    failure_is_final() const;
+
+    /**
      * Take the result of the attempt at target() and say what to do with
      * its state. A non-finite result always stops the run.
      */

@@ -73,9 +73,12 @@ namespace thinlayer
       bool against_load;
     };
 
-    /// Solve the step to @p load_factor and measure it.
+    /// Solve the step to @p load_factor and measure it; @p final: a
+    /// failure would not be cut back (LoadStepping::failure_is_final()).
     Attempt
-    attempt(const unsigned int step, const double load_factor);
+    attempt(const unsigned int step,
+            const double       load_factor,
+            const bool         final);
 
     /// Its row in history.csv, its fields unless it is to be retried,
     /// and its line on screen.

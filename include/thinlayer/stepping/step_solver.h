@@ -34,10 +34,11 @@ namespace thinlayer
      * shows the mechanism) is the analysis's current one, and stays
      * pending until accept() or reject(). A step whose displacements,
      * stresses or forces are not finite has not converged
-     * (StepResult::non_finite).
+     * (StepResult::non_finite). @p final: a failure would end the run
+     * (SolutionMethod::set_final_attempt()).
      */
     StepResult
-    solve(const double load_factor);
+    solve(const double load_factor, const bool final = true);
 
     /// Make the pending state the accepted one.
     void
