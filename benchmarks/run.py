@@ -27,11 +27,10 @@ case with its recommended method, and for Case 3 the harmonics {1}, {1,3},
 {1,3,5}, into ladder.csv/.md/.png. --stability runs the Case 1 stability
 maps (adhesive and frictional, aspect ratio x TOL) with every method, into
 output/benchmarks/stability/ (a map per material and method, and
-stability.md summing them up). --performance times Prandtl's strip footing
-with 2048 and 8192 Q8 elements to collapse: the paper's method on fixed
-steps (the file's programme, and seven coarse steps), and the default method
-with automatic stepping, its time against the paper's in the same run
-(performance.md).
+stability.md summing them up). --performance is benchmarks/performance.py
+on 2048, 8192 and 32768 cells: the time to bracket Prandtl's collapse load
+by the paper's method (fixed programme and automatic stepping) and the
+default method, with their work and the fitted growth of time with size.
 Peak memory is the maximum resident set size reported by /usr/bin/time
 (about 170 MB of it are the libraries deal.II loads). THINLAYER in the
 environment names another binary (so that a build can go on meanwhile).
@@ -239,7 +238,8 @@ def main():
     which.add_argument("--ladder", action="store_true", help="the cost ladder")
     which.add_argument("--stability", action="store_true", help="the Case 1 stability maps")
     which.add_argument("--performance", action="store_true",
-                       help="Prandtl with 2048 and 8192 elements")
+                       help="time to answer on Prandtl, 2048 to 32768 elements "
+                       "(benchmarks/performance.py)")
     parser.add_argument("--output", default=OUT, help="the results directory (default %(default)s)")
     arguments = parser.parse_args()
     OUT = os.path.abspath(arguments.output)
@@ -254,7 +254,8 @@ def main():
         stability()
         return
     if arguments.performance:
-        performance(repeat)
+        from benchmarks import performance
+        performance.performance((2048, 8192, 32768), repeat)
         return
     benchmark(arguments.quick, repeat)
 
@@ -436,63 +437,6 @@ def stability():
     with open(os.path.join(OUT, "stability", "stability.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))
-
-
-# The performance runs: (label, solver entries, TOL, load programme,
-# collapse resolution). The paper's method on fixed steps: the file's
-# programme (0.5, 3*0.1, 20*0.01, 10*0.02), or seven coarse steps that
-# bracket collapse as the paper's analyses did, the first failed step
-# ending the run; the default method (no solver entry) with automatic
-# stepping to 0.5%.
-PAPER = ("Solver/Method=viscoplastic", "Solver/Convergence criterion=body loads")
-DEFAULT = ("Solver/Method=accelerated with newton fallback",
-           "Solver/Convergence criterion=default")
-PERFORMANCE_RUNS = [
-    ("paper's method, fixed steps", PAPER, "1e-4", None, "0"),
-    ("paper's method, 7 fixed steps", PAPER, "1e-3", "0.5, 0.3, 0.1, 0.05, 0.05, 0.02, 0.02", "0"),
-    ("default, automatic stepping", DEFAULT, "1e-4", None, "0.005"),
-]
-
-
-def performance(repeat):
-    """Prandtl with 2048 and 8192 Q8 elements to collapse: the default
-    method against the paper's on its fixed steps, in the same run."""
-    meshes = {2048: "half_width=1, width=5, depth=3, n_footing=24, n_side=40, n_depth=32, growth=1.05",
-              8192: "half_width=1, width=5, depth=3, n_footing=48, n_side=80, n_depth=64, growth=1.025"}
-    rows = []
-    for cells, geometry in meshes.items():
-        paper_time = None
-        for k, (label, entries, tol, programme, resolution) in enumerate(PERFORMANCE_RUNS):
-            directory = os.path.join(OUT, "runs", "performance-%d-%d" % (cells, k))
-            extra = entries + ("Loading/Collapse resolution=" + resolution,)
-            if programme:
-                extra += ("Loading/Load increments=" + programme,)
-            summary, median, peak = median_run("prm/prandtl-strip-footing.prm", geometry, "cholmod",
-                                               tol, directory, repeat, extra)
-            if paper_time is None:
-                paper_time = median
-            row = {"cells": summary["cells"], "equations": summary["equations"], "run": label,
-                   "tolerance": tol, "load_programme": programme or "file's",
-                   "outcome": summary["outcome"], "reason": summary["reason"],
-                   "relative_error": results.collapse_error(summary),
-                   "last_converged_error": (summary["last_converged_load"] - summary["reference_load"])
-                   / summary["reference_load"],
-                   "total_iterations": summary["total_iterations"], "wall_median_s": median,
-                   "against_paper_fixed_steps": median / paper_time,
-                   "seconds_per_iteration": summary["seconds_per_iteration"],
-                   "seconds_per_substitution": summary["seconds_per_substitution"],
-                   "peak_memory_mb": peak}
-            rows.append(row)
-            print(row, flush=True)
-    write_results(rows, "performance",
-                  "| cells | equations | run | TOL | load programme | outcome | error (collapse) "
-                  "| error (last converged) | iterations | wall s (median) | time / paper's fixed steps "
-                  "| ms per iteration | peak MB |",
-                  lambda r: "| %d | %d | %s | %s | %s | %s | %s | %+.2f%% | %d | %.2f | %.2f | %.2f | %.1f |" % (
-                      r["cells"], r["equations"], r["run"], r["tolerance"], r["load_programme"],
-                      r["outcome"], percent(r["relative_error"]), 100 * r["last_converged_error"],
-                      r["total_iterations"], r["wall_median_s"], r["against_paper_fixed_steps"],
-                      1e3 * r["seconds_per_iteration"], r["peak_memory_mb"]))
 
 
 if __name__ == "__main__":

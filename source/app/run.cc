@@ -249,6 +249,9 @@ namespace thinlayer
       summary.factorisations         = work.factorisations;
       summary.substitutions          = work.substitutions;
       summary.sweeps                 = work.sweeps;
+      if (work.factorisations > 0)
+        summary.seconds_per_factorisation =
+          work.factorisation_seconds / work.factorisations;
       print_outcome(p, run, summary, out);
       if (const ReferenceCheck check = check_reference(p.reference, summary);
           check.checked)

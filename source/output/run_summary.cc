@@ -124,6 +124,7 @@ namespace thinlayer
     , final_displacement(std::numeric_limits<double>::quiet_NaN())
     , final_displacement_min(std::numeric_limits<double>::quiet_NaN())
     , final_displacement_max(std::numeric_limits<double>::quiet_NaN())
+    , seconds_per_factorisation(std::numeric_limits<double>::quiet_NaN())
     , seconds_per_substitution(std::numeric_limits<double>::quiet_NaN())
     , linear_iterations_per_solve(std::numeric_limits<double>::quiet_NaN())
     , seconds_per_iteration(std::numeric_limits<double>::quiet_NaN())

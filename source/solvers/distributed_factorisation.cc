@@ -93,7 +93,8 @@ namespace thinlayer
     const std::vector<IndexSet>            &owned_per_rank)
   {
     ++work_counts().factorisations;
-    const PetscInt error_code =
+    const WorkTimer timer(work_counts().factorisation_seconds);
+    const PetscInt  error_code =
       try_factorize(matrix, owned_per_rank, /*exact_work_space=*/symmetric);
     // In parallel MUMPS schedules its work as it goes, and may need more
     // than its estimate: then once more with its own margin.

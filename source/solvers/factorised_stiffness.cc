@@ -156,6 +156,7 @@ namespace thinlayer
   FactorisedStiffness::factorize(const SparseMatrix<double> &matrix)
   {
     ++work_counts().factorisations;
+    const WorkTimer timer(work_counts().factorisation_seconds);
     if (method == Method::umfpack)
       {
         factorize_umfpack(matrix);

@@ -1,6 +1,8 @@
 #ifndef thinlayer_base_work_counts_h
 #define thinlayer_base_work_counts_h
 
+#include <chrono>
+
 namespace thinlayer
 {
   /**
@@ -19,6 +21,11 @@ namespace thinlayer
     unsigned long factorisations = 0;
     unsigned long substitutions  = 0;
     unsigned long sweeps         = 0;
+    /// The wall time of the factorisations (numerical and, where it is
+    /// redone, symbolic), tangents and elastic stiffness alike: with the
+    /// substitution's, the floors a method's time per iteration is
+    /// measured against.
+    double factorisation_seconds = 0;
 
     /// The work done since @p earlier.
     WorkCounts
@@ -26,8 +33,32 @@ namespace thinlayer
     {
       return {factorisations - earlier.factorisations,
               substitutions - earlier.substitutions,
-              sweeps - earlier.sweeps};
+              sweeps - earlier.sweeps,
+              factorisation_seconds - earlier.factorisation_seconds};
     }
+  };
+
+
+  /// Adds the wall time of its scope to @p seconds (a WorkCounts field),
+  /// also when the scope ends by an exception (a singular matrix).
+  class WorkTimer
+  {
+  public:
+    explicit WorkTimer(double &seconds)
+      : seconds(seconds)
+      , start(std::chrono::steady_clock::now())
+    {}
+
+    ~WorkTimer()
+    {
+      seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+          .count();
+    }
+
+  private:
+    double                                     &seconds;
+    const std::chrono::steady_clock::time_point start;
   };
 
   /**

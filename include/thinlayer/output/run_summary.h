@@ -66,8 +66,10 @@ namespace thinlayer
     unsigned int factorisations = 0;
     unsigned int substitutions  = 0;
     unsigned int sweeps         = 0;
-    std::string  method;
-    double       seconds_per_substitution;
+    /// The mean wall time of those factorisations (NaN: none).
+    double      seconds_per_factorisation;
+    std::string method;
+    double      seconds_per_substitution;
     /// With an iterative linear solver, its mean iterations per solve
     /// (NaN with factors).
     double linear_iterations_per_solve;
@@ -145,6 +147,7 @@ namespace thinlayer
       visitor("factorisations", factorisations);
       visitor("substitutions", substitutions);
       visitor("sweeps", sweeps);
+      visitor("seconds_per_factorisation", seconds_per_factorisation);
       visitor("method", method);
       visitor("seconds_per_substitution", seconds_per_substitution);
       visitor("linear_iterations_per_solve", linear_iterations_per_solve);

@@ -1,0 +1,186 @@
+#!/usr/bin/python3
+"""Time to answer: Prandtl's strip footing bracketed to collapse, per mesh size.
+
+    /usr/bin/python3 -m benchmarks.performance [--cells 2048,8192,32768] [--repeat 3]
+    (also: /usr/bin/python3 -m benchmarks.run --performance)
+
+For every mesh size (cells of thinlayer_tools.cases.PRANDTL_SIZES) three ways
+to the collapse load (2 + pi)c:
+- the paper's method on the file's fixed load programme (0.5, 3*0.1, 20*0.01,
+  10*0.02), TOL 1e-4, the first failed step ending the run;
+- the paper's method with automatic stepping, bracketed to 0.5%;
+- the default method (no Solver/Method) with automatic stepping, to 0.5%.
+Each row gives the outcome and bracket, the error of the collapse load, the
+work (iterations, factorisations, substitutions, sweeps over the Gauss
+points), the median wall time of --repeat runs and its ratio to the paper's
+fixed programme, ms per iteration against the floors (one substitution,
+one factorisation) and the peak memory; then the exponent of a least-squares
+fit of time against equations per way, over the sizes run. Into
+output/benchmarks/ (or --output): performance.csv, performance.md (printed
+too) and performance.png (time against equations, log-log, the ways as
+series, one substitution and one factorisation drawn as the floors).
+Results are measurements, not tests: quote them with the machine.
+"""
+import argparse
+import math
+import os
+
+from thinlayer_tools import cases, results
+
+from benchmarks import run as common
+
+PAPER = ("Solver/Method=viscoplastic", "Solver/Convergence criterion=body loads")
+DEFAULT = ()
+# label, solver entries, load programme (None: the file's), resolution.
+WAYS = [
+    ("paper's method, fixed programme", PAPER, "0"),
+    ("paper's method, automatic stepping", PAPER, "0.005"),
+    ("default method, automatic stepping", DEFAULT, "0.005"),
+]
+TOLERANCE = "1e-4"
+PRM = "prm/prandtl-strip-footing.prm"
+
+
+def fit_exponent(points):
+    """The slope of log(time) against log(equations), least squares; None
+    with fewer than two sizes."""
+    if len(points) < 2:
+        return None
+    xs = [math.log(e) for e, _ in points]
+    ys = [math.log(t) for _, t in points]
+    mx, my = sum(xs) / len(xs), sum(ys) / len(ys)
+    sxx = sum((x - mx) ** 2 for x in xs)
+    return sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sxx
+
+
+def measure(sizes, repeat):
+    rows = []
+    for cells in sizes:
+        geometry = cases.PRANDTL_SIZES[cells]
+        paper_time = None
+        for k, (label, entries, resolution) in enumerate(WAYS):
+            directory = os.path.join(common.OUT, "runs", "performance-%d-%d" % (cells, k))
+            extra = entries + ("Loading/Collapse resolution=" + resolution,)
+            summary, median, peak = common.median_run(PRM, geometry, "cholmod", TOLERANCE,
+                                                      directory, repeat, extra)
+            if paper_time is None:
+                paper_time = median
+            failed = summary["first_failed_load"]
+            reference = summary["reference_load"]
+            rows.append({
+                "cells": summary["cells"], "equations": summary["equations"], "way": label,
+                "method": summary["method"], "outcome": summary["outcome"],
+                "bracket_low": summary["last_converged_load"] / reference,
+                "bracket_high": failed / reference if failed is not None else None,
+                "relative_error": results.collapse_error(summary),
+                "total_iterations": summary["total_iterations"],
+                "factorisations": summary["factorisations"],
+                "substitutions": summary["substitutions"], "sweeps": summary["sweeps"],
+                "wall_median_s": median, "runs": repeat,
+                "against_paper_fixed": median / paper_time,
+                "ms_per_iteration": 1e3 * summary["seconds_per_iteration"],
+                "ms_per_substitution": 1e3 * summary["seconds_per_substitution"],
+                "ms_per_factorisation": 1e3 * (summary["seconds_per_factorisation"] or math.nan),
+                "peak_memory_mb": peak})
+            print(rows[-1], flush=True)
+    return rows
+
+
+def table(rows):
+    header = ("| cells | equations | way | outcome | bracket / (2+pi)c | iterations "
+              "| factorisations | substitutions | sweeps | wall s (median) "
+              "| time / paper's fixed | ms per iteration | ms per substitution "
+              "| ms per factorisation | peak MB |")
+
+    def bracket(r):
+        if r["bracket_high"] is None:
+            return "%.4f, none failed" % r["bracket_low"]
+        return "%.4f - %.4f" % (r["bracket_low"], r["bracket_high"])
+
+    common.write_results(
+        rows, "performance", header,
+        lambda r: "| %d | %d | %s | %s | %s | %d | %d | %d | %d | %.2f | %.2f | %.1f | %.2f | %s "
+                  "| %.0f |" % (
+                      r["cells"], r["equations"], r["way"], r["outcome"], bracket(r),
+                      r["total_iterations"], r["factorisations"], r["substitutions"],
+                      r["sweeps"], r["wall_median_s"], r["against_paper_fixed"],
+                      r["ms_per_iteration"], r["ms_per_substitution"],
+                      "-" if math.isnan(r["ms_per_factorisation"])
+                      else "%.1f" % r["ms_per_factorisation"],
+                      r["peak_memory_mb"]))
+    lines = ["", "| way | exponent of time against equations | sizes |", "|---|---|---|"]
+    for label, _, _ in WAYS:
+        points = [(r["equations"], r["wall_median_s"]) for r in rows if r["way"] == label]
+        exponent = fit_exponent(points)
+        lines.append("| %s | %s | %d |" % (label, "%.2f" % exponent if exponent else "-",
+                                           len(points)))
+    print("\n".join(lines))
+    with open(os.path.join(common.OUT, "performance.md"), "a") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+def chart(rows):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(6.4, 4.6))
+    for (label, _, _), style in zip(WAYS, ("o-", "s--", "^-")):
+        shown = [r for r in rows if r["way"] == label]
+        ax.plot([r["equations"] for r in shown], [r["wall_median_s"] for r in shown], style,
+                label=label)
+    # The floors: one substitution (the paper's runs) and one factorisation
+    # (the default method's tangents), per size.
+    substitution = [r for r in rows if r["way"] == WAYS[0][0]]
+    factorisation = [r for r in rows if r["way"] == WAYS[2][0]
+                     and not math.isnan(r["ms_per_factorisation"])]
+    ax.plot([r["equations"] for r in substitution],
+            [1e-3 * r["ms_per_substitution"] for r in substitution], ":", color="grey",
+            label="one substitution")
+    ax.plot([r["equations"] for r in factorisation],
+            [1e-3 * r["ms_per_factorisation"] for r in factorisation], "-.", color="grey",
+            label="one factorisation")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("equations")
+    ax.set_ylabel("wall time to a 0.5% bracket of (2 + pi)c [s] (median)")
+    ax.set_title("Prandtl's strip footing: time to answer", fontsize=9)
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(common.OUT, "performance.png"), dpi=100)
+
+
+def performance(sizes, repeat):
+    os.makedirs(common.OUT, exist_ok=True)
+    rows = measure(sizes, repeat)
+    table(rows)
+    chart(rows)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--cells", default="2048,8192,32768",
+                        help="the mesh sizes, from %s (default %%(default)s)"
+                        % ",".join(str(c) for c in cases.PRANDTL_SIZES))
+    parser.add_argument("--repeat", type=int, default=3,
+                        help="runs of each; times are their median (default 3)")
+    parser.add_argument("--output", default=common.OUT,
+                        help="the results directory (default %(default)s)")
+    arguments = parser.parse_args()
+    try:
+        sizes = [int(c) for c in arguments.cells.split(",")]
+    except ValueError:
+        parser.error("--cells: expected whole numbers separated by commas")
+    unknown = [c for c in sizes if c not in cases.PRANDTL_SIZES]
+    if unknown:
+        parser.error("--cells: no Prandtl mesh of %s cells (expected some of %s)"
+                     % (unknown, ", ".join(str(c) for c in cases.PRANDTL_SIZES)))
+    if arguments.repeat < 1:
+        parser.error("--repeat: expected at least 1")
+    common.OUT = os.path.abspath(arguments.output)
+    performance(sizes, arguments.repeat)
+
+
+if __name__ == "__main__":
+    main()
