@@ -23,7 +23,7 @@ import time
 
 from thinlayer_tools import THINLAYER, TOP, mpirun, run_module
 from thinlayer_tools.report import (case1, case4, footings, methods, page, parallel, scaling,
-                                    solid)
+                                    solid, speed)
 from thinlayer_tools.report.runs import DEFAULT, PAPER, Runs
 
 ALL_ALPHAS = "alpha = 10, 20, 30, 40, 45, 50, 60, 70, 80"
@@ -88,6 +88,12 @@ def run_list(quick):
                             ("frictional", "case1-frictional-stability-map")):
         for method in (("viscoplastic", "default") if quick else METHOD_NAMES):
             runs.append(("map-%s-%s" % (material, method), scene, METHOD_NAMES[method]))
+    # Why thinner layers needed tighter tolerances: the paper's method on the
+    # adhesive map, one change at a time.
+    runs += [("hypothesis-%s-%s" % (material, name), scene, PAPER + overrides)
+             for material, scene in (("adhesive", "case1-stability-map"),
+                                     ("frictional", "case1-frictional-stability-map"))
+             for name, _, overrides in methods.HYPOTHESES]
     return runs
 
 
@@ -124,6 +130,15 @@ def run_benchmark(directory, quick):
         sys.exit("reproduce: the benchmark failed")
 
 
+def run_performance(directory, quick):
+    """benchmarks/performance.py's time to answer into DIR/benchmarks."""
+    arguments = ["--output", os.path.join(directory, "benchmarks")] + \
+        speed.benchmark_arguments(quick)
+    print("benchmark: python3 -m benchmarks.performance " + " ".join(arguments), flush=True)
+    if run_module("benchmarks.performance", arguments).returncode != 0:
+        sys.exit("reproduce: the time-to-answer benchmark failed")
+
+
 def run_fourier_vs_3d(directory, quick):
     """benchmarks/fourier_vs_3d.py's Case 3 by harmonics and in 3D into
     DIR/benchmarks."""
@@ -137,6 +152,7 @@ def run_fourier_vs_3d(directory, quick):
 def sections(runs, quick):
     return (case1.sections(runs, quick) + footings.sections(runs, quick)
             + case4.sections(runs, quick) + methods.sections(runs, quick)
+            + speed.sections(runs, quick)
             + parallel.sections(runs, quick) + scaling.sections(runs, quick)
             + solid.sections(runs, quick))
 
@@ -163,6 +179,7 @@ def main():
         os.makedirs(os.path.join(work, "logs"))
         run_all(run_list(arguments.quick), work)
         run_benchmark(work, arguments.quick)
+        run_performance(work, arguments.quick)
         run_fourier_vs_3d(work, arguments.quick)
     runs = Runs(work)
     print("report: drawing the figures", flush=True)

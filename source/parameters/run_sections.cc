@@ -243,6 +243,16 @@ namespace thinlayer
                       "with Loading/Collapse resolution = 0 (the programme "
                       "as given); automatic stepping always ends the run "
                       "at the bracketed collapse.");
+    prm.declare_entry("Single precision",
+                      "false",
+                      Patterns::Bool(),
+                      "An experiment on why the paper's thinner layers "
+                      "needed tighter tolerances (viscoplastic method "
+                      "only): the step's displacement increments and body "
+                      "loads rounded to 32-bit reals at every iteration, "
+                      "as codes of the paper's time held them; the "
+                      "factorisation and the point rules stay in double "
+                      "precision. Not for results.");
     prm.leave_subsection();
   }
 
@@ -286,6 +296,13 @@ namespace thinlayer
                          prm.get("Tolerance"));
     max_iterations         = prm.get_integer("Maximum iterations");
     continue_after_failure = prm.get_bool("Continue after failure");
+    single_precision       = prm.get_bool("Single precision");
+    if (single_precision && method != Method::viscoplastic)
+      throw InputError(file,
+                       "Solver/Single precision",
+                       "false unless Solver/Method is viscoplastic (the "
+                       "experiment rounds that method's displacements and "
+                       "body loads)");
     linear_solver = linear_solver_names.value(prm.get("Linear solver"));
     linear_solver_tolerance =
       positive(prm, "Linear solver tolerance", file, "Solver");

@@ -6,6 +6,22 @@
 
 namespace thinlayer
 {
+  namespace
+  {
+    /**
+     * The nearest 32-bit real of each entry this rank owns: what a code
+     * that stores a vector in single precision keeps of it
+     * (Solver/Single precision).
+     */
+    void
+    round_to_single(ModeVector &v)
+    {
+      for (unsigned int i = 0; i < v.locally_owned_size(); ++i)
+        v.local_element(i) = static_cast<float>(v.local_element(i));
+    }
+  } // namespace
+
+
   template <int dim>
   ViscoplasticMethod<dim>::ViscoplasticMethod(
     const SolverParameters &parameters,
@@ -42,6 +58,8 @@ namespace thinlayer
         const ModeSystem &mode = analysis.mode_system(m);
         mode.distribute(increments[m]);
         increments[m].add(dlambda, mode.unit_prescribed_displacement);
+        if (parameters.single_precision)
+          round_to_single(increments[m]);
       }
   }
 
@@ -86,6 +104,8 @@ namespace thinlayer
             // the criterion reads them with no copy.
             analysis.mode_system(m).condense(body_load_change[m]);
             body_loads[m] += body_load_change[m];
+            if (parameters.single_precision)
+              round_to_single(body_loads[m]);
             if (body_load_criterion)
               {
                 change = std::max(change, body_load_change[m].linfty_norm());

@@ -219,6 +219,12 @@ namespace
            "Solver/Convergence criterion=body loads"});
     check("the body-load criterion with the default method (Newton fallback)",
           {"good.prm", "-s", "Solver/Convergence criterion=body loads"});
+    check("single precision with Newton",
+          {"good.prm",
+           "-s",
+           "Solver/Method=newton",
+           "-s",
+           "Solver/Single precision=true"});
   }
 
 

@@ -94,7 +94,11 @@ namespace thinlayer
     double               tolerance;
     unsigned int         max_iterations;
     bool                 continue_after_failure;
-    LinearSolver         linear_solver;
+    /// The viscoplastic method's displacements and body loads rounded to
+    /// 32-bit reals at every iteration (an experiment on the paper's
+    /// stability finding).
+    bool         single_precision;
+    LinearSolver linear_solver;
     /// AMG-CG: the residual reduction of a solve, and its iteration limit.
     double       linear_solver_tolerance;
     unsigned int linear_solver_iterations;
