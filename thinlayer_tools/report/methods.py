@@ -101,8 +101,8 @@ def stability(runs, quick):
                    "body load with the largest one; in a layer one element thick both scale "
                    "alike with the thickness t (strains ~ 1/t over a volume ~ t), so the "
                    "test's sensitivity is the same for every t. What made the paper's thinner "
-                   "layers need tighter tolerances (precision, its pseudo-time step) its text "
-                   "does not say." % listed)
+                   "layers need tighter tolerances its text does not say; the next section "
+                   "tries the candidates." % listed)
     else:
         finding = ("The loosest TOL at which the paper's method does not drift past the load "
                    "(more than 2%% over it), by aspect ratio: %s." % listed)
