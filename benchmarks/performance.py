@@ -153,10 +153,10 @@ def chart(rows):
     factorisation = [r for r in rows if r["way"] == WAYS[2][0]
                      and not math.isnan(r["ms_per_factorisation"])]
     ax.plot([r["equations"] for r in substitution],
-            [1e-3 * r["ms_per_substitution"] for r in substitution], ":", color="grey",
+            [1e-3 * r["ms_per_substitution"] for r in substitution], "x:", color="grey",
             label="one substitution")
     ax.plot([r["equations"] for r in factorisation],
-            [1e-3 * r["ms_per_factorisation"] for r in factorisation], "-.", color="grey",
+            [1e-3 * r["ms_per_factorisation"] for r in factorisation], "+-.", color="grey",
             label="one factorisation")
     ax.set_xscale("log")
     ax.set_yscale("log")

@@ -35,6 +35,9 @@ HYPOTHESES = [
     ("coarse", "coarser load steps: 0.5, 0.3, 0.2, 0.2 instead of 0.5, 8 x 0.05, 30 x 0.01",
      ("Loading/Load increments=0.5, 0.3, 0.2, 0.2",)),
 ]
+# Their maps' titles.
+SHORT = {"single": "single precision", "displacements": "displacement test",
+         "coarse": "coarse steps"}
 
 
 def category(row):
@@ -149,17 +152,17 @@ def hypotheses(runs, quick):
                              squeeze=False)
     reproducing = {}
     for i, material in enumerate(("adhesive", "frictional")):
-        maps = [(baseline, runs.sweep("map-%s-viscoplastic" % material))]
-        maps += [(label, runs.sweep("hypothesis-%s-%s" % (material, name)))
+        maps = [(baseline, "as the scene", runs.sweep("map-%s-viscoplastic" % material))]
+        maps += [(label, SHORT[name], runs.sweep("hypothesis-%s-%s" % (material, name)))
                  for name, label, _ in HYPOTHESES]
-        for j, (label, rows) in enumerate(maps):
+        for j, (label, short, rows) in enumerate(maps):
             thresholds = drift_threshold(rows)
             table.append([material, label]
                          + ["%g" % thresholds[a] if thresholds.get(a) else "none"
                             for a in ratios] + ["yes" if tightens(thresholds) else "no"])
             if tightens(thresholds):
                 reproducing.setdefault(label, []).append(material)
-            draw_map(axes[i][j], rows, "%s: %s" % (material, label.split(":")[0]))
+            draw_map(axes[i][j], rows, "%s: %s" % (material, short))
     fig.legend(handles=[Patch(color=c, label=t) for c, t in CATEGORIES], loc="lower center",
                ncol=2, fontsize=7)
     fig.tight_layout(rect=(0, 0.08, 1, 1))
