@@ -29,10 +29,11 @@ import math
 import os
 
 from thinlayer_tools import cases, results
+from thinlayer_tools.report.runs import DEFAULT as DEFAULT_METHOD, PAPER
+from thinlayer_tools.report.speed import fit_exponent
 
 from benchmarks import run as common
 
-PAPER = ("Solver/Method=viscoplastic", "Solver/Convergence criterion=body loads")
 # The paper's way: seven coarse fixed steps to 1.04 (2 + pi)c at TOL 1e-3
 # (thinlayer_tools.cases.PAPER_FIXED_STEPS), the first failed step ending
 # the run; the file's own programme of 0.01 steps at TOL 1e-4 stalls at
@@ -40,8 +41,7 @@ PAPER = ("Solver/Method=viscoplastic", "Solver/Convergence criterion=body loads"
 PAPER_FIXED = PAPER + cases.PAPER_FIXED_STEPS
 PAPER_AUTOMATIC = PAPER + ("Solver/Tolerance=1e-3", "Loading/Collapse resolution=0.005")
 # The scene names the paper's method: the default one by name.
-DEFAULT = ("Solver/Method=accelerated with newton fallback",
-           "Solver/Convergence criterion=default", "Loading/Collapse resolution=0.005")
+DEFAULT = DEFAULT_METHOD + ("Loading/Collapse resolution=0.005",)
 # The default method on the paper's seven steps, cut back where they fail:
 # how much of its time is the file's programme of 0.01 steps near collapse.
 DEFAULT_SEVEN = DEFAULT + (cases.PAPER_FIXED_STEPS[1],)
@@ -55,18 +55,6 @@ WAYS = [
 # The default method's tolerance (the paper's ways set theirs).
 TOLERANCE = "1e-4"
 PRM = "prm/prandtl-strip-footing.prm"
-
-
-def fit_exponent(points):
-    """The slope of log(time) against log(equations), least squares; None
-    with fewer than two sizes."""
-    if len(points) < 2:
-        return None
-    xs = [math.log(e) for e, _ in points]
-    ys = [math.log(t) for _, t in points]
-    mx, my = sum(xs) / len(xs), sum(ys) / len(ys)
-    sxx = sum((x - mx) ** 2 for x in xs)
-    return sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sxx
 
 
 def measure(sizes, repeat, skip):

@@ -2,6 +2,7 @@
 Prandtl runs, the default method against the paper's per mesh size, with
 the targets the project set itself checked on the run."""
 import csv
+import math
 import os
 
 from thinlayer_tools import results
@@ -41,9 +42,20 @@ def read(directory):
     return rows
 
 
+def fit_exponent(points):
+    """The slope of log(time) against log(equations) of (equations, time)
+    @p points, least squares; None with fewer than two sizes."""
+    if len(points) < 2:
+        return None
+    xs = [math.log(e) for e, _ in points]
+    ys = [math.log(t) for _, t in points]
+    mx, my = sum(xs) / len(xs), sum(ys) / len(ys)
+    sxx = sum((x - mx) ** 2 for x in xs)
+    return sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sxx
+
+
 def exponent(rows, way):
     """The least-squares exponent of time against equations (None: one size)."""
-    from benchmarks.performance import fit_exponent
     return fit_exponent([(r["equations"], r["wall_median_s"]) for r in rows
                          if r["way"] == way])
 
