@@ -7,6 +7,7 @@
 #include <thinlayer/stepping/step_progress.h>
 
 #include <cmath>
+#include <limits>
 
 namespace thinlayer
 {
@@ -23,7 +24,7 @@ namespace thinlayer
                   const double             load,
                   const double             displacement,
                   const StepResult        &result,
-                  const bool               on_mechanism,
+                  const bool               on_plateau,
                   const LoadStepping::Next next,
                   const bool               probe,
                   const bool               print_iterations,
@@ -31,18 +32,21 @@ namespace thinlayer
     {
       out << "  step " << printf("%4.0f", step) << "  load factor "
           << printf("%10.4g", load_factor);
-      if (on_mechanism)
-        out << "  converged on the mechanism (secant stiffness below "
-            << mechanism_knee_ratio << " of the elastic one): "
-            << (next == LoadStepping::Next::retry ? "cut back"
-                                                  : "not accepted");
-      else if (result.converged)
+      if (on_plateau && next == LoadStepping::Next::retry)
+        out << "  converged on the plateau of the load: cut back (its "
+               "state is in history.csv)";
+      else if (result.converged && next != LoadStepping::Next::retry &&
+               next != LoadStepping::Next::stop)
         out << "  load " << printf("%12.5e", load) << "  displacement "
             << printf("%12.5e", displacement)
             << (print_iterations
                   ? "  iterations " + printf("%4.0f", result.iterations)
                   : std::string())
-            << "  converged";
+            << (on_plateau ? "  converged, on the plateau" : "  converged");
+      else if (result.converged && probe)
+        out << "  probe beyond the failed step: converged (not accepted)";
+      else if (result.converged)
+        out << "  converged against its load: not accepted";
       else if (next == LoadStepping::Next::retry)
         out << "  failed: cut back (its state is in history.csv)";
       else if (result.non_finite)
@@ -79,9 +83,15 @@ namespace thinlayer
             solver.reject();
             break;
           }
-        // A state on the mechanism is cut back like a failed one.
+        // Under load, a step onto the plateau that is longer than the
+        // collapse resolution is cut back like a failed one: the plateau
+        // may begin within it. (Under prescribed displacement the load
+        // hardly changes along the plateau: the programme goes on.)
+        const bool under_load = analysis.has_external_load();
+        const bool plateau_cut =
+          a.on_plateau && under_load && !stepping.failure_is_final();
         StepResult reported           = a.result;
-        reported.converged            = a.result.converged && !a.on_mechanism;
+        reported.converged            = a.result.converged && !plateau_cut;
         const LoadStepping::Next next = stepping.report(reported);
         record(a, next);
         if (next == LoadStepping::Next::retry)
@@ -93,6 +103,15 @@ namespace thinlayer
         if (reported.converged)
           {
             accept(a);
+            // The load has levelled off to the resolution: the collapse
+            // load, reached.
+            if (a.on_plateau && under_load)
+              {
+                result.stopped            = true;
+                result.stopped_on_plateau = true;
+                result.bracket_resolved   = true;
+                break;
+              }
             continue;
           }
         // Non-convergence is a result, not an error.
@@ -104,11 +123,10 @@ namespace thinlayer
             solver.accept();
             continue;
           }
-        result.stopped              = true;
-        result.stopped_on_mechanism = a.on_mechanism;
-        result.against_load         = a.against_load;
-        result.non_finite           = a.result.non_finite;
-        result.failed_load_factor   = a.load_factor;
+        result.stopped            = true;
+        result.against_load       = a.against_load;
+        result.non_finite         = a.result.non_finite;
+        result.failed_load_factor = a.load_factor;
         result.bracket_resolved =
           stepping.automatic() &&
           std::abs(a.load_factor - result.last_converged_load_factor) <=
@@ -133,7 +151,15 @@ namespace thinlayer
                           const double       load_factor,
                           const bool         final)
   {
-    Attempt a{step, load_factor, {}, 0, 0, false, false};
+    Attempt a{step,
+              load_factor,
+              {},
+              0,
+              0,
+              false,
+              std::numeric_limits<double>::quiet_NaN(),
+              false,
+              false};
     {
       TimerOutput::Scope scope(timer, "load steps");
       const StepProgress progress(out,
@@ -163,9 +189,18 @@ namespace thinlayer
         a.result.converged = false;
         a.against_load     = true;
       }
-    a.on_mechanism = a.result.converged && p.loading.collapse_resolution > 0 &&
+    if (a.result.converged)
+      a.slope = plateau_slope(result.last_converged_load,
+                              result.last_converged_displacement,
+                              a.load,
+                              result.displacement.mean);
+    const bool automatic = p.loading.collapse_resolution > 0;
+    a.on_mechanism       = a.result.converged && automatic &&
                      analysis.has_external_load() && a.stiffness_ratio >= 0 &&
                      a.stiffness_ratio < mechanism_knee_ratio;
+    // Under load or prescribed displacement alike.
+    a.on_plateau = a.result.converged && automatic &&
+                   a.slope <= p.loading.collapse_resolution;
     return a;
   }
 
@@ -178,16 +213,15 @@ namespace thinlayer
   {
     {
       TimerOutput::Scope scope(timer, "output");
-      writer.write_history_row(
-        {a.step,
-         result.attempts,
-         a.load_factor,
-         a.load,
-         result.displacement,
-         a.result,
-         !a.on_mechanism && (next == LoadStepping::Next::accept ||
-                             next == LoadStepping::Next::accept_failed),
-         a.stiffness_ratio});
+      writer.write_history_row({a.step,
+                                result.attempts,
+                                a.load_factor,
+                                a.load,
+                                result.displacement,
+                                a.result,
+                                next == LoadStepping::Next::accept ||
+                                  next == LoadStepping::Next::accept_failed,
+                                a.stiffness_ratio});
       if (next != LoadStepping::Next::retry)
         {
           if (p.output.write_vtu)
@@ -213,7 +247,7 @@ namespace thinlayer
                   a.load,
                   result.displacement.mean,
                   a.result,
-                  a.on_mechanism,
+                  a.on_plateau,
                   next,
                   probe,
                   p.output.print_iterations,
@@ -230,12 +264,28 @@ namespace thinlayer
       (a.load_factor - result.last_converged_load_factor);
     if (!result.any_step_converged)
       result.first_stiffness = stiffness;
-    result.last_stiffness             = stiffness;
-    result.last_converged_load        = a.load;
-    result.last_converged_load_factor = a.load_factor;
-    result.converged_displacement     = result.displacement;
-    result.converged_iterations       = result.total_iterations;
-    result.any_step_converged         = true;
+    if (a.on_mechanism && !result.knee_passed && result.any_step_converged)
+      {
+        result.knee_passed = true;
+        result.knee_load   = result.last_converged_load;
+      }
+    if (a.on_plateau && !std::isfinite(result.plateau_load))
+      {
+        result.plateau_load             = a.load;
+        result.plateau_slope            = a.slope;
+        result.plateau_load_factor      = a.load_factor;
+        result.plateau_from_load_factor = result.last_converged_load_factor;
+        result.plateau_load_growth      = a.load / result.last_converged_load;
+        result.plateau_displacement_growth =
+          result.displacement.mean / result.last_converged_displacement;
+      }
+    result.last_stiffness              = stiffness;
+    result.last_converged_load         = a.load;
+    result.last_converged_load_factor  = a.load_factor;
+    result.converged_displacement      = result.displacement;
+    result.last_converged_displacement = result.displacement.mean;
+    result.converged_iterations        = result.total_iterations;
+    result.any_step_converged          = true;
     if (a.result.max_yield_ratio > 10 * p.solver.tolerance)
       ++result.steps_with_drift;
     solver.accept();

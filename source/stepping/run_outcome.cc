@@ -1,8 +1,10 @@
 #include <thinlayer/base/text_format.h>
 #include <thinlayer/stepping/run_outcome.h>
 
+#include <algorithm>
 #include <cmath>
 #include <csignal>
+#include <limits>
 
 // How a run ended: the evidence of a mechanism, and the outcome, its
 // reason and the collapse load that summary.json reports.
@@ -18,11 +20,27 @@ namespace thinlayer
     // predictor it often runs against the load). A method that merely
     // diverges converges again once the step is cut: this is asked of a
     // step that failed at the collapse resolution (or, with the programme
-    // as given, of the step that failed, the paper's collapse). The creep of
-    // a thin layer's curve, where Newton can run away below loads that
-    // still converge, is caught earlier by its knee (mechanism_knee_ratio).
+    // as given, of the step that failed, the paper's collapse).
     return std::abs(stiffness_ratio) < mechanism_stiffness_ratio ||
            growth_ratio >= mechanism_growth_ratio;
+  }
+
+
+  double
+  plateau_slope(const double load_before,
+                const double displacement_before,
+                const double load_after,
+                const double displacement_after)
+  {
+    const double load_growth         = load_after / load_before;
+    const double displacement_growth = displacement_after / displacement_before;
+    // Both ratios of like-signed, non-zero values, and a displacement that
+    // grew: otherwise the slope is no measure of the curve.
+    if (!(load_before != 0 && displacement_before != 0 && load_growth > 0 &&
+          displacement_growth > 1 && std::isfinite(load_growth) &&
+          std::isfinite(displacement_growth)))
+      return std::numeric_limits<double>::quiet_NaN();
+    return std::log(load_growth) / std::log(displacement_growth);
   }
 
 
@@ -45,6 +63,29 @@ namespace thinlayer
                 printf("%.3g", run.growth_ratio) +
                 " over the second half of its iterations";
       return text;
+    }
+
+    /// Where and how the load reached its plateau.
+    std::string
+    plateau(const ProgrammeResult &run)
+    {
+      return "the load reached its plateau at load factor " +
+             printf("%.6g", run.plateau_load_factor) +
+             ": its step from load factor " +
+             printf("%.6g", run.plateau_from_load_factor) +
+             " changed the load " +
+             printf("%+.3g", 100 * (run.plateau_load_growth - 1)) +
+             "% while the displacement grew by a factor " +
+             printf("%.3g", run.plateau_displacement_growth) +
+             " (the curve's log-log slope " +
+             printf("%.2g", run.plateau_slope) +
+             ", at most the collapse resolution: on a curve levelling off "
+             "like a hyperbola that is the fraction of the limit still to "
+             "come, which then lies between " +
+             printf("%.6g", run.plateau_load) + " and " +
+             printf("%.6g",
+                    run.plateau_load / (1 - std::max(0., run.plateau_slope))) +
+             ")";
     }
   } // namespace
 
@@ -74,12 +115,23 @@ namespace thinlayer
                       ? "every load step converged"
                       : "steps that failed were accepted (Solver/Continue "
                         "after failure)";
-        if (!under_load && run.converged &&
-            std::abs(run.last_stiffness) <=
-              plateau_stiffness_ratio * std::abs(run.first_stiffness))
+        if (!under_load && run.converged && std::isfinite(run.plateau_load))
           {
+            s.collapse_load = run.plateau_load;
+            s.reason += "; " + plateau(run);
+          }
+        else if (!under_load && run.converged &&
+                 std::abs(run.last_stiffness) <=
+                   plateau_stiffness_ratio * std::abs(run.first_stiffness))
+          {
+            // Levelled off less sharply than the resolution asks: the
+            // load at the end of the programme.
             s.collapse_load = run.last_converged_load;
-            s.reason += "; the load reached its plateau";
+            s.reason += "; the load levelled off by the end (its last "
+                        "step's stiffness below " +
+                        printf("%g", plateau_stiffness_ratio) +
+                        " of the first step's), though no step's log-log "
+                        "slope fell to the collapse resolution";
           }
         return;
       }
@@ -105,6 +157,12 @@ namespace thinlayer
                  " and no state converged: a collapse load, if this is "
                  "one, lies somewhere below it; expected smaller first "
                  "steps (Loading/Load increments) or automatic stepping";
+    else if (run.stopped_on_plateau)
+      {
+        s.outcome       = "collapse";
+        s.collapse_load = run.plateau_load;
+        s.reason        = plateau(run);
+      }
     else if (shows_mechanism(run.stiffness_ratio, run.growth_ratio))
       {
         s.outcome         = "collapse";
@@ -123,5 +181,11 @@ namespace thinlayer
     else
       s.reason = "the step failed" + at(run.failed_load_factor) +
                  " with no mechanism shown: " + evidence(run);
+    s.knee_load = run.knee_load;
+    if (s.outcome == "collapse" && std::isfinite(run.knee_load))
+      s.reason += "; the knee of the curve (a step's secant stiffness below " +
+                  printf("%g", mechanism_knee_ratio) +
+                  " of the elastic one) came after the load " +
+                  printf("%.6g", run.knee_load);
   }
 } // namespace thinlayer

@@ -32,7 +32,8 @@ namespace run_results
     return "";
   }
 
-  /// The number @p key of @p directory/summary.json (NaN if it has none).
+  /// The number @p key of @p directory/summary.json (NaN if it has none,
+  /// or null).
   inline double
   summary_number(const std::string &directory, const std::string &key)
   {
@@ -40,7 +41,9 @@ namespace run_results
     text << std::ifstream(directory + "/summary.json").rdbuf();
     const std::string json = text.str();
     const auto        at   = json.find("\"" + key + "\": ");
-    return at == std::string::npos
+    // NaN is written as null.
+    return at == std::string::npos ||
+               json.compare(at + key.size() + 4, 4, "null") == 0
              ? NAN
              : std::atof(json.c_str() + at + key.size() + 4);
   }

@@ -40,6 +40,10 @@ namespace thinlayer
     /// collapse; under prescribed displacement, the load's plateau if the
     /// last step reached one; NaN otherwise.
     double collapse_load;
+    /// The knee of the load-displacement curve (mechanism_knee_ratio),
+    /// a serviceability figure beside the collapse load; NaN where the
+    /// curve's secant stiffness never fell below it on an accepted step.
+    double knee_load;
     /// Whether every load step converged.
     bool   converged = false;
     double last_converged_load;
@@ -131,6 +135,7 @@ namespace thinlayer
       visitor("outcome", outcome);
       visitor("reason", reason);
       visitor("collapse_load", collapse_load);
+      visitor("knee_load", knee_load);
       visitor("converged", converged);
       visitor("last_converged_load", last_converged_load);
       visitor("first_failed_load", first_failed_load);

@@ -24,9 +24,13 @@ namespace thinlayer
    * The load programme of a run, attempt by attempt: LoadStepping says
    * which load factor comes next, the StepSolver solves it with the
    * solution method, and the programme measures the attempt (load,
-   * displacement, secant stiffness), decides whether a converged state is
-   * to count as failed (on the mechanism's knee, or moving against its
-   * load), probes beyond a failed step that shows no mechanism, and writes
+   * displacement, secant stiffness, the curve's slope), decides whether a
+   * converged state is to count as failed (moving against its load, or on
+   * the plateau of the load in a step longer than the collapse resolution,
+   * which is cut back so that the plateau's start is bracketed), ends the
+   * run where a step at that resolution reaches the plateau, notes the
+   * knee of the curve, probes beyond a failed step that shows no
+   * mechanism, and writes
    * each attempt's row and fields as it ends, with one line on screen.
    * What the end of the programme means (collapse, plateau, not converged)
    * is judged from its ProgrammeResult by judge_outcome(), with the
@@ -66,9 +70,14 @@ namespace thinlayer
       double       load;
       /// Analysis::secant_stiffness_ratio() of the attempt's state.
       double stiffness_ratio;
-      /// A converged attempt on the mechanism (mechanism_knee_ratio):
-      /// never accepted under automatic stepping.
+      /// A converged attempt below the knee (mechanism_knee_ratio): the
+      /// evidence of a mechanism where it is a probe beyond a failed step.
       bool on_mechanism;
+      /// plateau_slope() of a converged attempt (NaN otherwise), and
+      /// whether it is at most the collapse resolution under load: the
+      /// load has reached its plateau.
+      double slope;
+      bool   on_plateau;
       /// A converged attempt moving against its load: counted as failed.
       bool against_load;
     };

@@ -17,20 +17,37 @@ namespace thinlayer
   constexpr double mechanism_stiffness_ratio = 0.1;
 
   /**
-   * A step that converges under load with a secant stiffness below this
-   * fraction of the elastic one (displacements a hundred times the
-   * elastic response) has reached the mechanism as well: automatic
-   * stepping brackets this knee of the load-displacement curve rather
-   * than accepting states along it. Beyond the knee, a thin layer's
-   * curve can creep on for several per cent of load at a hundredth of
-   * the elastic stiffness and less (Case 2 at aspect ratio 1000: from
-   * 1.03 to 1.10, with displacements 3.7 to 213 times the footing's
-   * elastic 1.6), and how far a method follows that creep depends on its
-   * iteration budget, not on the body; the knee does not (Prandtl's
-   * curve stays above 0.02 of the elastic stiffness to within 0.3% of
-   * (2 + pi)c, so there the knee is the limit load).
+   * The knee of the load-displacement curve: the last accepted state
+   * before the first accepted step whose secant stiffness fell below this
+   * fraction of the elastic one (displacements a hundred times the elastic
+   * response to its load increment). It is reported beside the collapse
+   * load as a serviceability figure, not as the collapse: where a curve
+   * rounds off slowly the load goes on rising past it (a rough rigid
+   * circular footing: about 1% more), and on a curve that levels off like
+   * a hyperbola the knee lies at 90% of the limit.
    */
   constexpr double mechanism_knee_ratio = 0.01;
+
+  /**
+   * The curve's log-log slope over a converged step from the accepted
+   * state (load L0, displacement d0) to (L1, d1):
+   * s = ln(L1 / L0) / ln(d1 / d0); NaN where it is not defined (no load
+   * or no displacement yet, a change of sign, or displacements that did
+   * not grow). On a curve that levels off like a hyperbola,
+   * L = L_lim d / (d + d_0), s = 1 - L / L_lim exactly: s is the fraction
+   * of the limit load still to come. A secant over a step overestimates
+   * the slope at its end on a curve that flattens, so s <= r says that at
+   * most the fraction r is still to come: the load has reached its plateau
+   * to the collapse resolution r, whichever way the body is driven (a load
+   * step of r that at least doubles the displacement, or a prescribed
+   * displacement step under which the load rises by at most r times its
+   * relative length). A load that fell gives s <= 0: past the limit.
+   */
+  double
+  plateau_slope(const double load_before,
+                const double displacement_before,
+                const double load_after,
+                const double displacement_after);
 
   /**
    * Or, for a step stopped by its iteration limit, the change of its
@@ -67,14 +84,40 @@ namespace thinlayer
     double first_stiffness = std::numeric_limits<double>::quiet_NaN();
     double last_stiffness  = std::numeric_limits<double>::quiet_NaN();
     double last_converged_load_factor = 0;
+    /// The load and displacement of the last accepted state.
+    double last_converged_displacement = 0;
+
+    /// The knee (mechanism_knee_ratio): the last accepted load before
+    /// the curve's secant stiffness fell below it (NaN: it never did);
+    /// and whether it has been passed.
+    double knee_load   = std::numeric_limits<double>::quiet_NaN();
+    bool   knee_passed = false;
+    /// The load of the first accepted state on the plateau
+    /// (plateau_slope() at most the collapse resolution; NaN: none), and
+    /// its slope.
+    double plateau_load  = std::numeric_limits<double>::quiet_NaN();
+    double plateau_slope = std::numeric_limits<double>::quiet_NaN();
+    /// The step onto the plateau: its load factor and its starting one,
+    /// and the
+    /// factors by which the load and the displacement grew over it.
+    double plateau_load_factor      = std::numeric_limits<double>::quiet_NaN();
+    double plateau_from_load_factor = std::numeric_limits<double>::quiet_NaN();
+    double plateau_load_growth      = std::numeric_limits<double>::quiet_NaN();
+    double plateau_displacement_growth =
+      std::numeric_limits<double>::quiet_NaN();
 
     /// How a run that a failed step ended, ended.
     bool stopped = false;
     /// Automatic stepping narrowed the failed step to its resolution: the
     /// bracket of a collapse load (also of one at 0).
     bool bracket_resolved = false;
-    /// The step that ended it converged, on the mechanism.
+    /// The step that ended it converged, on the mechanism (a probe that
+    /// converged far down the curve, at a secant stiffness below
+    /// mechanism_knee_ratio).
     bool stopped_on_mechanism = false;
+    /// Under load: the step that ended it converged on the plateau
+    /// (plateau_load), at the collapse resolution.
+    bool stopped_on_plateau = false;
     /// The step that ended it converged to a state moving against its load
     /// (negative secant stiffness): no state the body can reach, since
     /// under a load increment an elastic-plastic body does positive work
