@@ -22,8 +22,8 @@ import sys
 import time
 
 from thinlayer_tools import THINLAYER, TOP, mpirun, run_module
-from thinlayer_tools.report import (case1, case4, footings, methods, page, parallel, scaling,
-                                    solid, speed)
+from thinlayer_tools.report import (case1, case4, footings, limits, methods, page, parallel,
+                                    scaling, solid, speed)
 from thinlayer_tools.report.runs import DEFAULT, PAPER, Runs
 
 ALL_ALPHAS = "alpha = 10, 20, 30, 40, 45, 50, 60, 70, 80"
@@ -73,6 +73,8 @@ def run_list(quick):
         ("case4-zero", "case4-rough-wall-zero-thickness", ("Output/Write VTU=false",)),
     ]
     runs.append(("circular-footing-rigid", "circular-footing-rigid", ("Output/Write VTU=false",)))
+    # The limit, not the knee: rigid footings by load and by settlement.
+    runs += limits.run_list(quick)
     # The same scenes on several MPI ranks (the fourth field), for the
     # section on ranks: every kinematics and element kind, each method kind.
     runs += parallel.ONE_RANK_RUNS
@@ -152,7 +154,7 @@ def run_fourier_vs_3d(directory, quick):
 def sections(runs, quick):
     return (case1.sections(runs, quick) + footings.sections(runs, quick)
             + case4.sections(runs, quick) + methods.sections(runs, quick)
-            + speed.sections(runs, quick)
+            + limits.sections(runs, quick) + speed.sections(runs, quick)
             + parallel.sections(runs, quick) + scaling.sections(runs, quick)
             + solid.sections(runs, quick))
 
