@@ -22,6 +22,13 @@ fit of time against equations per way, over the sizes run. Into
 output/benchmarks/ (or --output): performance.csv, performance.md (printed
 too) and performance.png (time against equations, log-log, the ways as
 series, one substitution and one factorisation drawn as the floors).
+Then, with --scenes, the benchmark scenes with thin layers at their study
+meshes' finest level (2): Case 2 at aspect ratios 1000 and 10000, Case 3 at
+10, each by the paper's method on the file's programme and by the default
+method, with the knee beside the collapse and the most iterations an
+accepted step took away from collapse (below 90% of the collapse load, or
+of the last converged load where there is none): performance-scenes.csv
+and .md.
 Results are measurements, not tests: quote them with the machine.
 """
 import argparse
@@ -157,11 +164,65 @@ def chart(rows):
     fig.savefig(os.path.join(common.OUT, "performance.png"), dpi=100)
 
 
-def performance(sizes, repeat, skip=None):
+# The thin-layer scenes: (case, aspect ratio) at mesh level 2, and the ways.
+SCENES = [("case2", 1000), ("case2", 10000), ("case3", 10)]
+SCENE_WAYS = [("paper", "paper's method, the scene's programme", ()),
+              ("default", "default method", DEFAULT_METHOD)]
+# A step "away from collapse": below this share of the collapse load.
+AWAY = 0.9
+
+
+def most_iterations_away(directory, summary):
+    """The most iterations of an accepted step whose load is below AWAY of
+    the collapse load (of the last converged load where there is none)."""
+    top = results.collapse_load(summary) or summary["last_converged_load"]
+    steps = [r for r in results.states(results.history(directory))
+             if abs(results.number(r["load"])) < AWAY * abs(top)]
+    return max((int(r["iterations"]) for r in steps), default=0)
+
+
+def measure_scenes(repeat):
+    rows = []
+    for case, aspect_ratio in SCENES:
+        geometry = cases.geometry(case, 2, aspect_ratio)
+        for short, label, entries in SCENE_WAYS:
+            name = "performance-%s-%d-%s" % (case, aspect_ratio, short)
+            directory = os.path.join(common.OUT, "runs", name)
+            summary, median, peak = common.median_run(cases.PARAMETER_FILES[case], geometry,
+                                                      "cholmod", "1e-4", directory, repeat,
+                                                      entries)
+            rows.append({
+                "scene": "%s, aspect ratio %d" % (case, aspect_ratio),
+                "equations": summary["equations"], "way": label, "outcome": summary["outcome"],
+                "collapse_load": results.collapse_load(summary),
+                "knee_load": results.number(summary.get("knee_load")),
+                "total_iterations": summary["total_iterations"],
+                "factorisations": summary["factorisations"],
+                "substitutions": summary["substitutions"],
+                "most_iterations_away": most_iterations_away(directory, summary),
+                "wall_median_s": median, "runs": repeat, "peak_memory_mb": peak})
+            print(rows[-1], flush=True)
+    common.write_results(
+        rows, "performance-scenes",
+        "| scene | equations | way | outcome | collapse load | knee | iterations "
+        "| factorisations | substitutions | most iterations a step below %.0f%% of the collapse "
+        "| wall s (median) | peak MB |" % (100 * AWAY),
+        lambda r: "| %s | %d | %s | %s | %s | %s | %d | %d | %d | %d | %.2f | %.0f |" % (
+            r["scene"], r["equations"], r["way"], r["outcome"],
+            "%.4f" % r["collapse_load"] if r["collapse_load"] is not None else "-",
+            "%.4f" % r["knee_load"] if r["knee_load"] == r["knee_load"] else "-",
+            r["total_iterations"], r["factorisations"], r["substitutions"],
+            r["most_iterations_away"], r["wall_median_s"], r["peak_memory_mb"]))
+    return rows
+
+
+def performance(sizes, repeat, skip=None, scenes=False):
     os.makedirs(common.OUT, exist_ok=True)
     rows = measure(sizes, repeat, skip or {})
     table(rows)
     chart(rows)
+    if scenes:
+        measure_scenes(repeat)
 
 
 def main():
@@ -176,6 +237,8 @@ def main():
                         help="ways not to run at a size, as CELLS:K,K;CELLS:K (K counts the "
                         "ways above from 0), e.g. 32768:1 for the paper's method's slow "
                         "automatic stepping on the finest mesh")
+    parser.add_argument("--scenes", action="store_true",
+                        help="also the thin-layer scenes (Case 2 and Case 3, level 2)")
     parser.add_argument("--output", default=common.OUT,
                         help="the results directory (default %(default)s)")
     arguments = parser.parse_args()
@@ -197,7 +260,7 @@ def main():
     except ValueError:
         parser.error("--skip: expected CELLS:K,K;CELLS:K, e.g. 32768:1")
     common.OUT = os.path.abspath(arguments.output)
-    performance(sizes, arguments.repeat, skip)
+    performance(sizes, arguments.repeat, skip, arguments.scenes)
 
 
 if __name__ == "__main__":

@@ -255,7 +255,7 @@ def main():
         return
     if arguments.performance:
         from benchmarks import performance
-        performance.performance((2048, 8192, 32768), repeat)
+        performance.performance((2048, 8192, 32768), repeat, scenes=True)
         return
     benchmark(arguments.quick, repeat)
 
