@@ -25,6 +25,7 @@ namespace thinlayer
                   const double             displacement,
                   const StepResult        &result,
                   const bool               on_plateau,
+                  const bool               doubled,
                   const LoadStepping::Next next,
                   const bool               probe,
                   const bool               print_iterations,
@@ -32,9 +33,12 @@ namespace thinlayer
     {
       out << "  step " << printf("%4.0f", step) << "  load factor "
           << printf("%10.4g", load_factor);
-      if (on_plateau && next == LoadStepping::Next::retry)
-        out << "  converged on the plateau of the load: cut back (its "
-               "state is in history.csv)";
+      if (result.converged && next == LoadStepping::Next::retry)
+        out << (on_plateau ? "  converged on the plateau of the load"
+                : doubled  ? "  converged, more than doubling the "
+                             "displacement"
+                           : "  converged") +
+                 std::string(": cut back (its state is in history.csv)");
       else if (result.converged && next != LoadStepping::Next::retry &&
                next != LoadStepping::Next::stop)
         out << "  load " << printf("%12.5e", load) << "  displacement "
@@ -83,13 +87,16 @@ namespace thinlayer
             solver.reject();
             break;
           }
-        // Under load, a step onto the plateau that is longer than the
-        // collapse resolution is cut back like a failed one: the plateau
-        // may begin within it. (Under prescribed displacement the load
-        // hardly changes along the plateau: the programme goes on.)
-        const bool under_load = analysis.has_external_load();
-        const bool plateau_cut =
-          a.on_plateau && under_load && !stepping.failure_is_final();
+        // Under load, a step longer than the collapse resolution that
+        // lands on the plateau, or whose displacement grows more than
+        // twice as much as its load, is cut back like a failed one: the
+        // plateau may begin within it, and it is judged over a doubling of
+        // the displacement, so the curve wants a state at least every
+        // doubling there. (Under prescribed displacement the load hardly
+        // changes along the plateau: the programme goes on.)
+        const bool under_load  = analysis.has_external_load();
+        const bool plateau_cut = (a.on_plateau || a.doubled) && under_load &&
+                                 !stepping.failure_is_final();
         StepResult reported           = a.result;
         reported.converged            = a.result.converged && !plateau_cut;
         const LoadStepping::Next next = stepping.report(reported);
@@ -159,6 +166,7 @@ namespace thinlayer
               false,
               std::numeric_limits<double>::quiet_NaN(),
               false,
+              false,
               false};
     {
       TimerOutput::Scope scope(timer, "load steps");
@@ -189,18 +197,25 @@ namespace thinlayer
         a.result.converged = false;
         a.against_load     = true;
       }
+    const double displacement = result.displacement.mean;
     if (a.result.converged)
-      a.slope = plateau_slope(result.last_converged_load,
-                              result.last_converged_displacement,
-                              a.load,
-                              result.displacement.mean);
+      a.rise = plateau_rise(result.curve, displacement, a.load);
     const bool automatic = p.loading.collapse_resolution > 0;
     a.on_mechanism       = a.result.converged && automatic &&
                      analysis.has_external_load() && a.stiffness_ratio >= 0 &&
                      a.stiffness_ratio < mechanism_knee_ratio;
     // Under load or prescribed displacement alike.
     a.on_plateau = a.result.converged && automatic &&
-                   a.slope <= p.loading.collapse_resolution;
+                   a.rise <= p.loading.collapse_resolution;
+    // More than doubled: the displacement grew more than twice as much as
+    // the load (never on a linear response).
+    if (a.result.converged && automatic && !result.curve.empty())
+      {
+        const CurvePoint &before = result.curve.back();
+        a.doubled =
+          before.displacement * displacement > 0 && before.load * a.load > 0 &&
+          displacement / before.displacement > 2 * a.load / before.load;
+      }
     return a;
   }
 
@@ -248,6 +263,7 @@ namespace thinlayer
                   result.displacement.mean,
                   a.result,
                   a.on_plateau,
+                  a.doubled,
                   next,
                   probe,
                   p.output.print_iterations,
@@ -271,21 +287,20 @@ namespace thinlayer
       }
     if (a.on_plateau && !std::isfinite(result.plateau_load))
       {
-        result.plateau_load             = a.load;
-        result.plateau_slope            = a.slope;
-        result.plateau_load_factor      = a.load_factor;
-        result.plateau_from_load_factor = result.last_converged_load_factor;
-        result.plateau_load_growth      = a.load / result.last_converged_load;
-        result.plateau_displacement_growth =
-          result.displacement.mean / result.last_converged_displacement;
+        result.plateau_load         = a.load;
+        result.plateau_load_factor  = a.load_factor;
+        result.plateau_displacement = result.displacement.mean;
+        result.plateau_rise         = a.rise;
+        result.plateau_from_displacement =
+          state_at_half(result.curve, result.displacement.mean)->displacement;
       }
-    result.last_stiffness              = stiffness;
-    result.last_converged_load         = a.load;
-    result.last_converged_load_factor  = a.load_factor;
-    result.converged_displacement      = result.displacement;
-    result.last_converged_displacement = result.displacement.mean;
-    result.converged_iterations        = result.total_iterations;
-    result.any_step_converged          = true;
+    result.curve.push_back({result.displacement.mean, a.load});
+    result.last_stiffness             = stiffness;
+    result.last_converged_load        = a.load;
+    result.last_converged_load_factor = a.load_factor;
+    result.converged_displacement     = result.displacement;
+    result.converged_iterations       = result.total_iterations;
+    result.any_step_converged         = true;
     if (a.result.max_yield_ratio > 10 * p.solver.tolerance)
       ++result.steps_with_drift;
     solver.accept();

@@ -26,21 +26,27 @@ namespace thinlayer
   }
 
 
-  double
-  plateau_slope(const double load_before,
-                const double displacement_before,
-                const double load_after,
-                const double displacement_after)
+  const CurvePoint *
+  state_at_half(const std::vector<CurvePoint> &states,
+                const double                   displacement)
   {
-    const double load_growth         = load_after / load_before;
-    const double displacement_growth = displacement_after / displacement_before;
-    // Both ratios of like-signed, non-zero values, and a displacement that
-    // grew: otherwise the slope is no measure of the curve.
-    if (!(load_before != 0 && displacement_before != 0 && load_growth > 0 &&
-          displacement_growth > 1 && std::isfinite(load_growth) &&
-          std::isfinite(displacement_growth)))
-      return std::numeric_limits<double>::quiet_NaN();
-    return std::log(load_growth) / std::log(displacement_growth);
+    for (auto state = states.rbegin(); state != states.rend(); ++state)
+      if (state->displacement * displacement > 0 &&
+          std::abs(state->displacement) <= std::abs(displacement) / 2)
+        return &*state;
+    return nullptr;
+  }
+
+
+  double
+  plateau_rise(const std::vector<CurvePoint> &states,
+               const double                   displacement,
+               const double                   load)
+  {
+    const CurvePoint *half = state_at_half(states, displacement);
+    return half != nullptr && half->load * load > 0
+             ? load / half->load - 1
+             : std::numeric_limits<double>::quiet_NaN();
   }
 
 
@@ -70,21 +76,17 @@ namespace thinlayer
     plateau(const ProgrammeResult &run)
     {
       return "the load reached its plateau at load factor " +
-             printf("%.6g", run.plateau_load_factor) +
-             ": its step from load factor " +
-             printf("%.6g", run.plateau_from_load_factor) +
-             " changed the load " +
-             printf("%+.3g", 100 * (run.plateau_load_growth - 1)) +
-             "% while the displacement grew by a factor " +
-             printf("%.3g", run.plateau_displacement_growth) +
-             " (the curve's log-log slope " +
-             printf("%.2g", run.plateau_slope) +
-             ", at most the collapse resolution: on a curve levelling off "
-             "like a hyperbola that is the fraction of the limit still to "
-             "come, which then lies between " +
+             printf("%.6g", run.plateau_load_factor) + ": it rose " +
+             printf("%+.3f", 100 * run.plateau_rise) +
+             "% while the displacement grew from " +
+             printf("%.4g", run.plateau_from_displacement) + " to " +
+             printf("%.4g", run.plateau_displacement) +
+             ", at least doubling (at most the collapse resolution: on a "
+             "curve levelling off like a hyperbola the fraction of the limit "
+             "still to come equals that rise, so the limit lies between " +
              printf("%.6g", run.plateau_load) + " and " +
              printf("%.6g",
-                    run.plateau_load / (1 - std::max(0., run.plateau_slope))) +
+                    run.plateau_load / (1 - std::max(0., run.plateau_rise))) +
              ")";
     }
   } // namespace
@@ -127,11 +129,13 @@ namespace thinlayer
             // Levelled off less sharply than the resolution asks: the
             // load at the end of the programme.
             s.collapse_load = run.last_converged_load;
-            s.reason += "; the load levelled off by the end (its last "
-                        "step's stiffness below " +
-                        printf("%g", plateau_stiffness_ratio) +
-                        " of the first step's), though no step's log-log "
-                        "slope fell to the collapse resolution";
+            s.reason +=
+              "; the load levelled off by the end (its last "
+              "step's stiffness below " +
+              printf("%g", plateau_stiffness_ratio) +
+              " of the first step's), though no state's load "
+              "rise over a doubling of the displacement fell to the collapse "
+              "resolution";
           }
         return;
       }

@@ -12,12 +12,13 @@
 //    it), or growth at least mechanism_growth_ratio (not just below). The
 //    collapse load is then the last converged load, and the reason names
 //    the bracket (the probe's load factor where a probe showed it).
-// 4. The plateau: plateau_slope() is the curve's log-log slope, on a
-//    hyperbola L = d / (d + 1) the fraction 1 - L of the limit still to
-//    come (to 1e-6 over a step of 1e-6 of d), 0 for a load that stayed,
-//    negative for one that fell, and NaN where the ratios mean nothing.
+// 4. The plateau: plateau_rise() is the load's rise over a doubling of
+//    the displacement, measured from the latest state at or below half of
+//    it; on a hyperbola L = d / (d + 1) it is the fraction 1 - L of the
+//    limit still to come, 0 for a load that stayed, negative for one that
+//    fell, and NaN where no state of the same sign lies at or below half.
 //    A run stopped on the plateau under load is a collapse at the plateau
-//    load, the reason naming the hyperbola's limit L / (1 - s); under
+//    load, the reason naming the hyperbola's limit L / (1 - rise); under
 //    prescribed displacement the first plateau state's load is the
 //    collapse load of a completed run, whatever the programme's last step
 //    did; the knee is reported beside a collapse.
@@ -156,36 +157,39 @@ main()
     const auto hyperbola = [](const double d) { return d / (d + 1); };
     bool       exact     = true;
     for (const double d : {0.1, 1.0, 10.0, 200.0})
-      exact = exact && std::abs(plateau_slope(hyperbola(d),
-                                              d,
-                                              hyperbola(d * (1 + 1e-6)),
-                                              d * (1 + 1e-6)) -
-                                (1 - hyperbola(d))) < 1e-6;
-    expect(exact, "on a hyperbola the slope is the fraction still to come");
-    expect(plateau_slope(2, 1, 2, 3) == 0, "a load that stayed: slope 0");
-    expect(plateau_slope(2, 1, 1.9, 3) < 0, "a load that fell: negative");
-    expect(std::isnan(plateau_slope(0, 0, 1, 1)) &&
-             std::isnan(plateau_slope(1, 1, 1.1, 1)) &&
-             std::isnan(plateau_slope(1, 1, 1.1, -2)),
-           "no load or displacement before, none gained, or a change of "
-           "sign: NaN");
+      {
+        // States at a quarter, at half and just beyond half of d: the
+        // rise is measured from half.
+        const std::vector<CurvePoint> states = {{d / 4, hyperbola(d / 4)},
+                                                {d / 2, hyperbola(d / 2)},
+                                                {0.6 * d, hyperbola(0.6 * d)}};
+        exact = exact && std::abs(plateau_rise(states, d, hyperbola(d)) -
+                                  (1 - hyperbola(d))) < 1e-12;
+      }
+    expect(exact, "on a hyperbola the rise is the fraction still to come");
+    const std::vector<CurvePoint> curve = {{1, 2}, {3, 2.5}};
+    expect(plateau_rise(curve, 2, 2) == 0, "a load that stayed: rise 0");
+    expect(plateau_rise(curve, 2, 1.9) < 0, "a load that fell: negative");
+    expect(std::isnan(plateau_rise(curve, 1.5, 2)) &&
+             std::isnan(plateau_rise(curve, -2, 2)) &&
+             std::isnan(plateau_rise({}, 2, 2)),
+           "no state at or below half, one of another sign, or none: NaN");
 
     ProgrammeResult run;
-    run.converged                   = true;
-    run.any_step_converged          = true;
-    run.stopped                     = true;
-    run.stopped_on_plateau          = true;
-    run.bracket_resolved            = true;
-    run.last_converged_load         = 2.5;
-    run.last_converged_load_factor  = 1.25;
-    run.plateau_load                = 2.5;
-    run.plateau_load_factor         = 1.25;
-    run.plateau_from_load_factor    = 1.24;
-    run.plateau_slope               = 0.004;
-    run.plateau_load_growth         = 1.008;
-    run.plateau_displacement_growth = 7;
-    run.knee_load                   = 2.3;
-    RunSummary s                    = judge(true, run);
+    run.converged                  = true;
+    run.any_step_converged         = true;
+    run.stopped                    = true;
+    run.stopped_on_plateau         = true;
+    run.bracket_resolved           = true;
+    run.last_converged_load        = 2.5;
+    run.last_converged_load_factor = 1.25;
+    run.plateau_load               = 2.5;
+    run.plateau_load_factor        = 1.25;
+    run.plateau_displacement       = 8;
+    run.plateau_from_displacement  = 3.5;
+    run.plateau_rise               = 0.004;
+    run.knee_load                  = 2.3;
+    RunSummary s                   = judge(true, run);
     expect(is(s, "collapse", 2.5) &&
              s.reason.find("between 2.5 and 2.51004") != std::string::npos &&
              s.knee_load == 2.3 &&

@@ -8,7 +8,8 @@
 // harmonic 0; 6.05 c by Eason and Shield 1960, a curve that rounds off
 // slowly), each on its file's coarse mesh. Asserted:
 //  - under load the run ends in a collapse, under settlement it reaches a
-//    plateau (a step's log-log slope at most the resolution, 0.5%);
+//    plateau (a rise of at most the resolution, 0.5%, while the
+//    displacement doubled);
 //  - the two collapse loads agree within that resolution;
 //  - the knee of the load-controlled curve (a step's secant stiffness below
 //    0.01 of the elastic one) lies below the collapse by more than the

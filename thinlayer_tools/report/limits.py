@@ -41,32 +41,46 @@ def run_list(quick):
             for control in CONTROLS]
 
 
+def pairs(quick):
+    """(title, level, run under load, run under displacement, classical
+    value or None, its source) of every comparison: the rigid footings at
+    each level, and Case 3's stiff footing pushed sideways (the report's
+    runs case3-default and case3-displacement, the same mesh)."""
+    rows = [(title, level, run_name(footing, "load", level),
+             run_name(footing, "settlement", level), classical, source)
+            for footing, (stem, title, classical, source) in FOOTINGS.items()
+            for level in levels(quick)]
+    rows.append(("Case 3's footing, lateral (harmonics 1, 3)", 1, "case3-default",
+                 "case3-displacement", None, "no closed form; the paper: about 1.2"))
+    return rows
+
+
 def limit_not_knee(runs, quick):
-    table = [["footing", "mesh level", "knee under load / c", "collapse under load / c",
-              "plateau under settlement / c", "load against settlement", "knee below collapse",
-              "collapse against classical", "wall s (load, settlement)"]]
+    table = [["footing", "mesh level", "knee under load", "collapse under load",
+              "plateau under displacement", "load against displacement",
+              "knee below collapse", "collapse against classical",
+              "wall s (load, displacement)"]]
     disagreements, gaps = [], []
-    for footing, (stem, title, classical, source) in FOOTINGS.items():
-        for level in levels(quick):
-            load = runs.summary(run_name(footing, "load", level))
-            settled = runs.summary(run_name(footing, "settlement", level))
-            by_load, by_settlement = results.collapse_load(load), results.collapse_load(settled)
-            knee = results.number(load.get("knee_load"))
-            if by_load is None or by_settlement is None or \
-                    abs(by_load - by_settlement) > RESOLUTION * max(by_load, by_settlement):
-                disagreements.append("%s, level %d" % (footing, level))
-            if by_load is not None and knee == knee:
-                gaps.append(1 - knee / by_load)
-            table.append([title, "%d" % level, "%.4f" % knee if knee == knee else "none",
-                          "%.4f" % by_load if by_load else load["outcome"],
-                          "%.4f" % by_settlement if by_settlement else settled["outcome"],
-                          "%+.2f%%" % (100 * (by_load / by_settlement - 1))
-                          if by_load and by_settlement else "-",
-                          "%.2f%%" % (100 * (1 - knee / by_load)) if by_load and knee == knee
-                          else "-",
-                          "%+.2f%% (%s)" % (100 * (by_load / classical - 1), source)
-                          if by_load else "-",
-                          "%.1f, %.1f" % (load["wall_seconds"], settled["wall_seconds"])])
+    for title, level, by_load_run, by_displacement_run, classical, source in pairs(quick):
+        load = runs.summary(by_load_run)
+        settled = runs.summary(by_displacement_run)
+        by_load, by_settlement = results.collapse_load(load), results.collapse_load(settled)
+        knee = results.number(load.get("knee_load"))
+        if by_load is None or by_settlement is None or \
+                abs(by_load - by_settlement) > RESOLUTION * max(by_load, by_settlement):
+            disagreements.append("%s, level %d" % (title, level))
+        if by_load is not None and knee == knee:
+            gaps.append(1 - knee / by_load)
+        table.append([title, "%d" % level, "%.4f" % knee if knee == knee else "none",
+                      "%.4f" % by_load if by_load else load["outcome"],
+                      "%.4f" % by_settlement if by_settlement else settled["outcome"],
+                      "%+.2f%%" % (100 * (by_load / by_settlement - 1))
+                      if by_load and by_settlement else "-",
+                      "%.2f%%" % (100 * (1 - knee / by_load)) if by_load and knee == knee
+                      else "-",
+                      "%+.2f%% (%s)" % (100 * (by_load / classical - 1), source)
+                      if by_load and classical else source,
+                      "%.1f, %.1f" % (load["wall_seconds"], settled["wall_seconds"])])
     fig, axes = plt.subplots(1, 2, figsize=(10, 4))
     for ax, (footing, (stem, title, classical, source)) in zip(axes, FOOTINGS.items()):
         for control, style in (("load", "o-"), ("settlement", ".-")):
@@ -85,15 +99,19 @@ def limit_not_knee(runs, quick):
         ax.grid(alpha=0.3)
         figures.failure_legend(ax, fontsize=7, loc="lower right")
     fig.tight_layout()
-    names = [run_name(f, c, level) for f in FOOTINGS for c in CONTROLS for level in levels(quick)]
+    names = [name for pair in pairs(quick) for name in pair[2:4]]
     why = ("A rough rigid footing (a block 1000 times stiffer than the soil) on weightless "
-           "Tresca soil, default method, driven two ways: a pressure on its top (load "
-           "control, automatic stepping) and a prescribed settlement of its top. The "
-           "collapse load is where the curve reaches its plateau: a step whose log-log "
-           "slope ln(L1/L0) / ln(u1/u0) is at most the resolution (%.1f%%; on a curve that "
-           "levels off like a hyperbola, the fraction of the limit still to come), or, under "
-           "load, a step of the resolution that no longer converges, with a mechanism as "
-           "evidence. The knee (a step's secant stiffness below 0.01 of the elastic one), "
+           "Tresca soil (loads and pressures per c), default method, driven two ways: a "
+           "pressure on its top (load control, automatic stepping) and a prescribed "
+           "settlement of its top; and Case 3's footing on its thin Tresca row, pushed "
+           "sideways by a traction and by a prescribed displacement (loads per pi R^2 C_w). "
+           "The collapse load is where the curve reaches its plateau: the first state whose "
+           "load rose by at most the resolution (%.1f%%) while the displacement doubled (on "
+           "a curve that levels off like a hyperbola that rise is the fraction of the limit "
+           "still to come; under load, steps that more than double the displacement are cut "
+           "back to the resolution, so that the curve is sampled as finely as under "
+           "displacement control), or, under load, a step of the resolution that no longer "
+           "converges, with a mechanism as evidence. The knee (a step's secant stiffness below 0.01 of the elastic one), "
            "which automatic stepping used to bracket as the collapse, is reported beside it: "
            "it lay %s below the collapse. Asked: the two ways agree within the "
            "resolution. %s" % (
@@ -102,7 +120,7 @@ def limit_not_knee(runs, quick):
                "They do on every mesh." if not disagreements else
                "They differ on: " + "; ".join(disagreements) + "."))
     return Section(
-        "limit-not-knee", "The limit, not the knee: load control against prescribed settlement",
+        "limit-not-knee", "The limit, not the knee: load control against prescribed displacement",
         "(not in the paper) the paper's collapse is its first failed load step.",
         "beyond" if not disagreements else "differs", why, rows=table,
         figures=[(figures.data_uri(fig), "The curves near the limit (from 85% of the classical "

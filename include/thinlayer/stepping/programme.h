@@ -24,10 +24,13 @@ namespace thinlayer
    * The load programme of a run, attempt by attempt: LoadStepping says
    * which load factor comes next, the StepSolver solves it with the
    * solution method, and the programme measures the attempt (load,
-   * displacement, secant stiffness, the curve's slope), decides whether a
-   * converged state is to count as failed (moving against its load, or on
-   * the plateau of the load in a step longer than the collapse resolution,
-   * which is cut back so that the plateau's start is bracketed), ends the
+   * displacement, secant stiffness, the load's rise over the last doubling
+   * of the displacement), decides whether a
+   * converged state is to count as failed (moving against its load; or, in
+   * a step longer than the collapse resolution, on the plateau of the load
+   * or more than doubling the displacement: cut back, so that the curve
+   * is sampled at least once every doubling and the plateau's start is
+   * bracketed), ends the
    * run where a step at that resolution reaches the plateau, notes the
    * knee of the curve, probes beyond a failed step that shows no
    * mechanism, and writes
@@ -73,11 +76,13 @@ namespace thinlayer
       /// A converged attempt below the knee (mechanism_knee_ratio): the
       /// evidence of a mechanism where it is a probe beyond a failed step.
       bool on_mechanism;
-      /// plateau_slope() of a converged attempt (NaN otherwise), and
-      /// whether it is at most the collapse resolution under load: the
-      /// load has reached its plateau.
-      double slope;
+      /// plateau_rise() of a converged attempt (NaN otherwise); whether it
+      /// is at most the collapse resolution (the load has reached its
+      /// plateau); and whether the attempt's displacement grew more than
+      /// twice as much as its load from the last accepted state.
+      double rise;
       bool   on_plateau;
+      bool   doubled;
       /// A converged attempt moving against its load: counted as failed.
       bool against_load;
     };

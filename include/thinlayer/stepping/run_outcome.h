@@ -5,6 +5,7 @@
 #include <thinlayer/postprocess/displacement_measure.h>
 
 #include <limits>
+#include <vector>
 
 namespace thinlayer
 {
@@ -28,26 +29,38 @@ namespace thinlayer
    */
   constexpr double mechanism_knee_ratio = 0.01;
 
+  /// An accepted state of the load-displacement curve.
+  struct CurvePoint
+  {
+    double displacement;
+    double load;
+  };
+
   /**
-   * The curve's log-log slope over a converged step from the accepted
-   * state (load L0, displacement d0) to (L1, d1):
-   * s = ln(L1 / L0) / ln(d1 / d0); NaN where it is not defined (no load
-   * or no displacement yet, a change of sign, or displacements that did
-   * not grow). On a curve that levels off like a hyperbola,
-   * L = L_lim d / (d + d_0), s = 1 - L / L_lim exactly: s is the fraction
-   * of the limit load still to come. A secant over a step overestimates
-   * the slope at its end on a curve that flattens, so s <= r says that at
-   * most the fraction r is still to come: the load has reached its plateau
-   * to the collapse resolution r, whichever way the body is driven (a load
-   * step of r that at least doubles the displacement, or a prescribed
-   * displacement step under which the load rises by at most r times its
-   * relative length). A load that fell gives s <= 0: past the limit.
+   * The load's rise while the displacement doubled, up to the state
+   * (@p displacement, @p load): L / L_h - 1, with L_h the load of the
+   * latest of the accepted @p states whose displacement is at most half
+   * this one (of the same sign, its load non-zero and of the same sign);
+   * NaN where there is none. On a curve that levels off like a hyperbola,
+   * L = L_lim d / (d + d_0), the rise from d / 2 to d is
+   * d_0 / (d + d_0), exactly the fraction of the limit still to come at
+   * d: so a rise of at most the collapse resolution r says the load has
+   * reached its plateau to r, whichever way the body is driven (and L_h,
+   * taken at or below d / 2 on a rising curve, only overstates the rise).
+   * A load that fell gives a rise below zero: past the limit.
    */
   double
-  plateau_slope(const double load_before,
-                const double displacement_before,
-                const double load_after,
-                const double displacement_after);
+  plateau_rise(const std::vector<CurvePoint> &states,
+               const double                   displacement,
+               const double                   load);
+
+  /// The latest of @p states whose displacement is at most half
+  /// @p displacement and of its sign (nullptr: none): where
+  /// plateau_rise() measures from.
+  const CurvePoint *
+  state_at_half(const std::vector<CurvePoint> &states,
+                const double                   displacement);
+
 
   /**
    * Or, for a step stopped by its iteration limit, the change of its
@@ -58,9 +71,11 @@ namespace thinlayer
   constexpr double mechanism_growth_ratio = 1.8;
 
   /**
-   * Under prescribed displacement the load has reached its plateau when
-   * the last step's load change per load factor is below this fraction
-   * of the first step's.
+   * Under prescribed displacement, a programme whose load never rose by
+   * at most the collapse resolution over a doubling of the displacement
+   * (plateau_rise()) still reports its last load as levelled off when the
+   * last step's load change per load factor is below this fraction of the
+   * first step's, and says which rule it was.
    */
   constexpr double plateau_stiffness_ratio = 0.01;
 
@@ -84,27 +99,22 @@ namespace thinlayer
     double first_stiffness = std::numeric_limits<double>::quiet_NaN();
     double last_stiffness  = std::numeric_limits<double>::quiet_NaN();
     double last_converged_load_factor = 0;
-    /// The load and displacement of the last accepted state.
-    double last_converged_displacement = 0;
+    /// The accepted states, in order.
+    std::vector<CurvePoint> curve;
 
     /// The knee (mechanism_knee_ratio): the last accepted load before
     /// the curve's secant stiffness fell below it (NaN: it never did);
     /// and whether it has been passed.
     double knee_load   = std::numeric_limits<double>::quiet_NaN();
     bool   knee_passed = false;
-    /// The load of the first accepted state on the plateau
-    /// (plateau_slope() at most the collapse resolution; NaN: none), and
-    /// its slope.
-    double plateau_load  = std::numeric_limits<double>::quiet_NaN();
-    double plateau_slope = std::numeric_limits<double>::quiet_NaN();
-    /// The step onto the plateau: its load factor and its starting one,
-    /// and the
-    /// factors by which the load and the displacement grew over it.
-    double plateau_load_factor      = std::numeric_limits<double>::quiet_NaN();
-    double plateau_from_load_factor = std::numeric_limits<double>::quiet_NaN();
-    double plateau_load_growth      = std::numeric_limits<double>::quiet_NaN();
-    double plateau_displacement_growth =
-      std::numeric_limits<double>::quiet_NaN();
+    /// The first accepted state on the plateau (plateau_rise() at most
+    /// the collapse resolution; NaN: none): its load, load factor and
+    /// displacement, its rise, and the displacement that rise is from.
+    double plateau_load              = std::numeric_limits<double>::quiet_NaN();
+    double plateau_load_factor       = std::numeric_limits<double>::quiet_NaN();
+    double plateau_displacement      = std::numeric_limits<double>::quiet_NaN();
+    double plateau_rise              = std::numeric_limits<double>::quiet_NaN();
+    double plateau_from_displacement = std::numeric_limits<double>::quiet_NaN();
 
     /// How a run that a failed step ended, ended.
     bool stopped = false;
