@@ -7,6 +7,7 @@
 #include <thinlayer/analysis/analysis.h>
 #include <thinlayer/base/input_error.h>
 #include <thinlayer/base/work_counts.h>
+#include <thinlayer/discretisation/body_loads.h>
 #include <thinlayer/discretisation/mode_constraints.h>
 #include <thinlayer/discretisation/serendipity_constraints.h>
 #include <thinlayer/mesh/interface_pairing.h>
@@ -109,6 +110,9 @@ namespace thinlayer
   void
   Analysis<dim>::setup_mode_vectors()
   {
+    std::map<types::material_id, double> weights;
+    for (const auto &[id, material] : parameters.materials)
+      weights[id] = material.unit_weight;
     for (unsigned int m = 0; m < kinematics.n_modes(); ++m)
       {
         ModeSystem &mode = *systems[m];
@@ -133,6 +137,8 @@ namespace thinlayer
                                            dof_handler,
                                            m,
                                            mode.unit_load);
+        add_weight(
+          mapping, dof_handler, kinematics, weights, m, mode.unit_load);
         mode.unit_rhs.reinit(dof_partitioner);
       }
     for (ModeVectors *vectors :

@@ -134,9 +134,10 @@ namespace thinlayer
     if (!loaded)
       throw InputError(parameters.parameter_file,
                        "Boundary <id>",
-                       "nothing loads the body: every traction, pressure and "
-                       "prescribed displacement is 0; expected at least one "
-                       "that is not");
+                       "nothing loads the body: every traction, pressure, "
+                       "prescribed displacement and unit weight (of a "
+                       "Fourier body: in harmonic 0, symmetric) is 0; "
+                       "expected at least one that is not");
 
     if (kinematics.is_fourier())
       return;

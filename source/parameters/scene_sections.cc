@@ -398,6 +398,16 @@ namespace thinlayer
                       Patterns::Double(0, 89),
                       "Mohr-Coulomb dilation angle psi in degrees, at most "
                       "phi (psi = phi is associated flow).");
+    prm.declare_entry("Unit weight",
+                      "0",
+                      Patterns::Double(),
+                      "Weight per unit volume gamma (>= 0), acting along -y "
+                      "(every mesh has y up: the vertical of a plane-strain "
+                      "section, the axis of a Fourier or 3D body), "
+                      "proportional to the load factor like every load: a "
+                      "load programme of the weight alone is gravity "
+                      "loading. Drained analysis in total stresses: no pore "
+                      "pressures.");
     prm.leave_subsection();
   }
 
@@ -423,6 +433,13 @@ namespace thinlayer
     cohesion                    = prm.get_double("Cohesion");
     friction_angle              = prm.get_double("Friction angle");
     dilation_angle              = prm.get_double("Dilation angle");
+    unit_weight                 = prm.get_double("Unit weight");
+    if (!(unit_weight >= 0) || !std::isfinite(unit_weight))
+      throw InputError(file,
+                       section + "/Unit weight",
+                       "expected a weight per unit volume >= 0 (it acts "
+                       "along -y), got " +
+                         prm.get("Unit weight"));
     if ((yield_criterion == YieldCriterion::tresca ||
          yield_criterion == YieldCriterion::von_mises) &&
         !(cohesion > 0))

@@ -36,6 +36,9 @@ namespace
     write("young.prm", scene("good.geo", "  set Young's modulus = 0\n"));
     check("Young's modulus of 0", {"young.prm"});
 
+    write("weight.prm", scene("good.geo", "  set Unit weight = -18\n"));
+    check("a negative unit weight", {"weight.prm"});
+
     write("element.prm",
           scene("good.geo",
                 "",

@@ -118,6 +118,8 @@ namespace thinlayer
     /// phi and psi, in degrees.
     double friction_angle;
     double dilation_angle;
+    /// gamma, the weight per unit volume, acting along -y (body_loads.h).
+    double unit_weight;
 
     static const NameTable<YieldCriterion> yield_criterion_names;
 

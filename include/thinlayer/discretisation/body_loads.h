@@ -1,0 +1,38 @@
+#ifndef thinlayer_discretisation_body_loads_h
+#define thinlayer_discretisation_body_loads_h
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+
+#include <thinlayer/discretisation/kinematics.h>
+#include <thinlayer/discretisation/mode_vectors.h>
+
+#include <map>
+
+namespace thinlayer
+{
+  using namespace dealii;
+
+  /**
+   * Add the weight of the body at unit load factor to mode @p m's load
+   * vector @p load: the consistent nodal forces int N_i b dV of the body
+   * force b = -gamma e_y, gamma the unit weight of each cell's material
+   * (@p unit_weights by material id; none: weightless). Every mesh of the
+   * project has y up: the vertical of a plane-strain section, the axis of
+   * a Fourier body's r-z plane, the axis of a 3D body. A Fourier body's
+   * weight is axisymmetric: it loads the symmetric harmonic 0 only, with
+   * the circle integral and the volume element r dA of the boundary loads
+   * (BoundaryData::assemble_load_vector()), so that both are scaled alike.
+   * Adds this rank's cells, then sums over ranks (compress).
+   */
+  template <int dim>
+  void
+  add_weight(const Mapping<dim>                         &mapping,
+             const DoFHandler<dim>                      &dof_handler,
+             const Kinematics                           &kinematics,
+             const std::map<types::material_id, double> &unit_weights,
+             const unsigned int                          m,
+             ModeVector                                 &load);
+} // namespace thinlayer
+
+#endif
