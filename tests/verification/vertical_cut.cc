@@ -1,0 +1,64 @@
+// Truth checked: plasticity under the body's own weight. The critical
+// height of a vertical cut in Tresca clay (prm/vertical-cut.prm: H = 1,
+// c = 1, the weight gamma raised by the load factor until the cut
+// collapses, so the collapse load factor is gamma H_c / c). Pastor, Thai
+// and Francescato (2000) bracket the exact value in [3.772, 3.786] by
+// limit analysis. On three meshes (the file's 256 cells, then 1024 and
+// 4096, each halving the elements), by the default method: every run
+// ends in a collapse, its load lies above 3.772 (a displacement mesh is
+// too stiff), falls with refinement, and lies within 2% of 3.78 on the
+// finest mesh. Release only: under deal.II's debug library the finest
+// mesh takes minutes.
+#include <thinlayer/app/command_line.h>
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "../common/run_results.h"
+#include "../common/truths.h"
+
+int
+main()
+{
+  using truths::expect;
+  const std::vector<std::string> meshes = {
+    "n_height=8, n_behind=12, n_front=8, n_depth=8, growth=1.1",
+    "n_height=16, n_behind=24, n_front=16, n_depth=16, growth=1.05",
+    "n_height=32, n_behind=48, n_front=32, n_depth=32, growth=1.025"};
+  std::vector<double> loads;
+  bool                collapsed = true;
+  for (const std::string &mesh : meshes)
+    {
+      std::ostringstream out, err;
+      if (thinlayer::run_command_line(
+            {std::string(SOURCE_DIR) + "/../../prm/vertical-cut.prm",
+             "-s",
+             "Mesh/Geometry parameters=height=1, behind=3, front=2, "
+             "depth=2, " +
+               mesh,
+             "-s",
+             "Output/Directory=results",
+             "-s",
+             "Output/Write VTU=false"},
+            out,
+            err) != 0)
+        std::printf("run failed: %s", err.str().c_str());
+      loads.push_back(run_results::summary_number("results", "collapse_load"));
+      collapsed = collapsed && std::isfinite(loads.back());
+    }
+  std::printf("gamma H_c / c on 256, 1024, 4096 cells: %.3f %.3f %.3f "
+              "(Pastor et al. 2000: 3.772 - 3.786)\n",
+              loads[0],
+              loads[1],
+              loads[2]);
+  expect(collapsed, "every mesh collapses");
+  expect(loads[0] > 3.772 && loads[1] > 3.772 && loads[2] > 3.772,
+         "above the exact bracket's lower end");
+  expect(loads[1] < loads[0] && loads[2] < loads[1], "falling with refinement");
+  expect(std::abs(loads[2] / 3.78 - 1) < 0.02,
+         "within 2% of 3.78 on the finest mesh");
+  return truths::conclude();
+}
