@@ -10,8 +10,9 @@ from thinlayer_tools.report.page import Section
 # Pastor, Thai and Francescato (2000): gamma H_c / c by lower- and
 # upper-bound limit analysis.
 BRACKET = (3.772, 3.786)
-# Asked of the finest mesh.
-WITHIN = 0.02
+# Asked of the finest mesh run, by its cells: the error halves with each
+# halving of the elements (+5.8%, +2.5%, +1.2% measured).
+WITHIN = {1024: 0.03, 4096: 0.02}
 # (cells, geometry parameters): the file's mesh and two halvings.
 MESHES = [
     (256, "n_height=8, n_behind=12, n_front=8, n_depth=8, growth=1.1"),
@@ -24,10 +25,15 @@ def run_name(cells):
     return "vertical-cut-%d" % cells
 
 
+def meshes(quick):
+    """The meshes run: the finest only in the full report."""
+    return MESHES[:2] if quick else MESHES
+
+
 def run_list(quick):
     return [(run_name(cells), "vertical-cut",
              ("Mesh/Geometry parameters=height=1, behind=3, front=2, depth=2, " + mesh,
-              "Output/Write VTU=false")) for cells, mesh in MESHES]
+              "Output/Write VTU=false")) for cells, mesh in meshes(quick)]
 
 
 def vertical_cut(runs, quick):
@@ -35,7 +41,8 @@ def vertical_cut(runs, quick):
     table = [["cells", "equations", "outcome", "gamma H_c / c", "against 3.78", "knee",
               "iterations", "wall s"]]
     loads = []
-    for cells, _ in MESHES:
+    finest = meshes(quick)[-1][0]
+    for cells, _ in meshes(quick):
         s = runs.summary(run_name(cells))
         load = results.collapse_load(s)
         loads.append(load)
@@ -47,9 +54,9 @@ def vertical_cut(runs, quick):
                       "%d" % s["total_iterations"], "%.1f" % s["wall_seconds"]])
     good = all(loads) and all(load > BRACKET[0] for load in loads) and \
         all(b < a for a, b in zip(loads, loads[1:])) and \
-        abs(loads[-1] / middle - 1) <= WITHIN
+        abs(loads[-1] / middle - 1) <= WITHIN[finest]
     fig, ax = plt.subplots(figsize=(6.5, 4))
-    for cells, _ in MESHES:
+    for cells, _ in meshes(quick):
         figures.curve(ax, runs.path(run_name(cells)), "%d cells" % cells, marker=".")
     ax.axhspan(*BRACKET, color="k", alpha=0.25, label="Pastor et al. 2000")
     ax.set_xlabel("mean horizontal displacement of the face, E u / (c H)")
@@ -62,10 +69,11 @@ def vertical_cut(runs, quick):
            "stepping until the cut collapses, by the default method; the weight enters as "
            "consistent nodal loads (Material <id>/Unit weight). Asked: every mesh collapses "
            "above the exact bracket's lower end %.3f (a displacement mesh is too stiff), the "
-           "load falls with refinement, and the finest mesh lies within %.0f%% of %.2f. %s" % (
-               BRACKET[0], 100 * WITHIN, middle,
+           "load falls with refinement, and the finest mesh run (%d cells) lies within %.0f%% "
+           "of %.2f (3%% on 1024 cells, 2%% on 4096, run in the full report only). %s" % (
+               BRACKET[0], finest, 100 * WITHIN[finest], middle,
                "It does." if good else "It does not."))
-    names = [run_name(cells) for cells, _ in MESHES]
+    names = [run_name(cells) for cells, _ in meshes(quick)]
     return Section(
         "vertical-cut", "Self-weight: the critical height of a vertical cut",
         "(not in the paper) gamma H_c / c in [3.772, 3.786] (Pastor, Thai and Francescato "
