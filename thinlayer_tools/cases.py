@@ -46,6 +46,7 @@ def geometry(case, level, aspect_ratio="{ar}", alpha=30):
 # four times the cells of the one before at the same proportions, for the
 # measurements of time and memory against size and ranks.
 PRANDTL_SIZES = {
+    128: "half_width=1, width=5, depth=3, n_footing=6, n_side=10, n_depth=8, growth=1.2",
     512: "half_width=1, width=5, depth=3, n_footing=12, n_side=20, n_depth=16, growth=1.1",
     2048: "half_width=1, width=5, depth=3, n_footing=24, n_side=40, n_depth=32, growth=1.05",
     8192: "half_width=1, width=5, depth=3, n_footing=48, n_side=80, n_depth=64, growth=1.025",
