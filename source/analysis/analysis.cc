@@ -81,6 +81,7 @@ namespace thinlayer
     setup_dof_components();
     setup_mode_vectors();
     assemble_stiffness();
+    set_phase_loads(PhaseLoads::boundaries_and_weight);
     factorise_stiffness();
   }
 
@@ -113,6 +114,8 @@ namespace thinlayer
     std::map<types::material_id, double> weights;
     for (const auto &[id, material] : parameters.materials)
       weights[id] = material.unit_weight;
+    const double surcharge = parameters.initial_state.surcharge;
+    const double level     = surcharge > 0 ? ground_level(tria) : 0;
     for (unsigned int m = 0; m < kinematics.n_modes(); ++m)
       {
         ModeSystem &mode = *systems[m];
@@ -124,7 +127,7 @@ namespace thinlayer
 
         // Prescribed displacements at unit load factor; the nodes tied to
         // them (centre nodes, the axis) follow through the structural lines.
-        ModeVector &u = mode.unit_prescribed_displacement;
+        ModeVector &u = mode.boundary_prescribed_displacement;
         u.reinit(dof_partitioner);
         for (const auto &[dof, value] :
              boundary_data.prescribed_values(mapping, dof_handler, m))
@@ -132,14 +135,27 @@ namespace thinlayer
             u(dof) = value;
         distribute(mode.structural_constraints, u);
 
-        mode.unit_load.reinit(dof_partitioner);
+        mode.boundary_load.reinit(dof_partitioner);
         boundary_data.assemble_load_vector(mapping,
                                            dof_handler,
                                            m,
-                                           mode.unit_load);
+                                           mode.boundary_load);
+        mode.weight_load.reinit(dof_partitioner);
         add_weight(
-          mapping, dof_handler, kinematics, weights, m, mode.unit_load);
-        mode.unit_rhs.reinit(dof_partitioner);
+          mapping, dof_handler, kinematics, weights, m, mode.weight_load);
+        add_ground_pressure(mapping,
+                            dof_handler,
+                            kinematics,
+                            level,
+                            surcharge,
+                            m,
+                            mode.weight_load);
+        for (ModeVector *v : {&mode.boundary_rhs,
+                              &mode.held_load,
+                              &mode.unit_prescribed_displacement,
+                              &mode.unit_load,
+                              &mode.unit_rhs})
+          v->reinit(dof_partitioner);
       }
     for (ModeVectors *vectors :
          {&solution_vectors, &increment_vectors, &internal_force_vectors})
@@ -164,17 +180,17 @@ namespace thinlayer
                     matrix, dofs, mode.condensed_stiffness);
                 });
             // One rank owns every entry, in order.
-            Vector<double> u(mode.unit_prescribed_displacement.begin(),
-                             mode.unit_prescribed_displacement.end()),
+            Vector<double> u(mode.boundary_prescribed_displacement.begin(),
+                             mode.boundary_prescribed_displacement.end()),
               Ku(u.size());
             mode.stiffness.vmult(Ku, u);
-            std::copy(Ku.begin(), Ku.end(), mode.unit_rhs.begin());
+            std::copy(Ku.begin(), Ku.end(), mode.boundary_rhs.begin());
           }
         else
           {
             // The raw stiffness is not kept: each rank adds its cells'
             // K u_prescribed.
-            const GhostValues ghosts(mode.unit_prescribed_displacement);
+            const GhostValues ghosts(mode.boundary_prescribed_displacement);
             Vector<double>    u, Ku;
             for (const auto &group : groups)
               group->assemble_elastic(
@@ -184,16 +200,16 @@ namespace thinlayer
                   u.reinit(dofs.size());
                   Ku.reinit(dofs.size());
                   for (unsigned int i = 0; i < dofs.size(); ++i)
-                    u[i] = mode.unit_prescribed_displacement[dofs[i]];
+                    u[i] = mode.boundary_prescribed_displacement[dofs[i]];
                   matrix.vmult(Ku, u);
                   for (unsigned int i = 0; i < dofs.size(); ++i)
-                    mode.unit_rhs[dofs[i]] += Ku[i];
+                    mode.boundary_rhs[dofs[i]] += Ku[i];
                 });
             mode.distributed_stiffness->compress(VectorOperation::add);
-            mode.unit_rhs.compress(VectorOperation::add);
+            mode.boundary_rhs.compress(VectorOperation::add);
           }
         // f - K u_prescribed.
-        mode.unit_rhs.sadd(-1, 1, mode.unit_load);
+        mode.boundary_rhs.sadd(-1, 1, mode.boundary_load);
       }
   }
 

@@ -1,4 +1,5 @@
 #include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
 
 #include <thinlayer/elements/continuum_cells.h>
 
@@ -205,6 +206,38 @@ namespace thinlayer
           state.step_plastic_strain - state.pending_plastic_strain;
         state.step_plastic_strain    = 0;
         state.pending_plastic_strain = 0;
+      }
+  }
+
+
+  template <int dim>
+  void
+  ContinuumCells<dim>::set_initial_stresses(
+    const std::function<SymmetricTensor<2, 3>(const Point<dim> &,
+                                              types::material_id)> &initial)
+  {
+    FEValues<dim> fe_values(mapping,
+                            dof_handler.get_fe(),
+                            quadrature,
+                            update_quadrature_points);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        const unsigned int c = cell->active_cell_index();
+        if (!cell->is_locally_owned() || !owns(c))
+          continue;
+        fe_values.reinit(cell);
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            const SymmetricTensor<2, 3> stress =
+              initial(fe_values.quadrature_point(q), cell->material_id());
+            for (unsigned int s = 0; s < kinematics.n_stations(); ++s)
+              {
+                PointState &state      = states[point_loop.point_index(
+                  all_cells ? c : cell_position[c], q, s)];
+                state.stress           = stress;
+                state.converged_stress = stress;
+              }
+          }
       }
   }
 

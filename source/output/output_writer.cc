@@ -50,7 +50,7 @@ namespace thinlayer
     history << "step,attempt,load_factor,load,displacement,displacement_min,"
                "displacement_max,iterations,converged,accepted,"
                "max_yield_ratio,plastic_points,cut_backs,factorisations,"
-               "stiffness_ratio,growth_ratio,non_finite\n"
+               "stiffness_ratio,growth_ratio,non_finite,phase\n"
             << std::flush;
     check_written(history, "history.csv");
   }
@@ -75,7 +75,7 @@ namespace thinlayer
             << row.result.plastic_points << ',' << row.result.cut_backs << ','
             << row.result.factorisations << ',' << number(row.stiffness_ratio)
             << ',' << number(row.result.growth_ratio) << ','
-            << (row.result.non_finite ? 1 : 0) << '\n'
+            << (row.result.non_finite ? 1 : 0) << ',' << row.phase << '\n'
             << std::flush;
     check_written(history, "history.csv");
   }

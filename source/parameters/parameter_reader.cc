@@ -6,6 +6,7 @@
 #include <thinlayer/parameters/parameter_text.h>
 #include <thinlayer/parameters/parameters.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -23,6 +24,55 @@ namespace thinlayer
     {
       return "line " + std::to_string(line.line) +
              (line.file == file ? std::string() : " of '" + line.file + "'");
+    }
+
+
+    /// What Initial state/Procedure needs of the rest of the scene.
+    void
+    check_initial_state(const Parameters &p)
+    {
+      using Procedure           = InitialStateParameters::Procedure;
+      const Procedure procedure = p.initial_state.procedure;
+      if (procedure == Procedure::none)
+        return;
+      const std::string name =
+        InitialStateParameters::procedure_names.name(procedure);
+      const std::string entry  = "Initial state/Procedure";
+      bool              weight = p.initial_state.surcharge > 0;
+      for (const auto &[id, material] : p.materials)
+        weight = weight || material.unit_weight > 0;
+      if (!weight)
+        throw InputError(p.parameter_file,
+                         entry,
+                         "expected a Material <id>/Unit weight > 0 or an "
+                         "Initial state/Surcharge > 0 for the " +
+                           name +
+                           ": without them the initial state is "
+                           "free of stress");
+      if (procedure != Procedure::k0)
+        return;
+      if (p.kinematics.dimension == 3)
+        throw InputError(p.parameter_file,
+                         entry,
+                         "the K0 procedure is built for 2D meshes (plane "
+                         "strain, Fourier); expected 'gravity loading' in "
+                         "3D");
+      if (!p.interface_elements.empty())
+        throw InputError(p.parameter_file,
+                         entry,
+                         "the K0 procedure sets the stresses of cells, not "
+                         "of zero-thickness interface elements; expected "
+                         "'gravity loading' with interface elements");
+      if (p.kinematics.fourier &&
+          (p.kinematics.antisymmetric ||
+           std::find(p.kinematics.harmonics.begin(),
+                     p.kinematics.harmonics.end(),
+                     0u) == p.kinematics.harmonics.end()))
+        throw InputError(p.parameter_file,
+                         entry,
+                         "the K0 stresses are the same at every angle: "
+                         "expected Kinematics/Harmonics to include 0 "
+                         "(symmetric)");
     }
 
 
@@ -304,6 +354,7 @@ namespace thinlayer
       KinematicsParameters::declare(prm);
       DiscretisationParameters::declare(prm);
       LayerParameters::declare(prm);
+      InitialStateParameters::declare(prm);
       LoadingParameters::declare(prm);
       SolverParameters::declare(prm);
       MonitorParameters::declare(prm);
@@ -357,6 +408,8 @@ namespace thinlayer
                                std::to_string(id) + "' names it too");
           p.interface_elements[id].parse(prm, file, id);
         }
+      p.initial_state.parse(prm, file);
+      check_initial_state(p);
       p.loading.parse(prm, file);
       p.solver.parse(prm, file);
       // With automatic stepping the load stepping halves a failed step and

@@ -10,112 +10,12 @@
 #include <cmath>
 #include <limits>
 
-// The sections that describe a run of the model: loading, solver,
-// monitors, reference and output (the sweep has sweep_section.cc).
+// The sections that describe a run of the model: solver, monitors,
+// reference and output (the loading and the initial state have
+// loading_sections.cc, the sweep sweep_section.cc).
 
 namespace thinlayer
 {
-  namespace
-  {
-    /// More load steps than anyone means (and than memory holds at 1e9).
-    constexpr unsigned long max_load_steps = 100000;
-
-    std::vector<double>
-    parse_increments(const std::string &text, const std::string &file)
-    {
-      const std::string   entry = "Loading/Load increments";
-      std::vector<double> result;
-      for (const auto &item : Utilities::split_string_list(text, ','))
-        {
-          const auto        star      = item.find('*');
-          const std::string count     = star == std::string::npos
-                                          ? "1"
-                                          : Utilities::trim(item.substr(0, star));
-          double            increment = 0;
-          if (!to_number(Utilities::trim(item.substr(
-                           star == std::string::npos ? 0 : star + 1)),
-                         increment) ||
-              count.empty() ||
-              count.find_first_not_of("0123456789") != std::string::npos ||
-              count.size() > 9 || std::stoul(count) > max_load_steps)
-            throw InputError(file,
-                             entry,
-                             "expected a number or 'n*number' (n a whole "
-                             "number of steps, at most " +
-                               std::to_string(max_load_steps) + "), got '" +
-                               item + "'");
-          const unsigned long n = std::stoul(count);
-          if (n == 0)
-            throw InputError(file,
-                             entry,
-                             "expected a repeat count of at least 1, got '" +
-                               item + "' (no steps)");
-          if (!std::isfinite(increment))
-            throw InputError(file,
-                             entry,
-                             "expected finite numbers, got '" + item + "'");
-          if (increment == 0)
-            throw InputError(file,
-                             entry,
-                             "expected non-zero increments, got '" + item +
-                               "': a step of 0 applies nothing");
-          if (result.size() + n > max_load_steps)
-            throw InputError(file,
-                             entry,
-                             "expected at most " +
-                               std::to_string(max_load_steps) +
-                               " load steps, got more");
-          result.insert(result.end(), n, increment);
-        }
-      if (result.empty())
-        throw InputError(file, entry, "expected at least one increment");
-      return result;
-    }
-
-
-  } // namespace
-
-
-  void
-  LoadingParameters::declare(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Loading");
-    prm.declare_entry(
-      "Load increments",
-      "1",
-      Patterns::Anything(),
-      "Increments of the load factor, one per load step, comma-separated; "
-      "'n*d' repeats the increment d n times (e.g. '0.5, 10*0.05'). All "
-      "tractions, pressures and prescribed displacements scale with the "
-      "load factor.");
-    prm.declare_entry(
-      "Collapse resolution",
-      "0.005",
-      Patterns::Double(0, 1),
-      "Automatic load stepping: a load step that fails is halved and tried "
-      "again from the last accepted state, and steps grow back to the "
-      "programme's after easy ones (converged in at most a quarter of "
-      "Solver/Maximum iterations); under load, a step that converges on "
-      "the mechanism (its secant stiffness below 0.01 of the elastic one) "
-      "is cut back the same way and never accepted. A step that still "
-      "fails, or lands on the mechanism, when it is at most this fraction "
-      "of its load factor ends the run, the collapse load then bracketed "
-      "to it (0.005: 0.5%). 0: the programme as given, the first failed "
-      "step ending the run (the paper's way).");
-    prm.leave_subsection();
-  }
-
-
-  void
-  LoadingParameters::parse(ParameterHandler &prm, const std::string &file)
-  {
-    prm.enter_subsection("Loading");
-    load_increments     = parse_increments(prm.get("Load increments"), file);
-    collapse_resolution = prm.get_double("Collapse resolution");
-    prm.leave_subsection();
-  }
-
-
   const NameTable<SolverParameters::Method> SolverParameters::method_names = {
     {Method::viscoplastic, "viscoplastic"},
     {Method::initial_stress, "initial stress"},

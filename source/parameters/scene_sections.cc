@@ -408,6 +408,13 @@ namespace thinlayer
                       "load programme of the weight alone is gravity "
                       "loading. Drained analysis in total stresses: no pore "
                       "pressures.");
+    prm.declare_entry("K0",
+                      "1 - sin(phi)",
+                      Patterns::Anything(),
+                      "The coefficient of earth pressure at rest, "
+                      "sigma_h / sigma_v, of Initial state/Procedure = K0 "
+                      "procedure: a number > 0, or '1 - sin(phi)' (Jaky's, "
+                      "1 without friction).");
     prm.leave_subsection();
   }
 
@@ -468,6 +475,18 @@ namespace thinlayer
                        "an elastic material has no cohesion; expected 0, or "
                        "a yield criterion");
     check_dilation_angle(prm, file, section);
+    const std::string k0_text = prm.get("K0");
+    std::string       compact;
+    for (const char c : k0_text)
+      if (c != ' ')
+        compact += c;
+    if (compact == "1-sin(phi)")
+      k0 = 1 - std::sin(friction_angle * numbers::PI / 180);
+    else if (!to_number(k0_text, k0) || !(k0 > 0) || !std::isfinite(k0))
+      throw InputError(file,
+                       section + "/K0",
+                       "expected a number > 0 or '1 - sin(phi)', got '" +
+                         k0_text + "'");
     prm.leave_subsection();
   }
 

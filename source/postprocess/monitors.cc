@@ -178,6 +178,7 @@ namespace thinlayer
       ++m;
     ModeVector f(analysis.internal_forces()[m]);
     f.add(-analysis.load_factor(), analysis.mode_system(m).unit_load);
+    f -= analysis.mode_system(m).held_load;
     condense(analysis.get_element_constraints(), f);
 
     // Components: 0 x or r, 1 y or z, 2 theta or z; coordinates likewise.

@@ -64,6 +64,7 @@ namespace thinlayer
         ModeVector       &r    = residual[m];
         r                      = mode.unit_load;
         r *= target;
+        r += mode.held_load;
         norms.forces = std::max({norms.forces,
                                  r.linfty_norm(),
                                  analysis.internal_forces()[m].linfty_norm()});

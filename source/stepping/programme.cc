@@ -70,12 +70,12 @@ namespace thinlayer
   {
     // An easy step: at most a quarter of the constant-stiffness
     // iteration limit (Newton's steps take a few iterations each).
-    LoadStepping stepping(p.loading,
+    LoadStepping stepping(loading,
                           p.solver.continue_after_failure,
                           p.solver.max_iterations / 4);
     while (!stepping.finished())
       {
-        const Attempt a = attempt(stepping.step(),
+        const Attempt a = attempt(phase.steps_before + stepping.step(),
                                   stepping.target(),
                                   stepping.failure_is_final());
         // A signal stopped the step: it is neither a failure nor a
@@ -137,9 +137,9 @@ namespace thinlayer
         result.bracket_resolved =
           stepping.automatic() &&
           std::abs(a.load_factor - result.last_converged_load_factor) <=
-            (1 + 1e-9) * p.loading.collapse_resolution *
+            (1 + 1e-9) * loading.collapse_resolution *
               std::max(std::abs(a.load_factor),
-                       std::abs(p.loading.load_increments.front()));
+                       std::abs(loading.load_increments.front()));
         result.stiffness_ratio = a.stiffness_ratio;
         result.growth_ratio    = a.result.growth_ratio;
         if (stepping.automatic() && !a.result.non_finite && !a.against_load &&
@@ -200,13 +200,15 @@ namespace thinlayer
     const double displacement = result.displacement.mean;
     if (a.result.converged)
       a.rise = plateau_rise(result.curve, displacement, a.load);
-    const bool automatic = p.loading.collapse_resolution > 0;
+    const bool automatic = loading.collapse_resolution > 0;
     a.on_mechanism       = a.result.converged && automatic &&
                      analysis.has_external_load() && a.stiffness_ratio >= 0 &&
                      a.stiffness_ratio < mechanism_knee_ratio;
-    // Under load or prescribed displacement alike.
+    // Under load or prescribed displacement alike; a load that falls
+    // towards its limit (an active earth pressure from the at-rest one)
+    // levels off as one that rises.
     a.on_plateau = a.result.converged && automatic &&
-                   a.rise <= p.loading.collapse_resolution;
+                   std::abs(a.rise) <= loading.collapse_resolution;
     // More than doubled: the displacement grew more than twice as much as
     // the load (never on a linear response).
     if (a.result.converged && automatic && !result.curve.empty())
@@ -236,7 +238,8 @@ namespace thinlayer
                                 a.result,
                                 next == LoadStepping::Next::accept ||
                                   next == LoadStepping::Next::accept_failed,
-                                a.stiffness_ratio});
+                                a.stiffness_ratio,
+                                phase.name});
       if (next != LoadStepping::Next::retry)
         {
           if (p.output.write_vtu)

@@ -35,6 +35,14 @@ namespace thinlayer
 
   template <int dim>
   void
+  StepSolver<dim>::begin_phase()
+  {
+    method->initialize();
+  }
+
+
+  template <int dim>
+  void
   StepSolver<dim>::accept()
   {
     Assert(analysis.is_pending(),

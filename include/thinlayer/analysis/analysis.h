@@ -161,6 +161,47 @@ namespace thinlayer
     is_pending() const;
 
     /// @}
+    /// @name Phases: the initial state, then the loading
+    /// @{
+
+    /// The loads a phase applies in proportion to its load factor.
+    enum class PhaseLoads
+    {
+      /// The Boundary sections' values and the weight with the surcharge:
+      /// a run of one phase (gravity loading, if it has weight).
+      boundaries_and_weight,
+      /// The weight with the surcharge: the initial phase of gravity
+      /// loading (the prescribed displacements held at zero).
+      weight,
+      /// The Boundary sections' values: the loading after an initial
+      /// state.
+      boundaries
+    };
+
+    /**
+     * Begin a phase that applies @p loads: the loads of the phase before
+     * it, at its accepted load factor, are held fixed from now on, and the
+     * load factor starts again from 0. With @p reset_displacements the
+     * displacements start from zero; the stresses are kept. Throws
+     * InputError if the phase applies nothing.
+     */
+    void
+    begin_phase(const PhaseLoads loads, const bool reset_displacements);
+
+    /**
+     * The K0 procedure (KZeroStresses): every point of the continuum
+     * starts from the at-rest stresses of the weight and the surcharge,
+     * which are held as the body's load. Throws InputError where the
+     * ground surface is not level or a point's stress lies outside its
+     * material's yield surface. Returns the out-of-balance force of the
+     * initial stresses against that load, condensed, relative to the load
+     * (both the largest entry): zero on a level ground but for the
+     * quadrature's error on distorted cells.
+     */
+    double
+    set_initial_stresses();
+
+    /// @}
     /// @name What the solution methods do to the state
     /// @{
 
@@ -422,6 +463,11 @@ namespace thinlayer
     void
     check_supports_and_load() const;
 
+    /// The current phase's vectors at unit load factor from the parts
+    /// (ModeSystem) that @p loads names.
+    void
+    set_phase_loads(const PhaseLoads loads);
+
     /// Right-hand sides at unit load factor, factorisations, and the time
     /// one substitution takes.
     void
@@ -498,230 +544,8 @@ namespace thinlayer
     bool   pending;
     double substitution_time;
   };
-
-
-  // The accessors, inline: each returns a member or looks one up.
-
-  template <int dim>
-  inline unsigned int
-  Analysis<dim>::n_modes() const
-  {
-    return systems.size();
-  }
-
-
-  template <int dim>
-  inline const ModeSystem &
-  Analysis<dim>::mode_system(const unsigned int m) const
-  {
-    return *systems[m];
-  }
-
-
-  template <int dim>
-  inline void
-  Analysis<dim>::elastic_solve(const unsigned int m, ModeVector &rhs)
-  {
-    systems[m]->solve(rhs);
-  }
-
-
-  template <int dim>
-  inline const ModeVectors &
-  Analysis<dim>::solution() const
-  {
-    return solution_vectors;
-  }
-
-
-  template <int dim>
-  inline ModeVectors &
-  Analysis<dim>::step_increment()
-  {
-    return increment_vectors;
-  }
-
-
-  template <int dim>
-  inline const ModeVectors &
-  Analysis<dim>::step_increment() const
-  {
-    return increment_vectors;
-  }
-
-
-  template <int dim>
-  inline const ModeVectors &
-  Analysis<dim>::internal_forces() const
-  {
-    return internal_force_vectors;
-  }
-
-
-  template <int dim>
-  inline double
-  Analysis<dim>::load_factor() const
-  {
-    return current_lambda;
-  }
-
-
-  template <int dim>
-  inline double
-  Analysis<dim>::accepted_load_factor() const
-  {
-    return accepted_lambda;
-  }
-
-
-  template <int dim>
-  inline bool
-  Analysis<dim>::is_pending() const
-  {
-    return pending;
-  }
-
-
-  template <int dim>
-  inline const ContinuumCells<dim> &
-  Analysis<dim>::cells() const
-  {
-    return *continuum;
-  }
-
-
-  template <int dim>
-  inline const PointState &
-  Analysis<dim>::point_state(const unsigned int cell,
-                             const unsigned int q,
-                             const unsigned int station) const
-  {
-    return continuum->point_state(cell, q, station);
-  }
-
-
-  template <int dim>
-  inline const SymmetricTensor<2, 3> &
-  Analysis<dim>::stress(const unsigned int cell, const unsigned int q) const
-  {
-    return point_state(cell, q).stress;
-  }
-
-
-  template <int dim>
-  inline const MaterialLaw &
-  Analysis<dim>::material_law(const unsigned int cell) const
-  {
-    return continuum->material_law(cell);
-  }
-
-
-  template <int dim>
-  inline unsigned int
-  Analysis<dim>::n_quadrature_points() const
-  {
-    return quadrature.size();
-  }
-
-
-  template <int dim>
-  inline const Kinematics &
-  Analysis<dim>::get_kinematics() const
-  {
-    return kinematics;
-  }
-
-
-  template <int dim>
-  inline const DoFHandler<dim> &
-  Analysis<dim>::get_dof_handler() const
-  {
-    return dof_handler;
-  }
-
-
-  template <int dim>
-  inline const Triangulation<dim> &
-  Analysis<dim>::whole_mesh() const
-  {
-    return tria;
-  }
-
-
-  template <int dim>
-  inline bool
-  Analysis<dim>::owns_whole_cell(const unsigned int c) const
-  {
-    return whole_partition.owner.empty() ||
-           whole_partition.owner[c] == whole_partition.rank;
-  }
-
-
-  template <int dim>
-  inline const Mapping<dim> &
-  Analysis<dim>::get_mapping() const
-  {
-    return mapping;
-  }
-
-
-  template <int dim>
-  inline const CellPartition &
-  Analysis<dim>::get_partition() const
-  {
-    return partition;
-  }
-
-
-  template <int dim>
-  inline const std::vector<IndexSet> &
-  Analysis<dim>::get_owned_per_rank() const
-  {
-    return owned_per_rank;
-  }
-
-
-  template <int dim>
-  inline const AffineConstraints<double> &
-  Analysis<dim>::get_element_constraints() const
-  {
-    return element_constraints;
-  }
-
-
-  template <int dim>
-  inline Vector<double>
-  Analysis<dim>::get_solution(const unsigned int mode) const
-  {
-    return whole(solution_vectors[mode]);
-  }
-
-
-  template <int dim>
-  inline types::global_dof_index
-  Analysis<dim>::n_dofs() const
-  {
-    return dof_handler.n_dofs() - n_element_constrained;
-  }
-
-
-  template <int dim>
-  inline types::global_dof_index
-  Analysis<dim>::n_equations() const
-  {
-    types::global_dof_index n = 0;
-    for (const types::global_dof_index c : n_constrained)
-      n += dof_handler.n_dofs() - c;
-    return n;
-  }
-
-
-  template <int dim>
-  inline double
-  Analysis<dim>::substitution_seconds() const
-  {
-    return substitution_time;
-  }
 } // namespace thinlayer
+
+#include <thinlayer/analysis/analysis_accessors.h>
 
 #endif

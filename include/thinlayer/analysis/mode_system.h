@@ -56,10 +56,24 @@ namespace thinlayer
     SparseMatrix<double>      stiffness;
     SparseMatrix<double>      condensed_stiffness;
     FactorisedStiffness       factorisation;
-    ModeVector                unit_prescribed_displacement;
-    ModeVector                unit_load;
-    /// f - K u_prescribed at unit load factor.
+    /// What the current phase applies at unit load factor: the prescribed
+    /// displacements, the loads, and f - K u_prescribed.
+    ModeVector unit_prescribed_displacement;
+    ModeVector unit_load;
     ModeVector unit_rhs;
+
+    /// The parts the phases combine into the above
+    /// (Analysis::begin_phase()): the Boundary sections' prescribed
+    /// displacements, tractions and their f - K u_prescribed, and the
+    /// body's weight with the surcharge.
+    ModeVector boundary_prescribed_displacement;
+    ModeVector boundary_load;
+    ModeVector boundary_rhs;
+    ModeVector weight_load;
+    /// The external load held fixed while the phase runs: the loads of the
+    /// phases before it at their end, or the weight that the initial
+    /// stresses carry. Zero in a run of one phase.
+    ModeVector held_load;
 
     /// On several ranks: the condensed stiffness (freed once factorised),
     /// and its factors (made only there: a PETSc object needs PETSc

@@ -33,6 +33,41 @@ namespace thinlayer
              const std::map<types::material_id, double> &unit_weights,
              const unsigned int                          m,
              ModeVector                                 &load);
+
+  /// The outward unit normal of boundary face @p f of @p cell, from its
+  /// vertices (the cells are straight-sided: gmsh's first-order meshes).
+  template <int dim>
+  Tensor<1, dim>
+  outward_normal(const typename Triangulation<dim>::cell_iterator &cell,
+                 const unsigned int                                f);
+
+  /**
+   * The level of the ground surface of @p mesh: the highest y of the
+   * boundary faces that face upward (outward normal with a positive y
+   * component). Where the mesh is split over ranks, @p mesh is the mesh as
+   * read, which every rank holds whole.
+   */
+  template <int dim>
+  double
+  ground_level(const Triangulation<dim> &mesh);
+
+  /**
+   * Add a pressure @p pressure on the ground surface at unit load factor
+   * to mode @p m's load vector @p load: the consistent nodal forces of the
+   * traction -p e_y on the boundary faces that face straight up at the
+   * height @p level (ground_level()). Axisymmetric in a Fourier body, like
+   * the weight (add_weight()). Adds this rank's cells, then sums over
+   * ranks (compress).
+   */
+  template <int dim>
+  void
+  add_ground_pressure(const Mapping<dim>    &mapping,
+                      const DoFHandler<dim> &dof_handler,
+                      const Kinematics      &kinematics,
+                      const double           level,
+                      const double           pressure,
+                      const unsigned int     m,
+                      ModeVector            &load);
 } // namespace thinlayer
 
 #endif

@@ -16,6 +16,7 @@
 #include <thinlayer/parallel/cell_partition.h>
 #include <thinlayer/parameters/scene_sections.h>
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <vector>
@@ -132,6 +133,17 @@ namespace thinlayer
     /// The material law of active cell @p cell.
     const MaterialLaw &
     material_law(const unsigned int cell) const;
+
+    /**
+     * Start every point and station of this rank's cells from the stress
+     * @p initial(x, material id) at the point's place x, as its converged
+     * stress: the initial stresses of the K0 procedure. The internal
+     * forces are the analysis's to compute from them.
+     */
+    void
+    set_initial_stresses(
+      const std::function<SymmetricTensor<2, 3>(const Point<dim> &,
+                                                types::material_id)> &initial);
 
   private:
     /// Work space of one chunk of Newton's cell matrices.

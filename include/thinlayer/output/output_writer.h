@@ -38,6 +38,8 @@ namespace thinlayer
     /// The attempt's secant stiffness along its increment against the
     /// elastic one (Analysis::secant_stiffness_ratio()).
     double stiffness_ratio;
+    /// The phase of the run (Phase): "initial state" or "loading".
+    std::string phase;
   };
 
   /**

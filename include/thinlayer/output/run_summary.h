@@ -1,6 +1,7 @@
 #ifndef thinlayer_output_run_summary_h
 #define thinlayer_output_run_summary_h
 
+#include <limits>
 #include <map>
 #include <string>
 
@@ -36,6 +37,20 @@ namespace thinlayer
      */
     std::string outcome;
     std::string reason;
+    /// The phase the outcome and the figures of the load steps are of:
+    /// "loading", or "initial state" where gravity loading did not
+    /// complete and the loading was not run.
+    std::string phase;
+    /// Initial state/Procedure, and how it ended: "set" (K0 procedure),
+    /// gravity loading's outcome, or empty (none); its reason, and the
+    /// load steps of gravity loading.
+    std::string  initial_state;
+    std::string  initial_state_outcome;
+    std::string  initial_state_reason;
+    unsigned int initial_state_steps = 0;
+    /// The K0 procedure's out-of-balance force against the weight it
+    /// carries (Analysis::set_initial_stresses()); NaN otherwise.
+    double initial_out_of_balance = std::numeric_limits<double>::quiet_NaN();
     /// The collapse load: the last accepted load where the outcome is a
     /// collapse; under prescribed displacement, the load's plateau if the
     /// last step reached one; NaN otherwise.
@@ -134,6 +149,12 @@ namespace thinlayer
       visitor("equations", equations);
       visitor("outcome", outcome);
       visitor("reason", reason);
+      visitor("phase", phase);
+      visitor("initial_state", initial_state);
+      visitor("initial_state_outcome", initial_state_outcome);
+      visitor("initial_state_reason", initial_state_reason);
+      visitor("initial_state_steps", initial_state_steps);
+      visitor("initial_out_of_balance", initial_out_of_balance);
       visitor("collapse_load", collapse_load);
       visitor("knee_load", knee_load);
       visitor("converged", converged);

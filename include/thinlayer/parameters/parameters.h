@@ -2,6 +2,7 @@
 #define thinlayer_parameters_parameters_h
 
 #include <thinlayer/parameters/interface_sections.h>
+#include <thinlayer/parameters/loading_sections.h>
 #include <thinlayer/parameters/run_sections.h>
 #include <thinlayer/parameters/scene_sections.h>
 #include <thinlayer/parameters/sweep_section.h>
@@ -54,6 +55,7 @@ namespace thinlayer
     std::map<types::boundary_id, BoundaryParameters> boundaries;
     /// Physical curves of zero-thickness interface elements.
     std::map<types::boundary_id, InterfaceElementParameters> interface_elements;
+    InitialStateParameters                                   initial_state;
     LoadingParameters                                        loading;
     SolverParameters                                         solver;
     MonitorParameters                                        monitors;

@@ -21,24 +21,8 @@ namespace thinlayer
   struct KinematicsParameters;
   struct MeshParameters;
 
-  // The sections of the run: its load programme, solver, monitors,
-  // reference and output (source/parameters/run_sections.cc).
-
-  /// "Loading": the load programme.
-  struct LoadingParameters
-  {
-    /// Increments of the load factor, one per load step: the programme.
-    std::vector<double> load_increments;
-    /// Automatic stepping: a failed step is halved and retried until the
-    /// collapse load is bracketed to this fraction of the load factor; 0
-    /// runs the programme as given (LoadStepping).
-    double collapse_resolution;
-
-    static void
-    declare(ParameterHandler &prm);
-    void
-    parse(ParameterHandler &prm, const std::string &parameter_file);
-  };
+  // The sections of the run: its solver, monitors, reference and output
+  // (source/parameters/run_sections.cc).
 
   /// "Solver": how the elasto-plastic equations of a load step are solved.
   struct SolverParameters

@@ -120,6 +120,8 @@ namespace thinlayer
     double dilation_angle;
     /// gamma, the weight per unit volume, acting along -y (body_loads.h).
     double unit_weight;
+    /// The ratio sigma_h / sigma_v of the K0 procedure's initial stresses.
+    double k0;
 
     static const NameTable<YieldCriterion> yield_criterion_names;
 

@@ -32,8 +32,8 @@ namespace thinlayer
   public:
     virtual ~SolutionMethod() = default;
 
-    /// Allocate the method's state; called once, after the body is set
-    /// up.
+    /// Allocate the method's state, or start it afresh: called after the
+    /// body is set up, and again at the start of each phase.
     virtual void
     initialize() = 0;
 

@@ -10,6 +10,7 @@
 #include <thinlayer/stepping/step_solver.h>
 
 #include <ostream>
+#include <string>
 #include <vector>
 
 namespace thinlayer
@@ -21,8 +22,22 @@ namespace thinlayer
   class Monitors;
 
   /**
-   * The load programme of a run, attempt by attempt: LoadStepping says
-   * which load factor comes next, the StepSolver solves it with the
+   * One phase of a run (Initial state, Loading): its name, as
+   * history.csv's phase column and summary.json give it, its load
+   * programme, and the number its first step takes (the steps of a run
+   * are numbered on across its phases, as its fields files are).
+   */
+  struct Phase
+  {
+    std::string       name;
+    LoadingParameters loading;
+    unsigned int      steps_before = 0;
+  };
+
+
+  /**
+   * The load programme of a phase of a run, attempt by attempt: LoadStepping
+   * says which load factor comes next, the StepSolver solves it with the
    * solution method, and the programme measures the attempt (load,
    * displacement, secant stiffness, the load's rise over the last doubling
    * of the displacement), decides whether a
@@ -44,6 +59,7 @@ namespace thinlayer
   {
   public:
     Programme(const Parameters                     &p,
+              const Phase                          &phase,
               Analysis<dim>                        &analysis,
               StepSolver<dim>                      &solver,
               const Monitors<dim>                  &monitors,
@@ -52,6 +68,8 @@ namespace thinlayer
               TimerOutput                          &timer,
               std::ostream                         &out)
       : p(p)
+      , phase(phase)
+      , loading(phase.loading)
       , analysis(analysis)
       , solver(solver)
       , monitors(monitors)
@@ -116,6 +134,8 @@ namespace thinlayer
     probe_beyond(const Attempt &failed);
 
     const Parameters                     &p;
+    const Phase                          &phase;
+    const LoadingParameters              &loading;
     Analysis<dim>                        &analysis;
     StepSolver<dim>                      &solver;
     const Monitors<dim>                  &monitors;

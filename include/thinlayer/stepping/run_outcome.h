@@ -47,7 +47,9 @@ namespace thinlayer
    * d: so a rise of at most the collapse resolution r says the load has
    * reached its plateau to r, whichever way the body is driven (and L_h,
    * taken at or below d / 2 on a rising curve, only overstates the rise).
-   * A load that fell gives a rise below zero: past the limit.
+   * A load that fell gives a rise below zero: one falling towards its
+   * limit from an initial state above it (an active earth pressure from
+   * the at-rest one) levels off to r when its magnitude is at most r.
    */
   double
   plateau_rise(const std::vector<CurvePoint> &states,

@@ -40,6 +40,11 @@ namespace thinlayer
     StepResult
     solve(const double load_factor, const bool final = true);
 
+    /// A new phase has begun (Analysis::begin_phase()): the method starts
+    /// afresh, keeping nothing of the last phase's steps (its predictor).
+    void
+    begin_phase();
+
     /// Make the pending state the accepted one.
     void
     accept();

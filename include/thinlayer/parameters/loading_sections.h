@@ -1,0 +1,77 @@
+#ifndef thinlayer_parameters_loading_sections_h
+#define thinlayer_parameters_loading_sections_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <thinlayer/base/name_table.h>
+
+#include <string>
+#include <vector>
+
+namespace thinlayer
+{
+  using namespace dealii;
+
+  // The phases of a run: the initial state the body starts from, and the
+  // loading that follows it (source/parameters/loading_sections.cc).
+
+  /// "Loading": the load programme.
+  struct LoadingParameters
+  {
+    /// Increments of the load factor, one per load step: the programme.
+    std::vector<double> load_increments;
+    /// Automatic stepping: a failed step is halved and retried until the
+    /// collapse load is bracketed to this fraction of the load factor; 0
+    /// runs the programme as given (LoadStepping).
+    double collapse_resolution;
+
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm, const std::string &parameter_file);
+  };
+
+
+  /**
+   * "Initial state": the stresses the body carries before its loading, as
+   * a geotechnical model starts from the ground's weight rather than from
+   * a weightless body. Either set at once by the K0 procedure (which only
+   * a level ground has in equilibrium), or reached by a phase of its own
+   * that applies the weight in steps (gravity loading, elastic-plastic).
+   * Either way the loading that follows holds the weight (and the
+   * surcharge) fixed and applies the Boundary sections' values.
+   */
+  struct InitialStateParameters
+  {
+    enum class Procedure
+    {
+      /// A weightless start: the weight, if any, is part of the loading.
+      none,
+      /// sigma_v from the weight above and the surcharge, sigma_h = K0
+      /// sigma_v per material.
+      k0,
+      /// The weight in a phase of its own, by the load programme below.
+      gravity_loading
+    };
+    static const NameTable<Procedure> procedure_names;
+
+    Procedure procedure;
+    /// Gravity loading's programme: increments of the weight's factor,
+    /// adding up to 1.
+    std::vector<double> load_increments;
+    /// A pressure on the ground surface (the highest upward-facing
+    /// boundary faces), part of the ground's weight.
+    double surcharge;
+    /// Whether the loading's displacements start from zero: those of the
+    /// weight are of no interest to a footing's settlement or a wall's
+    /// movement.
+    bool reset_displacements;
+
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm, const std::string &parameter_file);
+  };
+} // namespace thinlayer
+
+#endif

@@ -1,0 +1,191 @@
+#include <deal.II/base/utilities.h>
+
+#include <thinlayer/base/input_error.h>
+#include <thinlayer/parameters/loading_sections.h>
+#include <thinlayer/parameters/parameter_checks.h>
+
+#include <cmath>
+#include <numeric>
+
+namespace thinlayer
+{
+  namespace
+  {
+    /// More load steps than anyone means (and than memory holds at 1e9).
+    constexpr unsigned long max_load_steps = 100000;
+
+    std::vector<double>
+    parse_increments(const std::string &text,
+                     const std::string &file,
+                     const std::string &entry)
+    {
+      std::vector<double> result;
+      for (const auto &item : Utilities::split_string_list(text, ','))
+        {
+          const auto        star      = item.find('*');
+          const std::string count     = star == std::string::npos
+                                          ? "1"
+                                          : Utilities::trim(item.substr(0, star));
+          double            increment = 0;
+          if (!to_number(Utilities::trim(item.substr(
+                           star == std::string::npos ? 0 : star + 1)),
+                         increment) ||
+              count.empty() ||
+              count.find_first_not_of("0123456789") != std::string::npos ||
+              count.size() > 9 || std::stoul(count) > max_load_steps)
+            throw InputError(file,
+                             entry,
+                             "expected a number or 'n*number' (n a whole "
+                             "number of steps, at most " +
+                               std::to_string(max_load_steps) + "), got '" +
+                               item + "'");
+          const unsigned long n = std::stoul(count);
+          if (n == 0)
+            throw InputError(file,
+                             entry,
+                             "expected a repeat count of at least 1, got '" +
+                               item + "' (no steps)");
+          if (!std::isfinite(increment))
+            throw InputError(file,
+                             entry,
+                             "expected finite numbers, got '" + item + "'");
+          if (increment == 0)
+            throw InputError(file,
+                             entry,
+                             "expected non-zero increments, got '" + item +
+                               "': a step of 0 applies nothing");
+          if (result.size() + n > max_load_steps)
+            throw InputError(file,
+                             entry,
+                             "expected at most " +
+                               std::to_string(max_load_steps) +
+                               " load steps, got more");
+          result.insert(result.end(), n, increment);
+        }
+      if (result.empty())
+        throw InputError(file, entry, "expected at least one increment");
+      return result;
+    }
+
+
+  } // namespace
+
+
+  void
+  LoadingParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Loading");
+    prm.declare_entry(
+      "Load increments",
+      "1",
+      Patterns::Anything(),
+      "Increments of the load factor, one per load step, comma-separated; "
+      "'n*d' repeats the increment d n times (e.g. '0.5, 10*0.05'). All "
+      "tractions, pressures and prescribed displacements scale with the "
+      "load factor (and the weight, unless Initial state/Procedure gives it "
+      "a phase of its own or the initial stresses carry it).");
+    prm.declare_entry(
+      "Collapse resolution",
+      "0.005",
+      Patterns::Double(0, 1),
+      "Automatic load stepping: a load step that fails is halved and tried "
+      "again from the last accepted state, and steps grow back to the "
+      "programme's after easy ones (converged in at most a quarter of "
+      "Solver/Maximum iterations); under load, a step that converges on "
+      "the mechanism (its secant stiffness below 0.01 of the elastic one) "
+      "is cut back the same way and never accepted. A step that still "
+      "fails, or lands on the mechanism, when it is at most this fraction "
+      "of its load factor ends the run, the collapse load then bracketed "
+      "to it (0.005: 0.5%). 0: the programme as given, the first failed "
+      "step ending the run (the paper's way).");
+    prm.leave_subsection();
+  }
+
+
+  void
+  LoadingParameters::parse(ParameterHandler &prm, const std::string &file)
+  {
+    prm.enter_subsection("Loading");
+    load_increments     = parse_increments(prm.get("Load increments"),
+                                       file,
+                                       "Loading/Load increments");
+    collapse_resolution = prm.get_double("Collapse resolution");
+    prm.leave_subsection();
+  }
+
+
+  const NameTable<InitialStateParameters::Procedure>
+    InitialStateParameters::procedure_names = {{Procedure::none, "none"},
+                                               {Procedure::k0, "K0 procedure"},
+                                               {Procedure::gravity_loading,
+                                                "gravity loading"}};
+
+
+  void
+  InitialStateParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Initial state");
+    prm.declare_entry(
+      "Procedure",
+      "none",
+      Patterns::Selection(procedure_names.pattern()),
+      "The stresses the loading starts from. 'none': a weightless start, "
+      "the weight (if any Material/Unit weight) part of the loading. 'K0 "
+      "procedure': sigma_v = -(surcharge + the weight of the material "
+      "above the point), sigma_h = K0 sigma_v (Material/K0), set at once; "
+      "only a level ground surface and horizontal layers have it in "
+      "equilibrium (refused where the surface is not level, and where it "
+      "lies outside a material's yield surface); 2D meshes (plane strain, "
+      "Fourier). 'gravity loading': the weight and the surcharge applied "
+      "in a phase of their own (Load increments below), elastic-plastic, "
+      "any kinematics. Either way the loading then holds them fixed.");
+    prm.declare_entry("Load increments",
+                      "4*0.25",
+                      Patterns::Anything(),
+                      "Gravity loading's programme: increments of the "
+                      "weight's factor, adding up to 1 (the syntax of "
+                      "Loading/Load increments; automatic stepping with "
+                      "Loading/Collapse resolution).");
+    prm.declare_entry("Surcharge",
+                      "0",
+                      Patterns::Double(),
+                      "A pressure (>= 0) on the ground surface: the "
+                      "upward-facing boundary faces at the body's top "
+                      "level. It loads the body with its weight.");
+    prm.declare_entry("Reset displacements",
+                      "true",
+                      Patterns::Bool(),
+                      "Whether the loading's displacements start from zero "
+                      "(those of the initial state are then not part of "
+                      "the monitored displacements, the history or the "
+                      "fields); the stresses are kept.");
+    prm.leave_subsection();
+  }
+
+
+  void
+  InitialStateParameters::parse(ParameterHandler &prm, const std::string &file)
+  {
+    prm.enter_subsection("Initial state");
+    procedure       = procedure_names.value(prm.get("Procedure"));
+    load_increments = parse_increments(prm.get("Load increments"),
+                                       file,
+                                       "Initial state/Load increments");
+    const double total =
+      std::accumulate(load_increments.begin(), load_increments.end(), 0.);
+    if (std::abs(total - 1) > 1e-9)
+      throw InputError(file,
+                       "Initial state/Load increments",
+                       "expected increments adding up to 1 (the whole "
+                       "weight), got '" +
+                         prm.get("Load increments") + "' (sum " +
+                         std::to_string(total) + ")");
+    surcharge = prm.get_double("Surcharge");
+    if (!(surcharge >= 0) || !std::isfinite(surcharge))
+      throw InputError(file,
+                       "Initial state/Surcharge",
+                       "expected a pressure >= 0, got " + prm.get("Surcharge"));
+    reset_displacements = prm.get_bool("Reset displacements");
+    prm.leave_subsection();
+  }
+} // namespace thinlayer
