@@ -142,8 +142,9 @@ namespace thinlayer
               MaterialParameters::section(id) + "/K0",
               "the K0 procedure's initial stress lies outside the yield "
               "surface of material " +
-                std::to_string(id) + " (" + material.name +
-                ") in the cell centred at (" + printf("%g", x) + ", " +
+                std::to_string(id) +
+                (material.name.empty() ? "" : " (" + material.name + ")") +
+                " in the cell centred at (" + printf("%g", x) + ", " +
                 printf("%g", y) + "): yield ratio " +
                 printf("%.3g", global_worst) +
                 " (K0 = " + printf("%g", material.k0) +

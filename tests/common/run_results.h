@@ -5,6 +5,7 @@
 #define thinlayer_tests_run_results_h
 
 #include <thinlayer/app/command_line.h>
+#include <thinlayer/parallel/mpi.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -13,6 +14,8 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include <mpi.h>
 
 namespace run_results
 {
@@ -23,11 +26,21 @@ namespace run_results
            const std::vector<std::string> &options = {},
            const std::string              &file    = "scene.prm")
   {
-    std::ofstream(file) << prm;
+    // On many ranks (a test under mpirun) rank 0 writes the file, and
+    // every rank reads the run's results once rank 0 has written them.
+    int parallel = 0;
+    MPI_Initialized(&parallel);
+    if (!parallel || thinlayer::mpi::is_root())
+      std::ofstream(file) << prm;
+    if (parallel)
+      MPI_Barrier(thinlayer::mpi::communicator());
     std::vector<std::string> arguments = {file};
     arguments.insert(arguments.end(), options.begin(), options.end());
     std::ostringstream out, err;
-    if (thinlayer::run_command_line(arguments, out, err) != 0)
+    const int status = thinlayer::run_command_line(arguments, out, err);
+    if (parallel)
+      MPI_Barrier(thinlayer::mpi::communicator());
+    if (status != 0)
       return err.str().empty() ? std::string("failed\n") : err.str();
     return "";
   }

@@ -1,0 +1,84 @@
+// Truth checked: an initial state the scene cannot have is refused with
+// one clear message naming the file and the entry, a non-zero exit, and
+// the previous run and a file of the user's beside it kept byte for byte:
+// a K0 that puts the at-rest stress outside the yield surface, the K0
+// procedure on ground that is not level, in 3D or with interface
+// elements, gravity loading that does not add up to the whole weight, a
+// procedure with no weight to start from, a K0 or a surcharge that is no
+// number the entry takes, and a loading that applies nothing after the
+// initial state.
+#include "../common/bad_input_utilities.h"
+
+using namespace bad_input;
+
+int
+main()
+{
+  write_valid_scene();
+  const std::string prm     = std::string(SOURCE_DIR) + "/../../prm/";
+  const std::string k0      = "Initial state/Procedure=K0 procedure";
+  const std::string gravity = "Initial state/Procedure=gravity loading";
+  const std::string weight  = "Material 1/Unit weight=20";
+
+  check("a K0 outside the yield surface (Tresca, c = 1, K0 = 0.2 under "
+        "gamma = 20)",
+        {"good.prm",
+         "-s",
+         k0,
+         "-s",
+         weight,
+         "-s",
+         "Material 1/Yield criterion=tresca",
+         "-s",
+         "Material 1/Cohesion=1",
+         "-s",
+         "Material 1/K0=0.2"});
+  check("a cohesionless K0 below K_a (phi = 30, K0 = 0.2)",
+        {"good.prm",
+         "-s",
+         k0,
+         "-s",
+         weight,
+         "-s",
+         "Material 1/Yield criterion=mohr-coulomb",
+         "-s",
+         "Material 1/Friction angle=30",
+         "-s",
+         "Material 1/K0=0.2"});
+  check("the K0 procedure on ground that is not level (a vertical cut)",
+        {prm + "vertical-cut.prm", "-s", k0, "-s", "Output/Directory=results"});
+  check("the K0 procedure in 3D",
+        {prm + "case1-3d.prm",
+         "-s",
+         k0,
+         "-s",
+         "Material 1/Unit weight=20",
+         "-s",
+         "Output/Directory=results"});
+  check("the K0 procedure with interface elements",
+        {prm + "case2-strip-footing-zero-thickness.prm",
+         "-s",
+         k0,
+         "-s",
+         "Material 1/Unit weight=20",
+         "-s",
+         "Output/Directory=results"});
+  check("gravity loading that adds up to 0.9 of the weight",
+        {"good.prm",
+         "-s",
+         gravity,
+         "-s",
+         weight,
+         "-s",
+         "Initial state/Load increments=0.5, 0.4"});
+  check("gravity loading with no weight", {"good.prm", "-s", gravity});
+  check("a K0 of -1",
+        {"good.prm", "-s", k0, "-s", weight, "-s", "Material 1/K0=-1"});
+  check("a K0 that is a word", {"good.prm", "-s", "Material 1/K0=jaky"});
+  check("a negative surcharge",
+        {"good.prm", "-s", k0, "-s", "Initial state/Surcharge=-10"});
+  check("an unknown procedure",
+        {"good.prm", "-s", "Initial state/Procedure=excavation"});
+  check("a loading that applies nothing after the initial state",
+        {"good.prm", "-s", k0, "-s", weight, "-s", "Boundary 2/Traction=0; 0"});
+}
