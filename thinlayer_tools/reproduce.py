@@ -22,8 +22,8 @@ import sys
 import time
 
 from thinlayer_tools import THINLAYER, TOP, mpirun, run_module
-from thinlayer_tools.report import (case1, case4, footings, limits, methods, page, parallel,
-                                    scaling, solid, speed, weight)
+from thinlayer_tools.report import (case1, case4, earth_pressure, footings, limits, methods, page,
+                                    parallel, scaling, solid, speed, weight)
 from thinlayer_tools.report.runs import DEFAULT, PAPER, Runs
 
 ALL_ALPHAS = "alpha = 10, 20, 30, 40, 45, 50, 60, 70, 80"
@@ -77,6 +77,8 @@ def run_list(quick):
     runs += limits.run_list(quick)
     # The body's own weight: a vertical cut by gravity loading.
     runs += weight.run_list(quick)
+    # Earth pressure from the at-rest state: Rankine on a smooth wall.
+    runs += earth_pressure.run_list(quick)
     # The same scenes on several MPI ranks (the fourth field), for the
     # section on ranks: every kinematics and element kind, each method kind.
     runs += parallel.ONE_RANK_RUNS
@@ -157,6 +159,7 @@ def sections(runs, quick):
     return (case1.sections(runs, quick) + footings.sections(runs, quick)
             + case4.sections(runs, quick) + methods.sections(runs, quick)
             + limits.sections(runs, quick) + weight.sections(runs, quick)
+            + earth_pressure.sections(runs, quick)
             + speed.sections(runs, quick)
             + parallel.sections(runs, quick) + scaling.sections(runs, quick)
             + solid.sections(runs, quick))

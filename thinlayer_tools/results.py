@@ -9,6 +9,7 @@ displacement, where it reached a plateau): collapse_load() is None
 otherwise, and no error is computed from it.
 """
 import csv
+import json
 import math
 import os
 
@@ -48,6 +49,23 @@ def read_csv(path):
 def history(directory):
     """Every row of DIRECTORY/history.csv."""
     return read_csv(os.path.join(directory, "history.csv"))
+
+
+def loading_history(directory):
+    """The rows of DIRECTORY/history.csv of the phase its summary's outcome
+    is of (the loading, unless an initial state ended the run), and the
+    (displacement, load) that phase starts from: (0, 0) without an initial
+    state."""
+    rows = history(directory)
+    path = os.path.join(directory, "summary.json")
+    if not os.path.exists(path):
+        return rows, (0.0, 0.0)
+    with open(path) as f:
+        s = json.load(f)
+    phase = s.get("phase", "loading")
+    start = (0.0, 0.0) if phase != "loading" else \
+        (number(s.get("initial_displacement", 0)), number(s.get("initial_load", 0)))
+    return [r for r in rows if r.get("phase", "loading") == phase], start
 
 
 def states(rows):

@@ -277,6 +277,8 @@ namespace thinlayer
             analysis.begin_phase(Analysis<dim>::PhaseLoads::boundaries,
                                  p.initial_state.reset_displacements);
             solver->begin_phase();
+            summary.initial_load         = monitors.load();
+            summary.initial_displacement = monitors.displacement().mean;
           }
         const ProgrammeResult result = run_phase(loading);
         judge_outcome(analysis.has_external_load(), result, summary);

@@ -103,11 +103,13 @@ def curve(ax, directory, label, scale_load=1.0, scale_displacement=1.0, **style)
     the same colour, not joined. An attempt far beyond the curve (a failed
     step's displacement can be 1e10 times the elastic one) is drawn as '>'
     at the right edge, so that it does not squash the curve. Returns the
-    run's history rows."""
-    rows = results.history(directory)
+    run's history rows. After an initial state (Initial state/Procedure)
+    the curve is the loading's, from the state the loading starts from."""
+    rows, start = results.loading_history(directory)
     states = results.states(rows)
-    u = [0.0] + [scale_displacement * results.number(s["displacement"]) for s in states]
-    p = [0.0] + [scale_load * results.number(s["load"]) for s in states]
+    u = [scale_displacement * start[0]] + \
+        [scale_displacement * results.number(s["displacement"]) for s in states]
+    p = [scale_load * start[1]] + [scale_load * results.number(s["load"]) for s in states]
     line, = ax.plot(u, p, label=label, **style)
     reach = 1.6 * max(abs(v) for v in u) or 1.0
     ended = [(scale_displacement * results.number(s["displacement"]),

@@ -51,6 +51,11 @@ namespace thinlayer
     /// The K0 procedure's out-of-balance force against the weight it
     /// carries (Analysis::set_initial_stresses()); NaN otherwise.
     double initial_out_of_balance = std::numeric_limits<double>::quiet_NaN();
+    /// The monitored load and displacement the loading starts from (after
+    /// an initial state; 0 without): where its load-displacement curve
+    /// begins.
+    double initial_load         = 0;
+    double initial_displacement = 0;
     /// The collapse load: the last accepted load where the outcome is a
     /// collapse; under prescribed displacement, the load's plateau if the
     /// last step reached one; NaN otherwise.
@@ -155,6 +160,8 @@ namespace thinlayer
       visitor("initial_state_reason", initial_state_reason);
       visitor("initial_state_steps", initial_state_steps);
       visitor("initial_out_of_balance", initial_out_of_balance);
+      visitor("initial_load", initial_load);
+      visitor("initial_displacement", initial_displacement);
       visitor("collapse_load", collapse_load);
       visitor("knee_load", knee_load);
       visitor("converged", converged);
