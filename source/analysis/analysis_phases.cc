@@ -17,8 +17,10 @@ namespace thinlayer
   void
   Analysis<dim>::set_phase_loads(const PhaseLoads loads)
   {
-    const bool boundaries = loads != PhaseLoads::weight;
-    const bool weight     = loads != PhaseLoads::boundaries;
+    const bool boundaries = loads == PhaseLoads::boundaries ||
+                            loads == PhaseLoads::boundaries_and_weight;
+    const bool weight =
+      loads == PhaseLoads::weight || loads == PhaseLoads::boundaries_and_weight;
     for (const auto &system : systems)
       {
         ModeSystem &mode = *system;
@@ -58,18 +60,36 @@ namespace thinlayer
         u = 0;
     for (ModeVector &u : increment_vectors)
       u = 0;
+  }
 
+
+  template <int dim>
+  bool
+  Analysis<dim>::applies_anything(const PhaseLoads loads) const
+  {
+    const bool boundaries = loads == PhaseLoads::boundaries ||
+                            loads == PhaseLoads::boundaries_and_weight;
+    const bool weight =
+      loads == PhaseLoads::weight || loads == PhaseLoads::boundaries_and_weight;
     bool applies = false;
     for (const auto &system : systems)
-      applies = applies || system->unit_load.linfty_norm() > 0 ||
-                system->unit_prescribed_displacement.linfty_norm() > 0;
-    if (!applies)
-      throw InputError(parameters.parameter_file,
-                       "Boundary <id>",
-                       "the loading after the initial state applies nothing: "
-                       "every traction, pressure and prescribed displacement "
-                       "is 0 (the weight is the initial state's); expected "
-                       "at least one that is not");
+      applies =
+        applies ||
+        (boundaries &&
+         (system->boundary_load.linfty_norm() > 0 ||
+          system->boundary_prescribed_displacement.linfty_norm() > 0)) ||
+        (weight && system->weight_load.linfty_norm() > 0);
+    return applies;
+  }
+
+
+  template <int dim>
+  void
+  Analysis<dim>::reduce_strength(const double factor)
+  {
+    // The first group is the continuum (the one continuum points to).
+    static_cast<ContinuumCells<dim> &>(*groups.front())
+      .reduce_strength(parameters.strength_reduction.materials, factor);
   }
 
 
@@ -176,6 +196,14 @@ namespace thinlayer
   Analysis<2>::begin_phase(const PhaseLoads, const bool);
   template void
   Analysis<3>::begin_phase(const PhaseLoads, const bool);
+  template bool
+  Analysis<2>::applies_anything(const PhaseLoads) const;
+  template bool
+  Analysis<3>::applies_anything(const PhaseLoads) const;
+  template void
+  Analysis<2>::reduce_strength(const double);
+  template void
+  Analysis<3>::reduce_strength(const double);
   template double
   Analysis<2>::set_initial_stresses();
   template double

@@ -12,7 +12,7 @@
 #include <thinlayer/parallel/mpi.h>
 #include <thinlayer/postprocess/layer_profile.h>
 #include <thinlayer/postprocess/monitors.h>
-#include <thinlayer/stepping/programme.h>
+#include <thinlayer/stepping/phases.h>
 #include <thinlayer/stepping/run_outcome.h>
 #include <thinlayer/stepping/step_solver.h>
 
@@ -209,81 +209,18 @@ namespace thinlayer
       describe_model(p, scene, analysis, summary);
       summary.warnings = analysis.warnings();
 
+      // The initial state is checked (and set) before anything is written.
+      Phases<dim> phases(p, analysis, *solver, monitors, layers, timer, out);
+      phases.prepare(summary);
+
       // Everything the user gave us has been checked: only now write.
       OutputWriter writer(p.output, open_directory());
       writer.write_file("mesh.msh", scene.mesh_text());
       writer.write_file("parameters.prm", p.effective_parameters);
       print_model(p, scene, analysis, summary.warnings, out);
 
-      const WorkCounts work_before = work_counts();
-      const auto       run_phase   = [&](const Phase &phase) {
-        return Programme<dim>(p,
-                              phase,
-                              analysis,
-                              *solver,
-                              monitors,
-                              layers,
-                              writer,
-                              timer,
-                              out)
-          .run();
-      };
-      const ProgrammeResult run = [&]() {
-        const auto procedure = p.initial_state.procedure;
-        summary.initial_state =
-          InitialStateParameters::procedure_names.name(procedure);
-        summary.phase = "loading";
-        Phase loading{"loading", p.loading, 0};
-        if (procedure == InitialStateParameters::Procedure::k0)
-          {
-            summary.initial_out_of_balance = analysis.set_initial_stresses();
-            summary.initial_state_outcome  = "set";
-            summary.initial_state_reason =
-              "the at-rest stresses of the weight, out of balance by " +
-              printf("%.2e", summary.initial_out_of_balance) +
-              " of the largest nodal weight";
-            out << "  initial state: K0 procedure, "
-                << summary.initial_state_reason << std::endl;
-          }
-        else if (procedure ==
-                 InitialStateParameters::Procedure::gravity_loading)
-          {
-            out << "  initial state: gravity loading" << std::endl;
-            analysis.begin_phase(Analysis<dim>::PhaseLoads::weight, false);
-            solver->begin_phase();
-            const Phase           initial{"initial state",
-                                {p.initial_state.load_increments,
-                                           p.loading.collapse_resolution},
-                                0};
-            const ProgrammeResult gravity = run_phase(initial);
-            judge_outcome(analysis.has_external_load(), gravity, summary);
-            summary.initial_state_outcome = summary.outcome;
-            summary.initial_state_reason  = summary.reason;
-            summary.initial_state_steps   = gravity.steps_run;
-            if (summary.outcome != "completed" || gravity.interrupted_by != 0)
-              {
-                summary.phase = "initial state";
-                summary.reason =
-                  "the initial state (gravity loading) did not complete, "
-                  "and the loading was not run: " +
-                  summary.reason;
-                return gravity;
-              }
-            loading.steps_before = gravity.steps_run;
-            out << "  loading" << std::endl;
-          }
-        if (procedure != InitialStateParameters::Procedure::none)
-          {
-            analysis.begin_phase(Analysis<dim>::PhaseLoads::boundaries,
-                                 p.initial_state.reset_displacements);
-            solver->begin_phase();
-            summary.initial_load         = monitors.load();
-            summary.initial_displacement = monitors.displacement().mean;
-          }
-        const ProgrammeResult result = run_phase(loading);
-        judge_outcome(analysis.has_external_load(), result, summary);
-        return result;
-      }();
+      const WorkCounts      work_before = work_counts();
+      const ProgrammeResult run         = phases.run(writer, summary);
 
       summary.converged           = run.converged;
       summary.last_converged_load = run.last_converged_load;

@@ -22,6 +22,7 @@ namespace thinlayer
     , quadrature(quadrature)
     , kinematics(kinematics)
     , n_q(quadrature.size())
+    , materials(materials)
     , time_step(std::numeric_limits<double>::infinity())
     , all_cells(partition.owner.empty())
   {
@@ -239,6 +240,34 @@ namespace thinlayer
               }
           }
       }
+  }
+
+
+  template <int dim>
+  void
+  ContinuumCells<dim>::reduce_strength(
+    const std::set<types::material_id> &reduced,
+    const double                        factor)
+  {
+    const double degree = numbers::PI / 180;
+    for (const types::material_id id : reduced)
+      {
+        MaterialParameters m = materials.at(id);
+        m.cohesion /= factor;
+        m.friction_angle =
+          std::atan(std::tan(m.friction_angle * degree) / factor) / degree;
+        m.dilation_angle = std::min(m.dilation_angle, m.friction_angle);
+        laws[id]         = create_material_law(m);
+      }
+    time_step = std::numeric_limits<double>::infinity();
+    for (const auto &[id, law] : laws)
+      time_step = std::min(time_step, law->viscoplastic_time_step());
+    // The point loop reads the laws through cell_law.
+    for (const auto &cell :
+         dof_handler.get_triangulation().active_cell_iterators())
+      if (!cell->is_artificial())
+        cell_law[cell->active_cell_index()] =
+          laws.at(cell->material_id()).get();
   }
 
 

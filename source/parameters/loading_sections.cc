@@ -188,4 +188,71 @@ namespace thinlayer
     reset_displacements = prm.get_bool("Reset displacements");
     prm.leave_subsection();
   }
+
+
+  void
+  StrengthReductionParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Strength reduction");
+    prm.declare_entry(
+      "Materials",
+      "",
+      Patterns::Anything(),
+      "Material ids (comma-separated) whose strength a last phase divides "
+      "by a factor F raised from 1 until the body fails: c / F and "
+      "tan(phi) / F together (the dilation angle at most the reduced "
+      "friction angle). The safety factor is summary.json's "
+      "collapse_load. Empty: no strength reduction. Each must have a "
+      "yield criterion.");
+    prm.declare_entry("Factor increments",
+                      "0.1, 0.1, 0.2, 0.4, 0.8, 1.6",
+                      Patterns::Anything(),
+                      "Increments of F from 1, one per step (the syntax of "
+                      "Loading/Load increments; automatic stepping with "
+                      "Loading/Collapse resolution).");
+    prm.leave_subsection();
+  }
+
+
+  void
+  StrengthReductionParameters::parse(
+    ParameterHandler                         &prm,
+    const std::string                        &file,
+    const std::map<types::material_id, bool> &can_yield)
+  {
+    prm.enter_subsection("Strength reduction");
+    const std::string entry = "Strength reduction/Materials";
+    materials.clear();
+    for (const std::string &item :
+         Utilities::split_string_list(prm.get("Materials"), ','))
+      {
+        double id = -1;
+        if (!to_number(item, id) || id < 0 || id != std::floor(id) ||
+            can_yield.count(static_cast<types::material_id>(id)) == 0)
+          throw InputError(file,
+                           entry,
+                           "expected material ids of the mesh, got '" + item +
+                             "'");
+        const auto material = static_cast<types::material_id>(id);
+        if (!can_yield.at(material))
+          throw InputError(file,
+                           entry,
+                           "material " + item +
+                             " is elastic: it has no strength to reduce; "
+                             "expected materials with a yield criterion");
+        materials.insert(material);
+      }
+    factor_increments =
+      parse_increments(prm.get("Factor increments"),
+                       file,
+                       "Strength reduction/Factor increments");
+    for (const double increment : factor_increments)
+      if (!(increment > 0))
+        throw InputError(file,
+                         "Strength reduction/Factor increments",
+                         "expected increments > 0 (the factor only rises), "
+                         "got '" +
+                           prm.get("Factor increments") + "'");
+    prm.leave_subsection();
+  }
 } // namespace thinlayer

@@ -356,6 +356,7 @@ namespace thinlayer
       LayerParameters::declare(prm);
       InitialStateParameters::declare(prm);
       LoadingParameters::declare(prm);
+      StrengthReductionParameters::declare(prm);
       SolverParameters::declare(prm);
       MonitorParameters::declare(prm);
       ReferenceParameters::declare(prm);
@@ -411,6 +412,12 @@ namespace thinlayer
       p.initial_state.parse(prm, file);
       check_initial_state(p);
       p.loading.parse(prm, file);
+      {
+        std::map<types::material_id, bool> can_yield;
+        for (const auto &[id, material] : p.materials)
+          can_yield[id] = material.yield_criterion != YieldCriterion::elastic;
+        p.strength_reduction.parse(prm, file, can_yield);
+      }
       p.solver.parse(prm, file);
       // With automatic stepping the load stepping halves a failed step and
       // records each attempt; cut-backs inside Newton would repeat that

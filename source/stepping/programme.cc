@@ -94,9 +94,9 @@ namespace thinlayer
         // the displacement, so the curve wants a state at least every
         // doubling there. (Under prescribed displacement the load hardly
         // changes along the plateau: the programme goes on.)
-        const bool under_load  = analysis.has_external_load();
-        const bool plateau_cut = (a.on_plateau || a.doubled) && under_load &&
-                                 !stepping.failure_is_final();
+        const bool loaded = under_load();
+        const bool plateau_cut =
+          (a.on_plateau || a.doubled) && loaded && !stepping.failure_is_final();
         StepResult reported           = a.result;
         reported.converged            = a.result.converged && !plateau_cut;
         const LoadStepping::Next next = stepping.report(reported);
@@ -112,7 +112,7 @@ namespace thinlayer
             accept(a);
             // The load has levelled off to the resolution: the collapse
             // load, reached.
-            if (a.on_plateau && under_load)
+            if (a.on_plateau && loaded)
               {
                 result.stopped            = true;
                 result.stopped_on_plateau = true;
@@ -143,12 +143,20 @@ namespace thinlayer
         result.stiffness_ratio = a.stiffness_ratio;
         result.growth_ratio    = a.result.growth_ratio;
         if (stepping.automatic() && !a.result.non_finite && !a.against_load &&
-            analysis.has_external_load() &&
+            under_load() &&
             !shows_mechanism(a.stiffness_ratio, a.result.growth_ratio))
           probe_beyond(a);
         break;
       }
     return result;
+  }
+
+
+  template <int dim>
+  bool
+  Programme<dim>::under_load() const
+  {
+    return phase.strength_reduction || analysis.has_external_load();
   }
 
 
@@ -174,8 +182,10 @@ namespace thinlayer
                                   step,
                                   load_factor,
                                   p.output.progress_interval);
-      a.result            = solver.solve(load_factor, final);
-      a.load              = monitors.load();
+      if (phase.strength_reduction)
+        analysis.reduce_strength(1 + load_factor);
+      a.result = solver.solve(load_factor, final);
+      a.load   = phase.strength_reduction ? 1 + load_factor : monitors.load();
       result.displacement = monitors.displacement();
     }
     if (!std::isfinite(a.load) || !std::isfinite(result.displacement.mean))
@@ -191,8 +201,7 @@ namespace thinlayer
     // iterations have found a spurious equilibrium (seen with the
     // default method on Case 3's layer at aspect ratio 10000, at
     // displacements 1e9 times the elastic ones). It is a failed attempt.
-    if (a.result.converged && analysis.has_external_load() &&
-        a.stiffness_ratio < 0)
+    if (a.result.converged && under_load() && a.stiffness_ratio < 0)
       {
         a.result.converged = false;
         a.against_load     = true;
@@ -201,8 +210,8 @@ namespace thinlayer
     if (a.result.converged)
       a.rise = plateau_rise(result.curve, displacement, a.load);
     const bool automatic = loading.collapse_resolution > 0;
-    a.on_mechanism       = a.result.converged && automatic &&
-                     analysis.has_external_load() && a.stiffness_ratio >= 0 &&
+    a.on_mechanism       = a.result.converged && automatic && under_load() &&
+                     a.stiffness_ratio >= 0 &&
                      a.stiffness_ratio < mechanism_knee_ratio;
     // Under load or prescribed displacement alike; a load that falls
     // towards its limit (an active earth pressure from the at-rest one)

@@ -5,8 +5,10 @@
 // procedure on ground that is not level, in 3D or with interface
 // elements, gravity loading that does not add up to the whole weight, a
 // procedure with no weight to start from, a K0 or a surcharge that is no
-// number the entry takes, and a loading that applies nothing after the
-// initial state.
+// number the entry takes, a strength reduction of an elastic material, of
+// one the mesh does not have or by a factor that falls, and a loading that
+// applies nothing after the initial state (with no strength reduction to
+// follow).
 #include "../common/bad_input_utilities.h"
 
 using namespace bad_input;
@@ -46,7 +48,13 @@ main()
          "-s",
          "Material 1/K0=0.2"});
   check("the K0 procedure on ground that is not level (a vertical cut)",
-        {prm + "vertical-cut.prm", "-s", k0, "-s", "Output/Directory=results"});
+        {prm + "vertical-cut.prm",
+         "-s",
+         k0,
+         "-s",
+         "Strength reduction/Materials=1",
+         "-s",
+         "Output/Directory=results"});
   check("the K0 procedure in 3D",
         {prm + "case1-3d.prm",
          "-s",
@@ -79,6 +87,26 @@ main()
         {"good.prm", "-s", k0, "-s", "Initial state/Surcharge=-10"});
   check("an unknown procedure",
         {"good.prm", "-s", "Initial state/Procedure=excavation"});
+  check("a strength reduction of an elastic material",
+        {"good.prm", "-s", "Strength reduction/Materials=1"});
+  check("a strength reduction of a material the mesh does not have",
+        {"good.prm",
+         "-s",
+         "Material 1/Yield criterion=tresca",
+         "-s",
+         "Material 1/Cohesion=1",
+         "-s",
+         "Strength reduction/Materials=7"});
+  check("a strength reduction factor that falls",
+        {"good.prm",
+         "-s",
+         "Material 1/Yield criterion=tresca",
+         "-s",
+         "Material 1/Cohesion=1",
+         "-s",
+         "Strength reduction/Materials=1",
+         "-s",
+         "Strength reduction/Factor increments=0.5, -0.1"});
   check("a loading that applies nothing after the initial state",
         {"good.prm", "-s", k0, "-s", weight, "-s", "Boundary 2/Traction=0; 0"});
 }

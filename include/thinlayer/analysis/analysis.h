@@ -175,15 +175,16 @@ namespace thinlayer
       weight,
       /// The Boundary sections' values: the loading after an initial
       /// state.
-      boundaries
+      boundaries,
+      /// Nothing: the loads are held while strengths are reduced.
+      none
     };
 
     /**
      * Begin a phase that applies @p loads: the loads of the phase before
      * it, at its accepted load factor, are held fixed from now on, and the
      * load factor starts again from 0. With @p reset_displacements the
-     * displacements start from zero; the stresses are kept. Throws
-     * InputError if the phase applies nothing.
+     * displacements start from zero; the stresses are kept.
      */
     void
     begin_phase(const PhaseLoads loads, const bool reset_displacements);
@@ -200,6 +201,16 @@ namespace thinlayer
      */
     double
     set_initial_stresses();
+
+    /// Divide the strengths of Strength reduction/Materials by @p factor
+    /// (ContinuumCells::reduce_strength()): for the attempt that follows.
+    void
+    reduce_strength(const double factor);
+
+    /// Whether a phase of @p loads would apply a load or prescribed
+    /// displacements in proportion to its load factor.
+    bool
+    applies_anything(const PhaseLoads loads) const;
 
     /// @}
     /// @name What the solution methods do to the state

@@ -19,6 +19,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <set>
 #include <vector>
 
 namespace thinlayer
@@ -145,6 +146,16 @@ namespace thinlayer
       const std::function<SymmetricTensor<2, 3>(const Point<dim> &,
                                                 types::material_id)> &initial);
 
+    /**
+     * The laws of the materials @p materials with their strengths divided
+     * by @p factor (strength reduction): c / factor and tan(phi) / factor,
+     * the dilation angle at most the reduced friction angle; the other
+     * materials' laws as given. Factor 1 restores them.
+     */
+    void
+    reduce_strength(const std::set<types::material_id> &materials,
+                    const double                        factor);
+
   private:
     /// Work space of one chunk of Newton's cell matrices.
     struct TangentScratch
@@ -175,6 +186,7 @@ namespace thinlayer
     const Kinematics     &kinematics;
     const unsigned int    n_q;
 
+    const std::map<types::material_id, MaterialParameters>    &materials;
     std::map<types::material_id, std::unique_ptr<MaterialLaw>> laws;
     double                                                     time_step;
     /// The law of every active cell.

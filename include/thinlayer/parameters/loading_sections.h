@@ -2,9 +2,12 @@
 #define thinlayer_parameters_loading_sections_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/types.h>
 
 #include <thinlayer/base/name_table.h>
 
+#include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -71,6 +74,33 @@ namespace thinlayer
     declare(ParameterHandler &prm);
     void
     parse(ParameterHandler &prm, const std::string &parameter_file);
+  };
+
+  /**
+   * "Strength reduction": a safety factor, as PLAXIS's safety phase and
+   * Griffiths and Lane's (1999) slopes find it. After the initial state
+   * and the loading, the strengths of the named materials are divided by
+   * a factor F raised step by step from 1: c / F and tan(phi) / F
+   * together (the dilation angle kept at most the reduced friction angle),
+   * the loads held, until the body can no longer be in equilibrium. The
+   * safety factor is the plateau of F against the monitored displacement,
+   * bracketed by automatic stepping as a collapse load is.
+   */
+  struct StrengthReductionParameters
+  {
+    /// The materials whose strength is reduced; none: no such phase.
+    std::set<types::material_id> materials;
+    /// Increments of F, from 1.
+    std::vector<double> factor_increments;
+
+    static void
+    declare(ParameterHandler &prm);
+    /// Checks the materials against @p material_ids (those of the mesh,
+    /// with @p can_yield whether each has a yield criterion).
+    void
+    parse(ParameterHandler                         &prm,
+          const std::string                        &parameter_file,
+          const std::map<types::material_id, bool> &can_yield);
   };
 } // namespace thinlayer
 

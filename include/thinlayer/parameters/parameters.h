@@ -57,6 +57,7 @@ namespace thinlayer
     std::map<types::boundary_id, InterfaceElementParameters> interface_elements;
     InitialStateParameters                                   initial_state;
     LoadingParameters                                        loading;
+    StrengthReductionParameters                              strength_reduction;
     SolverParameters                                         solver;
     MonitorParameters                                        monitors;
     ReferenceParameters                                      reference;

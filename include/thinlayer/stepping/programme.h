@@ -32,6 +32,10 @@ namespace thinlayer
     std::string       name;
     LoadingParameters loading;
     unsigned int      steps_before = 0;
+    /// A strength reduction phase: the load factor raises the factor F =
+    /// 1 + load factor by which the strengths are divided
+    /// (Analysis::reduce_strength()), and F is the phase's load.
+    bool strength_reduction = false;
   };
 
 
@@ -104,6 +108,11 @@ namespace thinlayer
       /// A converged attempt moving against its load: counted as failed.
       bool against_load;
     };
+
+    /// Whether the phase is driven as a load is (a collapse under it is
+    /// bracketed): by a load, or by the strength reduction factor.
+    bool
+    under_load() const;
 
     /// Solve the step to @p load_factor and measure it; @p final: a
     /// failure would not be cut back (LoadStepping::failure_is_final()).

@@ -1,0 +1,153 @@
+#include <thinlayer/base/input_error.h>
+#include <thinlayer/base/text_format.h>
+#include <thinlayer/output/output_writer.h>
+#include <thinlayer/postprocess/layer_profile.h>
+#include <thinlayer/postprocess/monitors.h>
+#include <thinlayer/stepping/phases.h>
+#include <thinlayer/stepping/programme.h>
+
+namespace thinlayer
+{
+  template <int dim>
+  Phases<dim>::Phases(const Parameters                     &p,
+                      Analysis<dim>                        &analysis,
+                      StepSolver<dim>                      &solver,
+                      const Monitors<dim>                  &monitors,
+                      const std::vector<LayerProfile<dim>> &layers,
+                      TimerOutput                          &timer,
+                      std::ostream                         &out)
+    : p(p)
+    , analysis(analysis)
+    , solver(solver)
+    , monitors(monitors)
+    , layers(layers)
+    , timer(timer)
+    , out(out)
+  {}
+
+
+  template <int dim>
+  bool
+  Phases<dim>::loading_runs() const
+  {
+    return p.initial_state.procedure ==
+             InitialStateParameters::Procedure::none ||
+           analysis.applies_anything(Analysis<dim>::PhaseLoads::boundaries);
+  }
+
+
+  template <int dim>
+  void
+  Phases<dim>::prepare(RunSummary &summary)
+  {
+    using Procedure      = InitialStateParameters::Procedure;
+    const auto procedure = p.initial_state.procedure;
+    summary.initial_state =
+      InitialStateParameters::procedure_names.name(procedure);
+    if (!loading_runs() && p.strength_reduction.materials.empty())
+      throw InputError(p.parameter_file,
+                       "Boundary <id>",
+                       "the loading after the initial state applies nothing: "
+                       "every traction, pressure and prescribed displacement "
+                       "is 0 (the weight is the initial state's); expected "
+                       "at least one that is not, or a Strength reduction");
+    if (procedure == Procedure::k0)
+      {
+        summary.initial_out_of_balance = analysis.set_initial_stresses();
+        summary.initial_state_outcome  = "set";
+        summary.initial_state_reason =
+          "the at-rest stresses of the weight, out of balance by " +
+          text_format::printf("%.2e", summary.initial_out_of_balance) +
+          " of the largest nodal weight";
+      }
+  }
+
+
+  template <int dim>
+  ProgrammeResult
+  Phases<dim>::run(OutputWriter &writer, RunSummary &summary)
+  {
+    using Procedure      = InitialStateParameters::Procedure;
+    using Loads          = typename Analysis<dim>::PhaseLoads;
+    const auto procedure = p.initial_state.procedure;
+    const auto run_phase = [&](const Phase &phase) {
+      return Programme<dim>(
+               p, phase, analysis, solver, monitors, layers, writer, timer, out)
+        .run();
+    };
+    // A phase that did not complete ends the run: its outcome is the run's.
+    const auto ended = [&](const ProgrammeResult &result,
+                           const std::string     &next) {
+      if (summary.outcome == "completed" && result.interrupted_by == 0)
+        return false;
+      summary.reason = "the " + summary.phase + " did not complete, and " +
+                       next + " was not run: " + summary.reason;
+      return true;
+    };
+    unsigned int    steps = 0;
+    ProgrammeResult result;
+
+    if (procedure == Procedure::k0)
+      out << "  initial state: K0 procedure, " << summary.initial_state_reason
+          << std::endl;
+    else if (procedure == Procedure::gravity_loading)
+      {
+        out << "  initial state: gravity loading" << std::endl;
+        analysis.begin_phase(Loads::weight, false);
+        solver.begin_phase();
+        summary.phase = "initial state";
+        result        = run_phase(
+          {"initial state",
+                  {p.initial_state.load_increments, p.loading.collapse_resolution},
+                  0});
+        judge_outcome(analysis.has_external_load(), result, summary);
+        summary.initial_state_outcome = summary.outcome;
+        summary.initial_state_reason  = summary.reason;
+        summary.initial_state_steps   = result.steps_run;
+        steps                         = result.steps_run;
+        if (ended(result, "the loading"))
+          return result;
+      }
+
+    if (loading_runs())
+      {
+        if (procedure != Procedure::none)
+          {
+            out << "  loading" << std::endl;
+            analysis.begin_phase(Loads::boundaries,
+                                 p.initial_state.reset_displacements);
+            solver.begin_phase();
+            summary.initial_load         = monitors.load();
+            summary.initial_displacement = monitors.displacement().mean;
+          }
+        summary.phase = "loading";
+        result        = run_phase({"loading", p.loading, steps});
+        judge_outcome(analysis.has_external_load(), result, summary);
+        steps += result.steps_run;
+        if (!p.strength_reduction.materials.empty() &&
+            ended(result, "the strength reduction"))
+          return result;
+      }
+
+    if (!p.strength_reduction.materials.empty())
+      {
+        out << "  strength reduction" << std::endl;
+        analysis.begin_phase(Loads::none, true);
+        solver.begin_phase();
+        summary.phase                = "strength reduction";
+        summary.initial_load         = 1;
+        summary.initial_displacement = 0;
+        result                       = run_phase({"strength reduction",
+                                                  {p.strength_reduction.factor_increments,
+                                                   p.loading.collapse_resolution},
+                                                  steps,
+                                                  true});
+        judge_outcome(true, result, summary);
+      }
+    return result;
+  }
+
+
+  template class Phases<2>;
+  template class Phases<3>;
+} // namespace thinlayer
