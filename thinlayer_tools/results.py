@@ -53,9 +53,9 @@ def history(directory):
 
 def loading_history(directory):
     """The rows of DIRECTORY/history.csv of the phase its summary's outcome
-    is of (the loading, unless an initial state ended the run), and the
-    (displacement, load) that phase starts from: (0, 0) without an initial
-    state."""
+    is of (the last one run: the loading or the strength reduction, or the
+    initial state where that ended the run), and the (displacement, load)
+    that phase starts from: (0, 0) for the first phase."""
     rows = history(directory)
     path = os.path.join(directory, "summary.json")
     if not os.path.exists(path):
@@ -63,7 +63,7 @@ def loading_history(directory):
     with open(path) as f:
         s = json.load(f)
     phase = s.get("phase", "loading")
-    start = (0.0, 0.0) if phase != "loading" else \
+    start = (0.0, 0.0) if phase == "initial state" else \
         (number(s.get("initial_displacement", 0)), number(s.get("initial_load", 0)))
     return [r for r in rows if r.get("phase", "loading") == phase], start
 
