@@ -116,6 +116,13 @@ namespace thinlayer
       weights[id] = material.unit_weight;
     const double surcharge = parameters.initial_state.surcharge;
     const double level     = surcharge > 0 ? ground_level(tria) : 0;
+    // Boundaries whose vertical displacement is prescribed carry no
+    // surcharge (a footing pushed into the ground).
+    std::set<types::boundary_id> held;
+    for (const auto &[id, boundary] : parameters.boundaries)
+      if (boundary.constrained_components.size() > 1 &&
+          boundary.constrained_components[1])
+        held.insert(id);
     for (unsigned int m = 0; m < kinematics.n_modes(); ++m)
       {
         ModeSystem &mode = *systems[m];
@@ -148,6 +155,7 @@ namespace thinlayer
                             kinematics,
                             level,
                             surcharge,
+                            held,
                             m,
                             mode.weight_load);
         for (ModeVector *v : {&mode.boundary_rhs,

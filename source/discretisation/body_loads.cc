@@ -134,13 +134,14 @@ namespace thinlayer
 
   template <int dim>
   void
-  add_ground_pressure(const Mapping<dim>    &mapping,
-                      const DoFHandler<dim> &dof_handler,
-                      const Kinematics      &kinematics,
-                      const double           level,
-                      const double           pressure,
-                      const unsigned int     m,
-                      ModeVector            &load)
+  add_ground_pressure(const Mapping<dim>                 &mapping,
+                      const DoFHandler<dim>              &dof_handler,
+                      const Kinematics                   &kinematics,
+                      const double                        level,
+                      const double                        pressure,
+                      const std::set<types::boundary_id> &held,
+                      const unsigned int                  m,
+                      ModeVector                         &load)
   {
     const double share = axisymmetric_share(kinematics, m);
     if (std::abs(share) < 1e-12 || pressure == 0)
@@ -156,7 +157,8 @@ namespace thinlayer
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (const auto f : cell->face_indices())
         {
-          if (!cell->is_locally_owned() || !on_ground<dim>(cell, f, level))
+          if (!cell->is_locally_owned() || !on_ground<dim>(cell, f, level) ||
+              held.count(cell->face(f)->boundary_id()) > 0)
             continue;
           fe_face.reinit(cell, f);
           cell->get_dof_indices(dofs);
@@ -192,6 +194,7 @@ namespace thinlayer
                       const Kinematics &,
                       const double,
                       const double,
+                      const std::set<types::boundary_id> &,
                       const unsigned int,
                       ModeVector &);
   template void
@@ -200,6 +203,7 @@ namespace thinlayer
                       const Kinematics &,
                       const double,
                       const double,
+                      const std::set<types::boundary_id> &,
                       const unsigned int,
                       ModeVector &);
   template void

@@ -8,6 +8,7 @@
 #include <thinlayer/discretisation/mode_vectors.h>
 
 #include <map>
+#include <set>
 
 namespace thinlayer
 {
@@ -55,19 +56,22 @@ namespace thinlayer
    * Add a pressure @p pressure on the ground surface at unit load factor
    * to mode @p m's load vector @p load: the consistent nodal forces of the
    * traction -p e_y on the boundary faces that face straight up at the
-   * height @p level (ground_level()). Axisymmetric in a Fourier body, like
-   * the weight (add_weight()). Adds this rank's cells, then sums over
-   * ranks (compress).
+   * height @p level (ground_level()), but for those of the boundaries
+   * @p held (whose vertical displacement is prescribed: a footing pushed
+   * into the ground carries its own load, not the surcharge). Axisymmetric
+   * in a Fourier body, like the weight (add_weight()). Adds this rank's
+   * cells, then sums over ranks (compress).
    */
   template <int dim>
   void
-  add_ground_pressure(const Mapping<dim>    &mapping,
-                      const DoFHandler<dim> &dof_handler,
-                      const Kinematics      &kinematics,
-                      const double           level,
-                      const double           pressure,
-                      const unsigned int     m,
-                      ModeVector            &load);
+  add_ground_pressure(const Mapping<dim>                 &mapping,
+                      const DoFHandler<dim>              &dof_handler,
+                      const Kinematics                   &kinematics,
+                      const double                        level,
+                      const double                        pressure,
+                      const std::set<types::boundary_id> &held,
+                      const unsigned int                  m,
+                      ModeVector                         &load);
 } // namespace thinlayer
 
 #endif
