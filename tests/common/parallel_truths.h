@@ -7,12 +7,22 @@
 
 #include <thinlayer/parallel/mpi.h>
 
+#include <cstdio>
 #include <string>
 
 #include "truths.h"
 
 namespace truths
 {
+  /// For a test every rank runs alike: only rank 0's standard output is
+  /// kept (the others' goes to /dev/null). False if that fails.
+  inline bool
+  print_on_rank_zero()
+  {
+    return thinlayer::mpi::is_root() ||
+           std::freopen("/dev/null", "w", stdout) != nullptr;
+  }
+
   /// Whether @p holds on every rank, printed by rank 0; every rank counts
   /// a failure, so that every rank's exit status says it.
   inline void
