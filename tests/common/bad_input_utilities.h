@@ -156,13 +156,19 @@ Physical Curve("bottom", 1) = {1}; Physical Curve("top", 2) = {6};
                           std::filesystem::copy_options::recursive);
     std::ostringstream out, err;
     const int status = thinlayer::run_command_line(arguments, out, err);
+    // The project's own files by their place in it, whatever the clone's.
+    std::string       message = err.str();
+    const std::string top     = std::string(SOURCE_DIR) + "/../../";
+    for (std::size_t at = message.find(top); at != std::string::npos;
+         at             = message.find(top))
+      message.replace(at, top.size(), "");
     std::cout << "* " << what << "\n  exit status " << status
               << ", previous run kept: "
               << (contents("results") == previous_run ? "yes" : "NO")
               << ", foreign file kept: "
               << (read_text("thesis.tex") == "\\chapter{}\n" ? "yes" : "NO")
               << ", staging left behind: " << (staging_left() ? "YES" : "no")
-              << "\n  " << err.str() << '\n';
+              << "\n  " << message << '\n';
   }
   /// Print the valid scene's exit status @p status and keep its results
   /// as the run every check starts from ("previous").
