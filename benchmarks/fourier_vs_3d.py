@@ -132,7 +132,8 @@ def common(directory):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--levels", default="4,8",
-                        help="3D: elements per 45 degrees, comma-separated")
+                        help="3D: elements per 45 degrees, comma-separated (empty: "
+                             "the Fourier series only)")
     parser.add_argument("--output", default=OUT, help="the directory of the tables and runs")
     parser.add_argument("--tables-only", action="store_true",
                         help="measure the runs already in DIR/runs, run nothing")
@@ -147,7 +148,7 @@ def main():
         rows.append(measure("Fourier {%s}" % harmonics, "", command, directory,
                             not args.tables_only))
         print(rows[-1], flush=True)
-    for level in [int(n) for n in args.levels.split(",")]:
+    for level in [int(n) for n in args.levels.split(",") if n.strip()]:
         directory = os.path.join(out, "runs", "solid-%d" % level)
         command = [THINLAYER, os.path.join(TOP, "prm", "case3-circular-footing-3d.prm"),
                    "-s", "Mesh/Geometry parameters=" + SOLID_GEOMETRY % level

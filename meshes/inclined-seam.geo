@@ -11,18 +11,23 @@
 //   angle         inclination beta of the base, degrees
 //   n_along       elements along the slope
 //   n_slab        elements through the slab (the seam has one)
+//   zero_thickness 1: the seam's layer is a base layer (an ordinary body,
+//                 surface 2), and the slab rests on it through
+//                 zero-thickness interface elements on curve 5
 //
 // Physical groups:
-//   surfaces 1 "slab", 2 "seam"
+//   surfaces 1 "slab", 2 "seam" (zero_thickness: "base layer")
 //   curves   1 "base" (under the seam), 2 "upper end", 3 "lower end",
-//            4 "top" (the slab's upper surface)
+//            4 "top" (the slab's upper surface); zero_thickness: 5 "seam"
+//            (the slab's underside)
 DefineConstant[
   length  = {10, Name "Parameters/length"},
   slab    = {1, Name "Parameters/slab"},
   seam    = {0.05, Name "Parameters/seam"},
   angle   = {20, Name "Parameters/angle"},
   n_along = {40, Name "Parameters/n_along"},
-  n_slab  = {4, Name "Parameters/n_slab"}
+  n_slab  = {4, Name "Parameters/n_slab"},
+  zero_thickness = {0, Name "Parameters/zero_thickness"}
 ];
 
 b = angle * Pi / 180;
@@ -55,7 +60,12 @@ Transfinite Surface{1, 2};
 Recombine Surface{1, 2};
 
 Physical Surface("slab", 1) = {2};
-Physical Surface("seam", 2) = {1};
+If (zero_thickness)
+  Physical Surface("base layer", 2) = {1};
+  Physical Curve("seam", 5) = {3};
+Else
+  Physical Surface("seam", 2) = {1};
+EndIf
 Physical Curve("base", 1) = {1};
 Physical Curve("upper end", 2) = {2, 5};
 Physical Curve("lower end", 3) = {4, 7};

@@ -89,17 +89,27 @@ else
   # split along a curve, Newton's singular tangent at the mechanism), and
   # two 3D ones (hexahedra, a layer's surface profile; a mesh split along a
   # surface and 16-node interface elements), with their VTU output.
+  # Two lanes of about a minute each, side by side (one scene per core).
   mkdir -p "$build/valgrind"
-  for scene in case2_default_thin fourier_cylinder_plastic case2_zero_thickness \
-               case1_3d_default case1_3d_zero_thickness; do
-    echo "thinlayer setup: valgrind on tests/scenes/$scene.prm"
-    if ! valgrind -q --error-exitcode=99 "$build/thinlayer" "$top/tests/scenes/$scene.prm" \
-         -s "Output/Directory=$build/valgrind/$scene" > "$build/valgrind/$scene.log" 2>&1; then
-      grep -E "==[0-9]+==" "$build/valgrind/$scene.log" | head -40
-      echo "thinlayer setup: valgrind found errors in $scene; the log is $build/valgrind/$scene.log" >&2
-      exit 1
-    fi
-  done
+  valgrind_scenes() {
+    for scene in "$@"; do
+      echo "thinlayer setup: valgrind on tests/scenes/$scene.prm"
+      if ! valgrind -q --error-exitcode=99 "$build/thinlayer" "$top/tests/scenes/$scene.prm" \
+           -s "Output/Directory=$build/valgrind/$scene" > "$build/valgrind/$scene.log" 2>&1; then
+        grep -E "==[0-9]+==" "$build/valgrind/$scene.log" | head -40
+        echo "thinlayer setup: valgrind found errors in $scene; the log is $build/valgrind/$scene.log" >&2
+        return 1
+      fi
+    done
+  }
+  valgrind_scenes case1_3d_zero_thickness fourier_cylinder_plastic &
+  lane_a=$!
+  valgrind_scenes case1_3d_default case2_default_thin case2_zero_thickness &
+  lane_b=$!
+  valgrind_failed=0
+  wait "$lane_a" || valgrind_failed=1
+  wait "$lane_b" || valgrind_failed=1
+  [ "$valgrind_failed" -eq 0 ] || exit 1
   # The paper reproduced into its report (--quick: smaller sweeps, the
   # benchmark run once), and the page checked in headless Chromium.
   echo "thinlayer setup: scripts/reproduce.sh --quick"

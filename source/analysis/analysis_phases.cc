@@ -87,9 +87,8 @@ namespace thinlayer
   void
   Analysis<dim>::reduce_strength(const double factor)
   {
-    // The first group is the continuum (the one continuum points to).
-    static_cast<ContinuumCells<dim> &>(*groups.front())
-      .reduce_strength(parameters.strength_reduction.materials, factor);
+    for (const auto &group : groups)
+      group->reduce_strength(parameters.strength_reduction, factor);
   }
 
 

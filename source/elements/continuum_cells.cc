@@ -2,6 +2,7 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <thinlayer/elements/continuum_cells.h>
+#include <thinlayer/parameters/parameters.h>
 
 #include <algorithm>
 #include <cmath>
@@ -246,11 +247,11 @@ namespace thinlayer
   template <int dim>
   void
   ContinuumCells<dim>::reduce_strength(
-    const std::set<types::material_id> &reduced,
-    const double                        factor)
+    const StrengthReductionParameters &reduced,
+    const double                       factor)
   {
     const double degree = numbers::PI / 180;
-    for (const types::material_id id : reduced)
+    for (const types::material_id id : reduced.materials)
       {
         MaterialParameters m = materials.at(id);
         m.cohesion /= factor;

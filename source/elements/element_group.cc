@@ -5,6 +5,12 @@
 
 namespace thinlayer
 {
+  void
+  ElementGroup::reduce_strength(const StrengthReductionParameters &,
+                                const double)
+  {}
+
+
   std::vector<NamedProfile>
   ElementGroup::profiles(const ModeVectors & /*solution*/,
                          const ModeVectors & /*step_increment*/,

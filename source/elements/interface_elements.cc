@@ -3,6 +3,7 @@
 #include <thinlayer/base/input_error.h>
 #include <thinlayer/elements/interface_elements.h>
 #include <thinlayer/parallel/distributed_mesh.h>
+#include <thinlayer/parameters/parameters.h>
 
 #include <algorithm>
 #include <cmath>
@@ -27,6 +28,7 @@ namespace thinlayer
     const std::string &parameter_file)
   {
     this->kinematics = &kinematics;
+    this->curves     = &curves;
     laws.clear();
     elements.clear();
     points.clear();
@@ -72,6 +74,28 @@ namespace thinlayer
       for (unsigned int s = 0; s < kinematics.n_stations(); ++s)
         tangents[p * kinematics.n_stations() + s] =
           elements[points[p].element].law->elasticity();
+  }
+
+
+  template <int dim>
+  void
+  InterfaceElements<dim>::reduce_strength(
+    const StrengthReductionParameters &reduced,
+    const double                       factor)
+  {
+    const double degree = numbers::PI / 180;
+    for (const types::boundary_id id : reduced.interface_curves)
+      {
+        InterfaceElementParameters curve = curves->at(id);
+        curve.adhesion /= factor;
+        curve.friction_angle =
+          std::atan(std::tan(curve.friction_angle * degree) / factor) / degree;
+        curve.dilation_angle =
+          std::min(curve.dilation_angle, curve.friction_angle);
+        laws[id] = std::make_unique<InterfaceLaw>(curve);
+      }
+    for (Element &element : elements)
+      element.law = laws.at(element.curve).get();
   }
 
 
@@ -123,6 +147,7 @@ namespace thinlayer
     const FiniteElement<dim>            &fe = dof_handler.get_fe();
     std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
     Element                              element{laws.at(pair.curve).get(),
+                    pair.curve,
                     pair.plus_cell->active_cell_index(),
                     {},
                     {}};

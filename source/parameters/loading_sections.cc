@@ -202,8 +202,15 @@ namespace thinlayer
       "by a factor F raised from 1 until the body fails: c / F and "
       "tan(phi) / F together (the dilation angle at most the reduced "
       "friction angle). The safety factor is summary.json's "
-      "collapse_load. Empty: no strength reduction. Each must have a "
-      "yield criterion.");
+      "collapse_load. Each must have a yield criterion. Empty, with no "
+      "Interface curves: no strength reduction.");
+    prm.declare_entry("Interface curves",
+                      "",
+                      Patterns::Anything(),
+                      "Curves of zero-thickness interface elements "
+                      "(comma-separated ids) whose adhesion and tan(phi) "
+                      "are reduced with the materials'; each must have a "
+                      "slip criterion.");
     prm.declare_entry("Factor increments",
                       "0.1, 0.1, 0.2, 0.4, 0.8, 1.6",
                       Patterns::Anything(),
@@ -214,34 +221,61 @@ namespace thinlayer
   }
 
 
+  namespace
+  {
+    /// The ids of @p text (comma-separated), each a key of @p allowed
+    /// whose value is true, of the kind @p what; refused otherwise, with
+    /// @p why where its value is false.
+    template <typename Id>
+    std::set<Id>
+    parse_ids(const std::string        &text,
+              const std::map<Id, bool> &allowed,
+              const std::string        &file,
+              const std::string        &entry,
+              const std::string        &what,
+              const std::string        &why)
+    {
+      std::set<Id> ids;
+      for (const std::string &item : Utilities::split_string_list(text, ','))
+        {
+          double id = -1;
+          if (!to_number(item, id) || id < 0 || id != std::floor(id) ||
+              allowed.count(static_cast<Id>(id)) == 0)
+            throw InputError(file,
+                             entry,
+                             "expected " + what + " ids of the scene, got '" +
+                               item + "'");
+          if (!allowed.at(static_cast<Id>(id)))
+            throw InputError(file, entry, what + " " + item + " " + why);
+          ids.insert(static_cast<Id>(id));
+        }
+      return ids;
+    }
+  } // namespace
+
+
   void
   StrengthReductionParameters::parse(
     ParameterHandler                         &prm,
     const std::string                        &file,
-    const std::map<types::material_id, bool> &can_yield)
+    const std::map<types::material_id, bool> &can_yield,
+    const std::map<types::boundary_id, bool> &can_slip)
   {
     prm.enter_subsection("Strength reduction");
-    const std::string entry = "Strength reduction/Materials";
-    materials.clear();
-    for (const std::string &item :
-         Utilities::split_string_list(prm.get("Materials"), ','))
-      {
-        double id = -1;
-        if (!to_number(item, id) || id < 0 || id != std::floor(id) ||
-            can_yield.count(static_cast<types::material_id>(id)) == 0)
-          throw InputError(file,
-                           entry,
-                           "expected material ids of the mesh, got '" + item +
-                             "'");
-        const auto material = static_cast<types::material_id>(id);
-        if (!can_yield.at(material))
-          throw InputError(file,
-                           entry,
-                           "material " + item +
-                             " is elastic: it has no strength to reduce; "
-                             "expected materials with a yield criterion");
-        materials.insert(material);
-      }
+    materials        = parse_ids(prm.get("Materials"),
+                          can_yield,
+                          file,
+                          "Strength reduction/Materials",
+                          "material",
+                          "is elastic: it has no strength to reduce; expected "
+                                 "materials with a yield criterion");
+    interface_curves = parse_ids(prm.get("Interface curves"),
+                                 can_slip,
+                                 file,
+                                 "Strength reduction/Interface curves",
+                                 "curve",
+                                 "is elastic: it has no strength to reduce; "
+                                 "expected curves with a slip criterion");
     factor_increments =
       parse_increments(prm.get("Factor increments"),
                        file,

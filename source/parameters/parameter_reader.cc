@@ -416,7 +416,11 @@ namespace thinlayer
         std::map<types::material_id, bool> can_yield;
         for (const auto &[id, material] : p.materials)
           can_yield[id] = material.yield_criterion != YieldCriterion::elastic;
-        p.strength_reduction.parse(prm, file, can_yield);
+        std::map<types::boundary_id, bool> can_slip;
+        for (const auto &[id, curve] : p.interface_elements)
+          can_slip[id] =
+            curve.criterion != InterfaceElementParameters::Criterion::elastic;
+        p.strength_reduction.parse(prm, file, can_yield, can_slip);
       }
       p.solver.parse(prm, file);
       // With automatic stepping the load stepping halves a failed step and

@@ -44,7 +44,7 @@ namespace thinlayer
     const auto procedure = p.initial_state.procedure;
     summary.initial_state =
       InitialStateParameters::procedure_names.name(procedure);
-    if (!loading_runs() && p.strength_reduction.materials.empty())
+    if (!loading_runs() && !p.strength_reduction.active())
       throw InputError(p.parameter_file,
                        "Boundary <id>",
                        "the loading after the initial state applies nothing: "
@@ -124,12 +124,12 @@ namespace thinlayer
         result        = run_phase({"loading", p.loading, steps});
         judge_outcome(analysis.has_external_load(), result, summary);
         steps += result.steps_run;
-        if (!p.strength_reduction.materials.empty() &&
+        if (p.strength_reduction.active() &&
             ended(result, "the strength reduction"))
           return result;
       }
 
-    if (!p.strength_reduction.materials.empty())
+    if (p.strength_reduction.active())
       {
         out << "  strength reduction" << std::endl;
         analysis.begin_phase(Loads::none, true);

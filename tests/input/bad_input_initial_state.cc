@@ -97,6 +97,16 @@ main()
          "Material 1/Cohesion=1",
          "-s",
          "Strength reduction/Materials=7"});
+  check("a strength reduction of interface elements on an elastic curve",
+        {prm + "case4-rough-wall-zero-thickness.prm",
+         "-s",
+         "Interface curve 6/Slip criterion=elastic",
+         "-s",
+         "Interface curve 6/Adhesion=0",
+         "-s",
+         "Strength reduction/Interface curves=6",
+         "-s",
+         "Output/Directory=results"});
   check("a strength reduction factor that falls",
         {"good.prm",
          "-s",

@@ -13,6 +13,10 @@
 //    from below (the seam's ends carry less than its limit), within 1.5%
 //    on the file's mesh and closer on one with half the elements' size and
 //    half the seam's thickness.
+//  - The same seam as zero-thickness interface elements (a Coulomb
+//    interface, prm/inclined-seam-zero-thickness-strength-reduction.prm):
+//    its tractions are admissible, so by statics F cannot exceed
+//    tan(phi) / tan(beta); it lies below it, within 1%.
 #include <thinlayer/app/command_line.h>
 
 #include <cmath>
@@ -105,5 +109,13 @@ main()
   expect(coarse < exact && std::abs(coarse / exact - 1) < 0.015,
          "the seam slides just below tan(phi) / tan(beta)");
   expect(fine > coarse && fine < exact, "and closer to it when refined");
+
+  const double interface =
+    collapse("inclined-seam-zero-thickness-strength-reduction.prm", {}, phase);
+  std::printf("inclined seam as interface elements: F = %.4f (%+.2f%%)\n",
+              interface,
+              100 * (interface / exact - 1));
+  expect(interface <= exact && interface / exact - 1 > -0.01,
+         "the interface slides just below tan(phi) / tan(beta)");
   return truths::conclude();
 }

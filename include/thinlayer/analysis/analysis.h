@@ -202,8 +202,9 @@ namespace thinlayer
     double
     set_initial_stresses();
 
-    /// Divide the strengths of Strength reduction/Materials by @p factor
-    /// (ContinuumCells::reduce_strength()): for the attempt that follows.
+    /// Divide the strengths of Strength reduction/Materials and its
+    /// Interface curves by @p factor (ElementGroup::reduce_strength()): for
+    /// the attempt that follows.
     void
     reduce_strength(const double factor);
 

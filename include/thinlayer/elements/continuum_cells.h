@@ -146,15 +146,11 @@ namespace thinlayer
       const std::function<SymmetricTensor<2, 3>(const Point<dim> &,
                                                 types::material_id)> &initial);
 
-    /**
-     * The laws of the materials @p materials with their strengths divided
-     * by @p factor (strength reduction): c / factor and tan(phi) / factor,
-     * the dilation angle at most the reduced friction angle; the other
-     * materials' laws as given. Factor 1 restores them.
-     */
+    /// The laws of the materials of @p reduced with their strengths
+    /// divided by @p factor; the other materials' laws as given.
     void
-    reduce_strength(const std::set<types::material_id> &materials,
-                    const double                        factor);
+    reduce_strength(const StrengthReductionParameters &reduced,
+                    const double                       factor) override;
 
   private:
     /// Work space of one chunk of Newton's cell matrices.

@@ -14,6 +14,7 @@
 #include <thinlayer/elements/interface_values.h>
 #include <thinlayer/mesh/interface_pairing.h>
 #include <thinlayer/parallel/cell_partition.h>
+#include <thinlayer/parameters/loading_sections.h>
 
 #include <cmath>
 #include <functional>
@@ -24,6 +25,7 @@
 
 namespace thinlayer
 {
+
   using namespace dealii;
 
   struct Parameters;
@@ -167,6 +169,16 @@ namespace thinlayer
     /// Return to the converged stresses: the step's state is dropped.
     virtual void
     reject() = 0;
+
+    /**
+     * Divide the strengths of the group's parts that @p reduced names by
+     * @p factor: c / factor and tan(phi) / factor, the dilation angle at
+     * most the reduced friction angle (strength reduction; factor 1
+     * restores them). Nothing by default.
+     */
+    virtual void
+    reduce_strength(const StrengthReductionParameters &reduced,
+                    const double                       factor);
 
     /// Take the current state's finiteness and yield ratios (of this
     /// rank's points) into @p check.

@@ -93,6 +93,13 @@ namespace thinlayer
       const CellPartition                                            &partition,
       const std::string &parameter_file);
 
+    /// The laws of the curves of @p reduced (Interface curves) with their
+    /// adhesion and tan(phi) divided by @p factor, the dilation angle at
+    /// most the reduced friction angle; the other curves' as given.
+    void
+    reduce_strength(const StrengthReductionParameters &reduced,
+                    const double                       factor) override;
+
     /**
      * The largest interface stiffness accepted, in units of E / h (E the
      * smaller Young's modulus of the two cells beside an element, h its
@@ -203,6 +210,8 @@ namespace thinlayer
     struct Element
     {
       const InterfaceLaw *law;
+      /// The curve the element lies on: whose law it has.
+      types::boundary_id curve;
       /// The active cell on the plus side: the element's rank is its.
       unsigned int                         plus_cell;
       std::vector<types::global_dof_index> dofs;
@@ -263,6 +272,10 @@ namespace thinlayer
                   FullMatrix<double>     &G) const;
 
     const Kinematics *kinematics = nullptr;
+    /// The curves' parameters (reinit()'s), for the laws strength
+    /// reduction makes anew.
+    const std::map<types::boundary_id, InterfaceElementParameters> *curves =
+      nullptr;
     std::map<types::boundary_id, std::unique_ptr<InterfaceLaw>> laws;
     std::vector<Element>                                        elements;
     std::vector<IntegrationPoint>                               points;

@@ -88,19 +88,31 @@ namespace thinlayer
    */
   struct StrengthReductionParameters
   {
-    /// The materials whose strength is reduced; none: no such phase.
+    /// The materials and the curves of interface elements whose strength
+    /// is reduced; none of either: no such phase.
     std::set<types::material_id> materials;
+    std::set<types::boundary_id> interface_curves;
     /// Increments of F, from 1.
     std::vector<double> factor_increments;
 
+    /// Whether a strength reduction phase runs.
+    bool
+    active() const
+    {
+      return !materials.empty() || !interface_curves.empty();
+    }
+
     static void
     declare(ParameterHandler &prm);
-    /// Checks the materials against @p material_ids (those of the mesh,
-    /// with @p can_yield whether each has a yield criterion).
+    /// Checks the materials against @p can_yield (the mesh's materials,
+    /// whether each has a yield criterion) and the curves against
+    /// @p can_slip (the interface curves, whether each has a slip
+    /// criterion).
     void
     parse(ParameterHandler                         &prm,
           const std::string                        &parameter_file,
-          const std::map<types::material_id, bool> &can_yield);
+          const std::map<types::material_id, bool> &can_yield,
+          const std::map<types::boundary_id, bool> &can_slip);
   };
 } // namespace thinlayer
 
