@@ -114,7 +114,8 @@ else
   # benchmark run once), and the page checked in headless Chromium.
   echo "thinlayer setup: scripts/reproduce.sh --quick"
   report="$build/reproduce-quick"
-  "$top/scripts/reproduce.sh" --quick --output "$report" 2>&1 | tee "$build/reproduce-quick.log" ||
+  "$top/scripts/reproduce.sh" --quick --jobs "$(nproc)" --output "$report" 2>&1 |
+    tee "$build/reproduce-quick.log" ||
     { echo "thinlayer setup: the reproduction failed; the log is $build/reproduce-quick.log" >&2
       exit 1; }
   PYTHONPATH="$top" /usr/bin/python3 -m thinlayer_tools.report.check "$report/report.html"

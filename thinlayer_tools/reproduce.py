@@ -15,6 +15,7 @@ benchmark (for CI); --report-only rewrites the page from the runs already
 in DIR.
 """
 import argparse
+import concurrent.futures
 import os
 import shutil
 import subprocess
@@ -108,28 +109,58 @@ def run_list(quick):
     return runs
 
 
-def run_all(runs, directory):
-    """Each run with a progress line; a run that ends in an error stops the
-    reproduction (non-convergence is a result, not an error)."""
+def run_one(directory, name, scene, overrides, ranks=1):
+    """One run into DIR/runs/NAME, its output into DIR/logs/NAME.log: its
+    exit status and wall time."""
+    command = mpirun(ranks) + [
+        THINLAYER, os.path.join(TOP, "prm", scene + ".prm"),
+        "-s", "Output/Directory=" + os.path.join(directory, "runs", name),
+        "-s", "Output/Print timing=false"]
+    for entry in overrides:
+        command += ["-s", entry]
+    begun = time.time()
+    done = subprocess.run(command, capture_output=True, text=True)
+    with open(os.path.join(directory, "logs", name + ".log"), "w") as f:
+        f.write(done.stdout + done.stderr)
+    return done.returncode, time.time() - begun
+
+
+def alone(run):
+    """Whether a run must have the machine to itself: one on several ranks,
+    or one whose time per iteration the scaling section models."""
+    name, _, _, *ranks = run
+    return (ranks and ranks[0] > 1) or name.startswith("scaling-")
+
+
+def run_all(runs, directory, jobs=1):
+    """Each run with a progress line as it ends; a run that ends in an error
+    stops the reproduction (non-convergence is a result, not an error). With
+    @p jobs > 1 the runs that need not run alone (alone()) run that many at
+    a time, then the others one by one."""
     start = time.time()
-    for k, (name, scene, overrides, *ranks) in enumerate(runs, 1):
-        print("[%2d/%d] %-28s %s" % (k, len(runs), name, "prm/%s.prm" % scene), end="", flush=True)
-        command = mpirun(ranks[0] if ranks else 1) + [
-                   THINLAYER, os.path.join(TOP, "prm", scene + ".prm"),
-                   "-s", "Output/Directory=" + os.path.join(directory, "runs", name),
-                   "-s", "Output/Print timing=false"]
-        for entry in overrides:
-            command += ["-s", entry]
-        begun = time.time()
-        done = subprocess.run(command, capture_output=True, text=True)
-        log = os.path.join(directory, "logs", name + ".log")
-        with open(log, "w") as f:
-            f.write(done.stdout + done.stderr)
-        if done.returncode != 0:
-            print("\nreproduce: %s failed (exit %d); its output is in %s"
-                  % (name, done.returncode, log), file=sys.stderr)
+    shared = [r for r in runs if jobs > 1 and not alone(r)]
+    ordered = shared + [r for r in runs if r not in shared]
+
+    def report(k, run, status, seconds):
+        name, scene = run[0], run[1]
+        print("[%2d/%d] %-28s %s  %6.1f s  (%.0f s in all)" % (
+            k, len(ordered), name, "prm/%s.prm" % scene, seconds, time.time() - start),
+            flush=True)
+        if status != 0:
+            print("reproduce: %s failed (exit %d); its output is in %s" % (
+                name, status, os.path.join(directory, "logs", name + ".log")), file=sys.stderr)
             sys.exit(1)
-        print("  %6.1f s  (%.0f s in all)" % (time.time() - begun, time.time() - start), flush=True)
+
+    k = 0
+    if shared:
+        with concurrent.futures.ThreadPoolExecutor(jobs) as pool:
+            futures = {pool.submit(run_one, directory, *run): run for run in shared}
+            for future in concurrent.futures.as_completed(futures):
+                k += 1
+                report(k, futures[future], *future.result())
+    for run in ordered[len(shared):]:
+        k += 1
+        report(k, run, *run_one(directory, *run))
 
 
 def run_benchmark(directory, quick):
@@ -178,6 +209,9 @@ def main():
     parser.add_argument("--quick", action="store_true", help="smaller sweeps, one-pass benchmark")
     parser.add_argument("--output", default=os.path.join(TOP, "output", "reproduce"),
                         help="the report's directory (replaced when the new report is written)")
+    parser.add_argument("--jobs", type=int, default=1,
+                        help="runs at a time (those on one rank that no section times; "
+                             "the others always alone)")
     parser.add_argument("--report-only", action="store_true",
                         help="rewrite report.html from the runs in the directory")
     arguments = parser.parse_args()
@@ -192,7 +226,10 @@ def main():
         if os.path.isdir(work):
             shutil.rmtree(work)
         os.makedirs(os.path.join(work, "logs"))
-        run_all(run_list(arguments.quick), work)
+        jobs = max(1, arguments.jobs)
+        run_all(run_list(arguments.quick), work, jobs)
+        with open(os.path.join(work, "jobs.txt"), "w") as f:
+            f.write("%d\n" % jobs)
         run_benchmark(work, arguments.quick)
         run_performance(work, arguments.quick)
         run_fourier_vs_3d(work, arguments.quick)
@@ -201,7 +238,7 @@ def main():
     items = sections(runs, arguments.quick)
     page.write(os.path.join(work, "report.html"),
                "thinlayer reproduces Griffiths' thin-layer interfaces",
-               introduction(arguments.quick), items,
+               introduction(arguments.quick, jobs_of(work)), items,
                footer(directory, runs, time.time() - start))
     if work != directory:
         if os.path.isdir(directory):
@@ -211,7 +248,16 @@ def main():
                                              time.time() - start))
 
 
-def introduction(quick):
+def jobs_of(directory):
+    """How many runs at a time the runs in DIR were made (jobs.txt)."""
+    try:
+        with open(os.path.join(directory, "jobs.txt")) as f:
+            return int(f.read())
+    except (OSError, ValueError):
+        return 1
+
+
+def introduction(quick, jobs=1):
     return [
         "D.V. Griffiths, Numerical modelling of interfaces using conventional finite "
         "elements: each table and figure of the paper beside what thinlayer computes, by "
@@ -224,7 +270,10 @@ def introduction(quick):
         "not in the text we have, so a figure's verdict compares what the text says of it. "
         "Curves join converged states only; an x marks the attempt that ended a run.",
     ] + (["This is the --quick report: smaller sweeps and a benchmark run once, for CI."]
-         if quick else [])
+         if quick else []) + (["Its scenes on one rank ran %d at a time: their wall times are "
+                               "those of a shared machine (the benchmarks, the scaling and "
+                               "the runs on several ranks ran alone)." % jobs]
+                              if jobs > 1 else [])
 
 
 def footer(directory, runs, seconds):
