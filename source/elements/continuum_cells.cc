@@ -250,15 +250,17 @@ namespace thinlayer
     const StrengthReductionParameters &reduced,
     const double                       factor)
   {
-    const double degree = numbers::PI / 180;
     for (const types::material_id id : reduced.materials)
       {
         MaterialParameters m = materials.at(id);
-        m.cohesion /= factor;
-        m.friction_angle =
-          std::atan(std::tan(m.friction_angle * degree) / factor) / degree;
-        m.dilation_angle = std::min(m.dilation_angle, m.friction_angle);
-        laws[id]         = create_material_law(m);
+        const auto         r = StrengthReductionParameters::reduce(m.cohesion,
+                                                           m.friction_angle,
+                                                           m.dilation_angle,
+                                                           factor);
+        m.cohesion           = r.cohesion;
+        m.friction_angle     = r.friction_angle;
+        m.dilation_angle     = r.dilation_angle;
+        laws[id]             = create_material_law(m);
       }
     time_step = std::numeric_limits<double>::infinity();
     for (const auto &[id, law] : laws)

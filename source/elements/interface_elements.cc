@@ -83,16 +83,17 @@ namespace thinlayer
     const StrengthReductionParameters &reduced,
     const double                       factor)
   {
-    const double degree = numbers::PI / 180;
     for (const types::boundary_id id : reduced.interface_curves)
       {
         InterfaceElementParameters curve = curves->at(id);
-        curve.adhesion /= factor;
-        curve.friction_angle =
-          std::atan(std::tan(curve.friction_angle * degree) / factor) / degree;
-        curve.dilation_angle =
-          std::min(curve.dilation_angle, curve.friction_angle);
-        laws[id] = std::make_unique<InterfaceLaw>(curve);
+        const auto r   = StrengthReductionParameters::reduce(curve.adhesion,
+                                                           curve.friction_angle,
+                                                           curve.dilation_angle,
+                                                           factor);
+        curve.adhesion = r.cohesion;
+        curve.friction_angle = r.friction_angle;
+        curve.dilation_angle = r.dilation_angle;
+        laws[id]             = std::make_unique<InterfaceLaw>(curve);
       }
     for (Element &element : elements)
       element.law = laws.at(element.curve).get();

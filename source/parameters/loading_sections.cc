@@ -4,6 +4,7 @@
 #include <thinlayer/parameters/loading_sections.h>
 #include <thinlayer/parameters/parameter_checks.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 
@@ -187,6 +188,19 @@ namespace thinlayer
                        "expected a pressure >= 0, got " + prm.get("Surcharge"));
     reset_displacements = prm.get_bool("Reset displacements");
     prm.leave_subsection();
+  }
+
+
+  StrengthReductionParameters::Reduced
+  StrengthReductionParameters::reduce(const double cohesion,
+                                      const double friction_angle,
+                                      const double dilation_angle,
+                                      const double factor)
+  {
+    const double degree = numbers::PI / 180;
+    const double phi =
+      std::atan(std::tan(friction_angle * degree) / factor) / degree;
+    return {cohesion / factor, phi, std::min(dilation_angle, phi)};
   }
 
 

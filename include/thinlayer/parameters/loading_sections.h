@@ -95,6 +95,18 @@ namespace thinlayer
     /// Increments of F, from 1.
     std::vector<double> factor_increments;
 
+    /// A strength reduced by a factor: c / factor, atan(tan(phi) /
+    /// factor), the dilation angle at most that (angles in degrees).
+    struct Reduced
+    {
+      double cohesion, friction_angle, dilation_angle;
+    };
+    static Reduced
+    reduce(const double cohesion,
+           const double friction_angle,
+           const double dilation_angle,
+           const double factor);
+
     /// Whether a strength reduction phase runs.
     bool
     active() const
