@@ -13,14 +13,34 @@
 
 namespace thinlayer
 {
+  namespace
+  {
+    /// Whether a phase of @p loads applies the Boundary sections' values,
+    /// and whether it applies the weight.
+    template <typename PhaseLoads>
+    bool
+    applies_boundaries(const PhaseLoads loads)
+    {
+      return loads == PhaseLoads::boundaries ||
+             loads == PhaseLoads::boundaries_and_weight;
+    }
+
+    template <typename PhaseLoads>
+    bool
+    applies_weight(const PhaseLoads loads)
+    {
+      return loads == PhaseLoads::weight ||
+             loads == PhaseLoads::boundaries_and_weight;
+    }
+  } // namespace
+
+
   template <int dim>
   void
   Analysis<dim>::set_phase_loads(const PhaseLoads loads)
   {
-    const bool boundaries = loads == PhaseLoads::boundaries ||
-                            loads == PhaseLoads::boundaries_and_weight;
-    const bool weight =
-      loads == PhaseLoads::weight || loads == PhaseLoads::boundaries_and_weight;
+    const bool boundaries = applies_boundaries(loads);
+    const bool weight     = applies_weight(loads);
     for (const auto &system : systems)
       {
         ModeSystem &mode = *system;
@@ -67,11 +87,9 @@ namespace thinlayer
   bool
   Analysis<dim>::applies_anything(const PhaseLoads loads) const
   {
-    const bool boundaries = loads == PhaseLoads::boundaries ||
-                            loads == PhaseLoads::boundaries_and_weight;
-    const bool weight =
-      loads == PhaseLoads::weight || loads == PhaseLoads::boundaries_and_weight;
-    bool applies = false;
+    const bool boundaries = applies_boundaries(loads);
+    const bool weight     = applies_weight(loads);
+    bool       applies    = false;
     for (const auto &system : systems)
       applies =
         applies ||

@@ -178,46 +178,25 @@ namespace thinlayer
   }
 
 
-  template Tensor<1, 2>
-  outward_normal<2>(const Triangulation<2>::cell_iterator &,
-                    const unsigned int);
-  template Tensor<1, 3>
-  outward_normal<3>(const Triangulation<3>::cell_iterator &,
-                    const unsigned int);
-  template double
-  ground_level(const Triangulation<2> &);
-  template double
-  ground_level(const Triangulation<3> &);
-  template void
-  add_ground_pressure(const Mapping<2> &,
-                      const DoFHandler<2> &,
-                      const Kinematics &,
-                      const double,
-                      const double,
-                      const std::set<types::boundary_id> &,
-                      const unsigned int,
-                      ModeVector &);
-  template void
-  add_ground_pressure(const Mapping<3> &,
-                      const DoFHandler<3> &,
-                      const Kinematics &,
-                      const double,
-                      const double,
-                      const std::set<types::boundary_id> &,
-                      const unsigned int,
-                      ModeVector &);
-  template void
-  add_weight(const Mapping<2> &,
-             const DoFHandler<2> &,
-             const Kinematics &,
-             const std::map<types::material_id, double> &,
-             const unsigned int,
-             ModeVector &);
-  template void
-  add_weight(const Mapping<3> &,
-             const DoFHandler<3> &,
-             const Kinematics &,
-             const std::map<types::material_id, double> &,
-             const unsigned int,
-             ModeVector &);
+#define THINLAYER_INSTANTIATE(dim)                                          \
+  template Tensor<1, dim> outward_normal<dim>(                              \
+    const Triangulation<dim>::cell_iterator &, const unsigned int);         \
+  template double ground_level(const Triangulation<dim> &);                 \
+  template void   add_ground_pressure(const Mapping<dim> &,                 \
+                                      const DoFHandler<dim> &,              \
+                                      const Kinematics &,                   \
+                                      const double,                         \
+                                      const double,                         \
+                                      const std::set<types::boundary_id> &, \
+                                      const unsigned int,                   \
+                                      ModeVector &);                        \
+  template void   add_weight(const Mapping<dim> &,                          \
+                             const DoFHandler<dim> &,                       \
+                             const Kinematics &,                            \
+                             const std::map<types::material_id, double> &,  \
+                             const unsigned int,                            \
+                             ModeVector &);
+  THINLAYER_INSTANTIATE(2)
+  THINLAYER_INSTANTIATE(3)
+#undef THINLAYER_INSTANTIATE
 } // namespace thinlayer

@@ -42,8 +42,8 @@
 #include <string>
 #include <vector>
 
-#include "../common/run_results.h"
 #include "../common/parallel_truths.h"
+#include "../common/run_results.h"
 #include "../common/truths.h"
 
 namespace

@@ -25,8 +25,8 @@
 #include <fstream>
 #include <string>
 
-#include "../common/run_results.h"
 #include "../common/parallel_truths.h"
+#include "../common/run_results.h"
 #include "../common/truths.h"
 
 namespace
