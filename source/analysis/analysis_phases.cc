@@ -5,11 +5,15 @@
 #include <thinlayer/base/input_error.h>
 #include <thinlayer/base/text_format.h>
 #include <thinlayer/discretisation/initial_stresses.h>
+#include <thinlayer/elements/continuum_cells.h>
+#include <thinlayer/elements/interface_elements.h>
 #include <thinlayer/materials/material_law.h>
 #include <thinlayer/parallel/mpi.h>
 
 #include <cmath>
 #include <limits>
+#include <utility>
+#include <vector>
 
 namespace thinlayer
 {
@@ -31,6 +35,20 @@ namespace thinlayer
     {
       return loads == PhaseLoads::weight ||
              loads == PhaseLoads::boundaries_and_weight;
+    }
+
+    /// The largest of every rank's @p worst, and the @p facts (a place, a
+    /// material) of the rank that has it: a collective call.
+    std::pair<double, std::vector<double>>
+    worst_over_ranks(const double worst, const std::vector<double> &facts)
+    {
+      const double        global = mpi::max(worst);
+      const bool          mine   = worst == global;
+      std::vector<double> found;
+      for (const double fact : facts)
+        found.push_back(
+          mpi::max(mine ? fact : -std::numeric_limits<double>::infinity()));
+      return {global, found};
     }
   } // namespace
 
@@ -124,12 +142,13 @@ namespace thinlayer
     else
       {
         const KZeroStresses field(tria, parameters);
+        const auto          initial = [&](const Point<dim>        &x,
+                                 const types::material_id material) {
+          return field.stress(x, material);
+        };
         // The first group is the continuum (the one continuum points to).
         static_cast<ContinuumCells<dim> &>(*groups.front())
-          .set_initial_stresses(
-            [&](const Point<dim> &x, const types::material_id material) {
-              return field.stress(x, material);
-            });
+          .set_initial_stresses(initial);
 
         // The stresses start admissible: the worst point, over the ranks.
         double   worst = -std::numeric_limits<double>::infinity();
@@ -153,21 +172,15 @@ namespace thinlayer
                   }
               }
           }
-        const double global_worst = mpi::max(worst);
+        using text_format::printf;
+        const auto [global_worst, facts] =
+          worst_over_ranks(worst, {where[0], where[1], where_material});
         if (global_worst > 1e-9)
           {
-            const bool   mine = worst == global_worst;
-            const double x    = mpi::max(
-              mine ? where[0] : -std::numeric_limits<double>::infinity());
-            const double y = mpi::max(
-              mine ? where[1] : -std::numeric_limits<double>::infinity());
-            const auto id = static_cast<types::material_id>(
-              mpi::max(mine ? where_material
-                            : -std::numeric_limits<double>::infinity()));
+            const auto id = static_cast<types::material_id>(facts[2]);
             const MaterialParameters &material = parameters.materials.at(id);
             const double              s =
               std::sin(material.friction_angle * numbers::PI / 180);
-            using text_format::printf;
             const std::string range =
               material.cohesion == 0 && s > 0
                 ? " (without cohesion, between K_a = " +
@@ -181,12 +194,62 @@ namespace thinlayer
               "surface of material " +
                 std::to_string(id) +
                 (material.name.empty() ? "" : " (" + material.name + ")") +
-                " in the cell centred at (" + printf("%g", x) + ", " +
-                printf("%g", y) + "): yield ratio " +
+                " in the cell centred at (" + printf("%g", facts[0]) + ", " +
+                printf("%g", facts[1]) + "): yield ratio " +
                 printf("%.3g", global_worst) +
                 " (K0 = " + printf("%g", material.k0) +
                 "); expected a K0 the material can carry at rest" + range);
           }
+
+        // Interface elements start from the traction of the stresses beside
+        // them: in equilibrium only where both sides put the same traction
+        // on them, and a state of their law only where it is admissible.
+        for (const auto &group : groups)
+          if (auto *interfaces =
+                dynamic_cast<InterfaceElements<dim> *>(group.get()))
+            {
+              const auto found = interfaces->set_initial_tractions(initial);
+              const auto [mismatch, at] =
+                worst_over_ranks(found.mismatch,
+                                 {found.mismatch_at[0],
+                                  found.mismatch_at[1],
+                                  double(found.mismatch_curve),
+                                  double(found.mismatch_materials[0]),
+                                  double(found.mismatch_materials[1])});
+              if (mismatch > 1e-9)
+                throw InputError(
+                  parameters.parameter_file,
+                  MaterialParameters::section(
+                    static_cast<types::material_id>(at[3])) +
+                    "/K0",
+                  "the K0 procedure's stresses on the two sides of "
+                  "interface curve " +
+                    printf("%g", at[2]) + " (materials " + printf("%g", at[3]) +
+                    " and " + printf("%g", at[4]) +
+                    ") put different tractions on it at (" +
+                    printf("%g", at[0]) + ", " + printf("%g", at[1]) +
+                    "), by " + printf("%.3g", mismatch) +
+                    " of the larger; expected the same K0 on both sides of "
+                    "an interface that is not horizontal");
+              const auto [ratio, place] =
+                worst_over_ranks(found.yield_ratio,
+                                 {found.yield_at[0],
+                                  found.yield_at[1],
+                                  double(found.yield_curve)});
+              if (ratio > 1e-9)
+                throw InputError(
+                  parameters.parameter_file,
+                  InterfaceElementParameters::section(
+                    static_cast<unsigned int>(place[2])) +
+                    "/Friction angle",
+                  "the K0 procedure's initial traction on interface curve " +
+                    printf("%g", place[2]) + " at (" + printf("%g", place[0]) +
+                    ", " + printf("%g", place[1]) +
+                    ") lies outside its slip surface, by " +
+                    printf("%.3g", ratio) + " of the traction" +
+                    "; expected an interface that can carry the at-rest "
+                    "stresses (or K0s that put less shear on it)");
+            }
 
         compute_internal_forces();
         double imbalance = 0, load = 0;

@@ -15,13 +15,16 @@ namespace thinlayer
     , level(thinlayer::ground_level(mesh))
   {
     // Every boundary face that faces upward is the ground surface: it must
-    // be horizontal and at the top level.
+    // be horizontal and at the top level. The sides of interface elements
+    // (the mesh is split along them) are inside the body.
     double x_min = std::numeric_limits<double>::infinity(), x_max = -x_min;
     for (const auto &cell : mesh.active_cell_iterators())
       {
         for (const auto f : cell->face_indices())
           {
-            if (!cell->face(f)->at_boundary())
+            if (!cell->face(f)->at_boundary() ||
+                parameters.interface_elements.count(
+                  cell->face(f)->boundary_id()) > 0)
               continue;
             const Tensor<1, 2> n = outward_normal<2>(cell, f);
             if (n[1] <= 1e-9)

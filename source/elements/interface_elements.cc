@@ -101,6 +101,63 @@ namespace thinlayer
 
 
   template <int dim>
+  typename InterfaceElements<dim>::InitialTractions
+  InterfaceElements<dim>::set_initial_tractions(
+    const std::function<SymmetricTensor<2, 3>(const dealii::Point<dim> &,
+                                              types::material_id)> &initial)
+  {
+    InitialTractions found;
+    for (unsigned int p = 0; p < points.size(); ++p)
+      {
+        if (!owns_point(p))
+          continue;
+        const IntegrationPoint &point   = points[p];
+        const Element          &element = elements[point.element];
+        // sigma n in the local frame (s, n, t), from either side's stress.
+        std::array<Tensor<1, 3>, 2> sides;
+        for (unsigned int side = 0; side < 2; ++side)
+          sides[side] =
+            point.frame *
+            (initial(point.position, element.materials[side]) * point.frame[1]);
+        const double larger = std::max(sides[0].norm(), sides[1].norm());
+        const double mismatch =
+          larger > 0 ? (sides[0] - sides[1]).norm() / larger : 0.;
+        if (mismatch > found.mismatch)
+          {
+            found.mismatch           = mismatch;
+            found.mismatch_at        = point.position;
+            found.mismatch_curve     = point.curve;
+            found.mismatch_materials = element.materials;
+          }
+        const Tensor<1, 3> traction = 0.5 * (sides[0] + sides[1]);
+        if (element.law->can_yield())
+          {
+            // Against the traction's size: the law's own yield ratio is
+            // scaled by its stiffness where there is no adhesion.
+            const double size = traction.norm();
+            const double ratio =
+              element.law->yield_function(traction) / (size > 0 ? size : 1.);
+            if (ratio > found.yield_ratio)
+              {
+                found.yield_ratio = ratio;
+                found.yield_at    = point.position;
+                found.yield_curve = point.curve;
+              }
+          }
+        for (unsigned int s = 0; s < kinematics->n_stations(); ++s)
+          {
+            InterfacePointState &state =
+              states[p * kinematics->n_stations() + s];
+            state                    = InterfacePointState();
+            state.traction           = traction;
+            state.converged_traction = traction;
+          }
+      }
+    return found;
+  }
+
+
+  template <int dim>
   void
   InterfaceElements<dim>::check_stiffness(
     const FacingSides<dim>                                 &pair,
@@ -150,6 +207,8 @@ namespace thinlayer
     Element                              element{laws.at(pair.curve).get(),
                     pair.curve,
                     pair.plus_cell->active_cell_index(),
+                    {{pair.plus_cell->material_id(),
+                                                   pair.minus_cell->material_id()}},
                     {},
                     {}};
     std::map<types::global_dof_index, unsigned int> local;

@@ -136,8 +136,11 @@ namespace thinlayer
       "above the point), sigma_h = K0 sigma_v (Material/K0), set at once; "
       "only a level ground surface and horizontal layers have it in "
       "equilibrium (refused where the surface is not level, and where it "
-      "lies outside a material's yield surface); 2D meshes (plane strain, "
-      "Fourier). 'gravity loading': the weight and the surcharge applied "
+      "lies outside a material's yield surface); zero-thickness interface "
+      "elements start from the traction of the stresses beside them (the "
+      "same on both sides unless the interface is horizontal, and inside "
+      "its slip surface); 2D meshes (plane strain, Fourier). 'gravity "
+      "loading': the weight and the surcharge applied "
       "in a phase of their own (Load increments below), elastic-plastic, "
       "any kinematics. Either way the loading then holds them fixed.");
     prm.declare_entry("Load increments",

@@ -57,12 +57,6 @@ namespace thinlayer
                          "the K0 procedure is built for 2D meshes (plane "
                          "strain, Fourier); expected 'gravity loading' in "
                          "3D");
-      if (!p.interface_elements.empty())
-        throw InputError(p.parameter_file,
-                         entry,
-                         "the K0 procedure sets the stresses of cells, not "
-                         "of zero-thickness interface elements; expected "
-                         "'gravity loading' with interface elements");
       if (p.kinematics.fourier &&
           (p.kinematics.antisymmetric ||
            std::find(p.kinematics.harmonics.begin(),

@@ -1,6 +1,7 @@
 #ifndef thinlayer_elements_interface_elements_h
 #define thinlayer_elements_interface_elements_h
 
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
@@ -18,6 +19,8 @@
 #include <thinlayer/parameters/parameters.h>
 
 #include <array>
+#include <functional>
+#include <limits>
 #include <map>
 #include <memory>
 #include <set>
@@ -99,6 +102,37 @@ namespace thinlayer
     void
     reduce_strength(const StrengthReductionParameters &reduced,
                     const double                       factor) override;
+
+    /// What set_initial_tractions() found at this rank's points, each with
+    /// the place and the curve of the worst point.
+    struct InitialTractions
+    {
+      /// The largest difference between the tractions the two sides'
+      /// stresses put on the interface, over the larger of the two.
+      double                            mismatch = 0;
+      dealii::Point<dim>                mismatch_at;
+      types::boundary_id                mismatch_curve     = 0;
+      std::array<types::material_id, 2> mismatch_materials = {{0, 0}};
+      /// The largest yield function of a law that can yield, over the
+      /// traction's magnitude.
+      double             yield_ratio = -std::numeric_limits<double>::infinity();
+      dealii::Point<dim> yield_at;
+      types::boundary_id yield_curve = 0;
+    };
+
+    /**
+     * Start every point of this rank's elements from the traction of the
+     * initial stress field @p initial (at a point, in a cell of a material;
+     * as ContinuumCells::set_initial_stresses()): sigma n in the local
+     * frame, the mean of the two sides' (their materials' stresses), with
+     * nothing slipped. Only where the two sides agree is the field in
+     * equilibrium across the interface, and only an admissible traction is
+     * a state of the law: both are measured for the caller to judge.
+     */
+    InitialTractions
+    set_initial_tractions(
+      const std::function<SymmetricTensor<2, 3>(const dealii::Point<dim> &,
+                                                types::material_id)> &initial);
 
     /**
      * The largest interface stiffness accepted, in units of E / h (E the
@@ -213,7 +247,9 @@ namespace thinlayer
       /// The curve the element lies on: whose law it has.
       types::boundary_id curve;
       /// The active cell on the plus side: the element's rank is its.
-      unsigned int                         plus_cell;
+      unsigned int plus_cell;
+      /// The materials of the plus and the minus side.
+      std::array<types::material_id, 2>    materials;
       std::vector<types::global_dof_index> dofs;
       /// The same DoFs of every mode in Newton's coupled numbering.
       std::vector<types::global_dof_index> coupled_dofs;
