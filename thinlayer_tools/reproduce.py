@@ -24,8 +24,8 @@ import time
 
 from thinlayer_tools import THINLAYER, TOP, mpirun, run_module
 from thinlayer_tools.report import (bearing_capacity, case1, case4, earth_pressure, footings,
-                                    limits, methods, page, parallel, scaling, solid, speed,
-                                    strength_reduction, weight)
+                                    limits, methods, page, parallel, phases, scaling, solid,
+                                    speed, strength_reduction, weight)
 from thinlayer_tools.report.runs import DEFAULT, PAPER, Runs
 
 ALL_ALPHAS = "alpha = 10, 20, 30, 40, 45, 50, 60, 70, 80"
@@ -85,6 +85,8 @@ def run_list(quick):
     runs += strength_reduction.run_list(quick)
     # Bearing capacity factors (a surcharge from the K0 procedure).
     runs += bearing_capacity.run_list(quick)
+    # Loading phases: a block pressed, then pushed until it slides.
+    runs += phases.run_list(quick)
     # The same scenes on several MPI ranks (the fourth field), for the
     # section on ranks: every kinematics and element kind, each method kind.
     runs += parallel.ONE_RANK_RUNS
@@ -198,6 +200,7 @@ def sections(runs, quick):
             + earth_pressure.sections(runs, quick)
             + strength_reduction.sections(runs, quick)
             + bearing_capacity.sections(runs, quick)
+            + phases.sections(runs, quick)
             + speed.sections(runs, quick)
             + parallel.sections(runs, quick) + scaling.sections(runs, quick)
             + solid.sections(runs, quick))

@@ -47,10 +47,6 @@ namespace thinlayer
     , mapping(2)
     , quadrature(parameters.discretisation.gauss_points_per_direction)
     , dof_handler(tria)
-    , boundary_data(parameters.boundaries,
-                    parameters.mesh.geometry_parameters,
-                    kinematics,
-                    parameters.parameter_file)
     , accepted_lambda(0)
     , current_lambda(0)
     , pending(false)
@@ -58,6 +54,17 @@ namespace thinlayer
   {
     AssertThrow(kinematics.mesh_dimension() == dim,
                 ExcMessage("The kinematics' mesh dimension is the mesh's."));
+    boundary_data.push_back(
+      std::make_unique<BoundaryData>(parameters.boundaries,
+                                     parameters.mesh.geometry_parameters,
+                                     kinematics,
+                                     parameters.parameter_file));
+    for (const LoadingPhaseParameters &phase : parameters.loading_phases)
+      boundary_data.push_back(
+        std::make_unique<BoundaryData>(phase.boundaries,
+                                       parameters.mesh.geometry_parameters,
+                                       kinematics,
+                                       parameters.parameter_file));
   }
 
 
@@ -69,7 +76,7 @@ namespace thinlayer
   void
   Analysis<dim>::setup()
   {
-    if (!boundary_data.has_constraints())
+    if (!boundary_data.front()->has_constraints())
       throw InputError(parameters.parameter_file,
                        "Boundary <id>/Constrained components",
                        "no displacement component is constrained anywhere; "
@@ -134,19 +141,25 @@ namespace thinlayer
 
         // Prescribed displacements at unit load factor; the nodes tied to
         // them (centre nodes, the axis) follow through the structural lines.
-        ModeVector &u = mode.boundary_prescribed_displacement;
-        u.reinit(dof_partitioner);
-        for (const auto &[dof, value] :
-             boundary_data.prescribed_values(mapping, dof_handler, m))
-          if (u.in_local_range(dof))
-            u(dof) = value;
-        distribute(mode.structural_constraints, u);
+        mode.boundary_values.resize(boundary_data.size());
+        for (unsigned int k = 0; k < boundary_data.size(); ++k)
+          {
+            ModeSystem::BoundaryValues &values = mode.boundary_values[k];
+            ModeVector                 &u      = values.prescribed_displacement;
+            u.reinit(dof_partitioner);
+            for (const auto &[dof, value] :
+                 boundary_data[k]->prescribed_values(mapping, dof_handler, m))
+              if (u.in_local_range(dof))
+                u(dof) = value;
+            distribute(mode.structural_constraints, u);
 
-        mode.boundary_load.reinit(dof_partitioner);
-        boundary_data.assemble_load_vector(mapping,
-                                           dof_handler,
-                                           m,
-                                           mode.boundary_load);
+            values.load.reinit(dof_partitioner);
+            boundary_data[k]->assemble_load_vector(mapping,
+                                                   dof_handler,
+                                                   m,
+                                                   values.load);
+            values.rhs.reinit(dof_partitioner);
+          }
         mode.weight_load.reinit(dof_partitioner);
         add_weight(
           mapping, dof_handler, kinematics, weights, m, mode.weight_load);
@@ -158,8 +171,7 @@ namespace thinlayer
                             held,
                             m,
                             mode.weight_load);
-        for (ModeVector *v : {&mode.boundary_rhs,
-                              &mode.held_load,
+        for (ModeVector *v : {&mode.held_load,
                               &mode.unit_prescribed_displacement,
                               &mode.unit_load,
                               &mode.unit_rhs})
@@ -188,18 +200,24 @@ namespace thinlayer
                     matrix, dofs, mode.condensed_stiffness);
                 });
             // One rank owns every entry, in order.
-            Vector<double> u(mode.boundary_prescribed_displacement.begin(),
-                             mode.boundary_prescribed_displacement.end()),
-              Ku(u.size());
-            mode.stiffness.vmult(Ku, u);
-            std::copy(Ku.begin(), Ku.end(), mode.boundary_rhs.begin());
+            for (ModeSystem::BoundaryValues &values : mode.boundary_values)
+              {
+                Vector<double> u(values.prescribed_displacement.begin(),
+                                 values.prescribed_displacement.end()),
+                  Ku(u.size());
+                mode.stiffness.vmult(Ku, u);
+                std::copy(Ku.begin(), Ku.end(), values.rhs.begin());
+              }
           }
         else
           {
             // The raw stiffness is not kept: each rank adds its cells'
             // K u_prescribed.
-            const GhostValues ghosts(mode.boundary_prescribed_displacement);
-            Vector<double>    u, Ku;
+            std::vector<std::unique_ptr<GhostValues>> ghosts;
+            for (const auto &values : mode.boundary_values)
+              ghosts.push_back(
+                std::make_unique<GhostValues>(values.prescribed_displacement));
+            Vector<double> u, Ku;
             for (const auto &group : groups)
               group->assemble_elastic(
                 m, [&](const auto &dofs, const FullMatrix<double> &matrix) {
@@ -207,17 +225,23 @@ namespace thinlayer
                     matrix, dofs, *mode.distributed_stiffness);
                   u.reinit(dofs.size());
                   Ku.reinit(dofs.size());
-                  for (unsigned int i = 0; i < dofs.size(); ++i)
-                    u[i] = mode.boundary_prescribed_displacement[dofs[i]];
-                  matrix.vmult(Ku, u);
-                  for (unsigned int i = 0; i < dofs.size(); ++i)
-                    mode.boundary_rhs[dofs[i]] += Ku[i];
+                  for (ModeSystem::BoundaryValues &values :
+                       mode.boundary_values)
+                    {
+                      for (unsigned int i = 0; i < dofs.size(); ++i)
+                        u[i] = values.prescribed_displacement[dofs[i]];
+                      matrix.vmult(Ku, u);
+                      for (unsigned int i = 0; i < dofs.size(); ++i)
+                        values.rhs[dofs[i]] += Ku[i];
+                    }
                 });
             mode.distributed_stiffness->compress(VectorOperation::add);
-            mode.boundary_rhs.compress(VectorOperation::add);
+            for (ModeSystem::BoundaryValues &values : mode.boundary_values)
+              values.rhs.compress(VectorOperation::add);
           }
         // f - K u_prescribed.
-        mode.boundary_rhs.sadd(-1, 1, mode.boundary_load);
+        for (ModeSystem::BoundaryValues &values : mode.boundary_values)
+          values.rhs.sadd(-1, 1, values.load);
       }
   }
 
@@ -488,16 +512,19 @@ namespace thinlayer
   {
     // Each rank found those at the nodes it holds, each naming the first
     // node (in parentheses) where it met them: the lowest rank's stands.
-    std::vector<std::string> all = boundary_data.get_warnings();
+    std::vector<std::string> all;
+    for (const auto &data : boundary_data)
+      for (const std::string &w : data->get_warnings())
+        all.push_back(w);
     if (mpi::n_ranks() > 1)
       {
+        const std::vector<std::string> mine = all;
         all.clear();
         const auto what = [](const std::string &w) {
           return w.substr(0, w.find('('));
         };
         for (const auto &part :
-             Utilities::MPI::all_gather(mpi::communicator(),
-                                        boundary_data.get_warnings()))
+             Utilities::MPI::all_gather(mpi::communicator(), mine))
           for (const auto &w : part)
             if (std::none_of(all.begin(), all.end(), [&](const auto &seen) {
                   return what(seen) == what(w);

@@ -94,7 +94,7 @@ namespace thinlayer
                               m,
                               parameters.kinematics.axis_boundary_id,
                               element_constraints,
-                              boundary_data,
+                              *boundary_data.front(),
                               systems[m]->structural_constraints,
                               systems[m]->constraints);
       }

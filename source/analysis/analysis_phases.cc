@@ -68,10 +68,11 @@ namespace thinlayer
           *v = 0;
         if (boundaries)
           {
-            mode.unit_prescribed_displacement =
-              mode.boundary_prescribed_displacement;
-            mode.unit_load = mode.boundary_load;
-            mode.unit_rhs  = mode.boundary_rhs;
+            const ModeSystem::BoundaryValues &values =
+              mode.boundary_values[boundary_set];
+            mode.unit_prescribed_displacement = values.prescribed_displacement;
+            mode.unit_load                    = values.load;
+            mode.unit_rhs                     = values.rhs;
           }
         if (weight)
           {
@@ -84,14 +85,19 @@ namespace thinlayer
 
   template <int dim>
   void
-  Analysis<dim>::begin_phase(const PhaseLoads loads,
-                             const bool       reset_displacements)
+  Analysis<dim>::begin_phase(const PhaseLoads   loads,
+                             const bool         reset_displacements,
+                             const unsigned int set)
   {
     Assert(!pending, ExcMessage("A phase begins from an accepted state."));
+    AssertIndexRange(set, boundary_data.size());
+    // The prescribed displacements stay where the phase left them: each
+    // step prescribes only its increment.
     for (const auto &system : systems)
       system->held_load.add(accepted_lambda, system->unit_load);
     accepted_lambda = 0;
     current_lambda  = 0;
+    boundary_set    = set;
     set_phase_loads(loads);
     if (reset_displacements)
       for (ModeVector &u : solution_vectors)
@@ -103,18 +109,22 @@ namespace thinlayer
 
   template <int dim>
   bool
-  Analysis<dim>::applies_anything(const PhaseLoads loads) const
+  Analysis<dim>::applies_anything(const PhaseLoads   loads,
+                                  const unsigned int set) const
   {
+    AssertIndexRange(set, boundary_data.size());
     const bool boundaries = applies_boundaries(loads);
     const bool weight     = applies_weight(loads);
     bool       applies    = false;
     for (const auto &system : systems)
-      applies =
-        applies ||
-        (boundaries &&
-         (system->boundary_load.linfty_norm() > 0 ||
-          system->boundary_prescribed_displacement.linfty_norm() > 0)) ||
-        (weight && system->weight_load.linfty_norm() > 0);
+      {
+        const ModeSystem::BoundaryValues &values = system->boundary_values[set];
+        applies =
+          applies ||
+          (boundaries && (values.load.linfty_norm() > 0 ||
+                          values.prescribed_displacement.linfty_norm() > 0)) ||
+          (weight && system->weight_load.linfty_norm() > 0);
+      }
     return applies;
   }
 
@@ -273,13 +283,13 @@ namespace thinlayer
   template void
   Analysis<3>::set_phase_loads(const PhaseLoads);
   template void
-  Analysis<2>::begin_phase(const PhaseLoads, const bool);
+  Analysis<2>::begin_phase(const PhaseLoads, const bool, const unsigned int);
   template void
-  Analysis<3>::begin_phase(const PhaseLoads, const bool);
+  Analysis<3>::begin_phase(const PhaseLoads, const bool, const unsigned int);
   template bool
-  Analysis<2>::applies_anything(const PhaseLoads) const;
+  Analysis<2>::applies_anything(const PhaseLoads, const unsigned int) const;
   template bool
-  Analysis<3>::applies_anything(const PhaseLoads) const;
+  Analysis<3>::applies_anything(const PhaseLoads, const unsigned int) const;
   template void
   Analysis<2>::reduce_strength(const double);
   template void

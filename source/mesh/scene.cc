@@ -400,6 +400,17 @@ namespace thinlayer
                            std::to_string(id) +
                            " on its boundary (its boundary ids: " +
                            describe(mesh_boundaries, true) + ")");
+    for (unsigned int k = 0; k < p.loading_phases.size(); ++k)
+      for (const auto &[id, boundary] : p.loading_phases[k].boundaries)
+        if (mesh_boundaries.count(id) == 0)
+          throw InputError(p.parameter_file,
+                           LoadingPhaseParameters::section(k + 2) +
+                             "/Boundary " + std::to_string(id),
+                           "the phase names boundary " + std::to_string(id) +
+                             ", but the mesh has no physical " + face_group +
+                             " " + std::to_string(id) +
+                             " on its boundary (its boundary ids: " +
+                             describe(mesh_boundaries, true) + ")");
     if (p.monitors.displacement_measure ==
           MonitorParameters::DisplacementMeasure::boundary_average &&
         mesh_boundaries.count(p.monitors.displacement_boundary_id) == 0)

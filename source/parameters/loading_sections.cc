@@ -103,6 +103,89 @@ namespace thinlayer
   }
 
 
+  std::string
+  LoadingPhaseParameters::section(const unsigned int n)
+  {
+    return "Phase " + std::to_string(n);
+  }
+
+
+  void
+  LoadingPhaseParameters::declare(
+    ParameterHandler                        &prm,
+    const unsigned int                       n,
+    const std::set<types::global_dof_index> &boundary_ids)
+  {
+    prm.enter_subsection(section(n));
+    prm.declare_entry("Name",
+                      "",
+                      Patterns::Anything(),
+                      "The phase's name in history.csv and summary.json "
+                      "(default 'loading <n>').");
+    prm.declare_entry("Load increments",
+                      "1",
+                      Patterns::Anything(),
+                      "Increments of this phase's load factor, as "
+                      "Loading/Load increments: its Boundary subsections' "
+                      "values scale with it, from 0, on top of what the "
+                      "phases before it hold.");
+    for (const auto id : boundary_ids)
+      BoundaryParameters::declare(prm, id, true);
+    prm.leave_subsection();
+  }
+
+
+  void
+  LoadingPhaseParameters::parse(
+    ParameterHandler                                       &prm,
+    const std::string                                      &file,
+    const unsigned int                                      n,
+    const std::set<types::global_dof_index>                &opened,
+    const std::map<types::boundary_id, BoundaryParameters> &constrained,
+    const LoadingParameters                                &first,
+    const KinematicsParameters                             &kinematics,
+    const MeshParameters                                   &mesh)
+  {
+    const std::string outer = section(n) + "/";
+    prm.enter_subsection(section(n));
+    name = prm.get("Name");
+    if (name.empty())
+      name = "loading " + std::to_string(n);
+    loading.load_increments     = parse_increments(prm.get("Load increments"),
+                                               file,
+                                               outer + "Load increments");
+    loading.collapse_resolution = first.collapse_resolution;
+    for (const auto id : opened)
+      {
+        BoundaryParameters &boundary = boundaries[id];
+        prm.enter_subsection(BoundaryParameters::section(id));
+        const bool constrains = !prm.get("Constrained components").empty();
+        prm.leave_subsection();
+        if (constrains)
+          throw InputError(file,
+                           outer + BoundaryParameters::section(id) +
+                             "/Constrained components",
+                           "a phase keeps the constraints of the Boundary "
+                           "sections (the stiffness is factorised once); "
+                           "expected it unset here, and the component "
+                           "constrained in 'Boundary " +
+                             std::to_string(id) + "'");
+        const auto given = constrained.find(id);
+        boundary.parse(
+          prm,
+          file,
+          id,
+          kinematics,
+          mesh,
+          outer,
+          given == constrained.end()
+            ? std::vector<bool>(kinematics.component_names().size(), false)
+            : given->second.constrained_components);
+      }
+    prm.leave_subsection();
+  }
+
+
   void
   LoadingParameters::parse(ParameterHandler &prm, const std::string &file)
   {

@@ -195,6 +195,62 @@ namespace thinlayer
 
 
     /**
+     * The ids of the per-id sections of @p inner_kind ("Boundary 3") that
+     * the parameter lines open inside each section of @p outer_kind
+     * ("Phase 2"), and that the overrides address ("Phase 2/Boundary
+     * 3/..."), by the outer section's id.
+     */
+    std::map<long, std::set<types::global_dof_index>>
+    nested_section_ids(const std::vector<ParameterLine> &lines,
+                       const std::string                &file,
+                       const std::vector<std::string>   &overrides,
+                       const std::string                &outer_kind,
+                       const std::string                &inner_kind)
+    {
+      std::map<long, std::set<types::global_dof_index>> ids;
+      unsigned int                                      depth = 0;
+      long                                              outer = -1;
+      for (const auto &line : lines)
+        if (line.kind == ParameterLine::Kind::subsection)
+          {
+            const std::string where = "subsection, " + position(line, file);
+            if (depth == 0)
+              {
+                outer = section_id(line.name, outer_kind, file, where);
+                if (outer >= 0)
+                  ids[outer];
+              }
+            else if (depth == 1 && outer >= 0)
+              if (const long id =
+                    section_id(line.name, inner_kind, file, where);
+                  id >= 0)
+                ids[outer].insert(id);
+            ++depth;
+          }
+        else if (line.kind == ParameterLine::Kind::end && depth > 0)
+          --depth;
+
+      for (const auto &o : overrides)
+        {
+          const std::string path  = o.substr(0, o.find('='));
+          const auto        parts = Utilities::split_string_list(path, '/');
+          if (parts.size() < 2)
+            continue;
+          const long n = section_id(parts[0], outer_kind, "command line", path);
+          if (n < 0)
+            continue;
+          ids[n];
+          if (parts.size() > 2)
+            if (const long id =
+                  section_id(parts[1], inner_kind, "command line", path);
+                id >= 0)
+              ids[n].insert(id);
+        }
+      return ids;
+    }
+
+
+    /**
      * Entries the user gave that mean nothing in this scene: accepted
      * silently, they would let a user believe they had an effect.
      */
@@ -339,10 +395,12 @@ namespace thinlayer
     /// The sections every file has, in the order --print-parameters shows
     /// them, and the per-id sections the file opens.
     void
-    declare_sections(ParameterHandler                        &prm,
-                     const std::set<types::global_dof_index> &material_ids,
-                     const std::set<types::global_dof_index> &boundary_ids,
-                     const std::set<types::global_dof_index> &curve_ids)
+    declare_sections(
+      ParameterHandler                                        &prm,
+      const std::set<types::global_dof_index>                 &material_ids,
+      const std::set<types::global_dof_index>                 &boundary_ids,
+      const std::set<types::global_dof_index>                 &curve_ids,
+      const std::map<long, std::set<types::global_dof_index>> &phases)
     {
       MeshParameters::declare(prm);
       KinematicsParameters::declare(prm);
@@ -362,17 +420,21 @@ namespace thinlayer
         BoundaryParameters::declare(prm, id);
       for (const auto id : curve_ids)
         InterfaceElementParameters::declare(prm, id);
+      for (const auto &[n, ids] : phases)
+        LoadingPhaseParameters::declare(prm, n, ids);
     }
 
 
     /// Every section, in an order in which each finds the sections it
     /// depends on already read.
     Parameters
-    parse_sections(ParameterHandler                        &prm,
-                   const std::string                       &file,
-                   const std::set<types::global_dof_index> &material_ids,
-                   const std::set<types::global_dof_index> &boundary_ids,
-                   const std::set<types::global_dof_index> &curve_ids)
+    parse_sections(
+      ParameterHandler                                        &prm,
+      const std::string                                       &file,
+      const std::set<types::global_dof_index>                 &material_ids,
+      const std::set<types::global_dof_index>                 &boundary_ids,
+      const std::set<types::global_dof_index>                 &curve_ids,
+      const std::map<long, std::set<types::global_dof_index>> &phases)
     {
       Parameters p;
       p.parameter_file = file;
@@ -406,6 +468,22 @@ namespace thinlayer
       p.initial_state.parse(prm, file);
       check_initial_state(p);
       p.loading.parse(prm, file);
+      // Phase 2, 3, ... without gaps: Loading is phase 1.
+      long expected = 2;
+      for (const auto &[n, ids] : phases)
+        {
+          if (n != expected)
+            throw InputError(file,
+                             LoadingPhaseParameters::section(n),
+                             "expected the phases numbered 2, 3, ... without "
+                             "a gap (the Loading section is phase 1), but "
+                             "there is no 'Phase " +
+                               std::to_string(expected) + "'");
+          p.loading_phases.emplace_back();
+          p.loading_phases.back().parse(
+            prm, file, n, ids, p.boundaries, p.loading, p.kinematics, p.mesh);
+          ++expected;
+        }
       {
         std::map<types::material_id, bool> can_yield;
         for (const auto &[id, material] : p.materials)
@@ -461,9 +539,11 @@ namespace thinlayer
       ids_of_sections(lines, file, overrides, "Boundary");
     const auto curve_ids =
       ids_of_sections(lines, file, overrides, "Interface curve");
+    const auto phases =
+      nested_section_ids(lines, file, overrides, "Phase", "Boundary");
 
     ParameterHandler prm;
-    declare_sections(prm, material_ids, boundary_ids, curve_ids);
+    declare_sections(prm, material_ids, boundary_ids, curve_ids, phases);
     try
       {
         std::istringstream in(joined_text(lines));
@@ -477,7 +557,7 @@ namespace thinlayer
       apply_override(prm, o);
 
     Parameters parameters =
-      parse_sections(prm, file, material_ids, boundary_ids, curve_ids);
+      parse_sections(prm, file, material_ids, boundary_ids, curve_ids, phases);
     check_entries_mean_something(parameters, given_entries(lines, overrides));
     // The record names the mesh by its absolute path, so that it can be
     // run again from anywhere.
@@ -503,13 +583,16 @@ namespace thinlayer
   ParameterReader::print_parameters(std::ostream &out) const
   {
     ParameterHandler prm;
-    declare_sections(prm, {1}, {1}, {1});
+    declare_sections(prm, {1}, {1}, {1}, {{2, {1}}});
     out
       << "# thinlayer parameters. 'Material <id>' and 'Boundary <id>' may be\n"
       << "# repeated for every physical surface and curve id of the mesh,\n"
       << "# 'Interface curve <id>' for every physical curve (a physical "
          "surface\n"
-      << "# in 3d) of zero-thickness interface elements.\n";
+      << "# in 3d) of zero-thickness interface elements, 'Phase <n>' for\n"
+      << "# every further loading phase (n = 2, 3, ...), with a 'Boundary "
+         "<id>'\n"
+      << "# for every boundary it loads.\n";
     prm.print_parameters(out, ParameterHandler::PRM);
   }
 } // namespace thinlayer

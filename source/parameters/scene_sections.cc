@@ -499,7 +499,9 @@ namespace thinlayer
 
 
   void
-  BoundaryParameters::declare(ParameterHandler &prm, const unsigned int id)
+  BoundaryParameters::declare(ParameterHandler  &prm,
+                              const unsigned int id,
+                              const bool         in_phase)
   {
     prm.enter_subsection(section(id));
     prm.declare_entry("Name",
@@ -507,13 +509,18 @@ namespace thinlayer
                       Patterns::Anything(),
                       "A name for this boundary id (the gmsh physical curve "
                       "with the same number), used in output.");
-    prm.declare_entry("Constrained components",
-                      "",
-                      Patterns::Anything(),
-                      "Comma-separated components whose displacement is "
-                      "prescribed here: any of x, y in plane strain; of r, "
-                      "z, theta for Fourier kinematics (every harmonic); of "
-                      "x, y, z in 3d; empty for none.");
+    prm.declare_entry(
+      "Constrained components",
+      "",
+      Patterns::Anything(),
+      in_phase ? "Not to be set in a phase: the Boundary sections' "
+                 "constraints hold throughout the run (the stiffness is "
+                 "factorised once), and a phase's Displacement applies "
+                 "to the components they constrain."
+               : "Comma-separated components whose displacement is "
+                 "prescribed here: any of x, y in plane strain; of r, z, "
+                 "theta for Fourier kinematics (every harmonic); of x, y, "
+                 "z in 3d; empty for none.");
     prm.declare_entry(
       "Displacement",
       "0",
@@ -595,17 +602,20 @@ namespace thinlayer
                             const std::string          &file,
                             const unsigned int          id,
                             const KinematicsParameters &kinematics,
-                            const MeshParameters       &mesh)
+                            const MeshParameters       &mesh,
+                            const std::string          &outer,
+                            const std::vector<bool>    &constrained)
   {
-    const std::string section   = BoundaryParameters::section(id);
+    const std::string section   = outer + BoundaryParameters::section(id);
     const std::string variables = kinematics.expression_variables();
-    prm.enter_subsection(section);
+    prm.enter_subsection(BoundaryParameters::section(id));
     name = prm.get("Name");
     constrained_components =
-      parse_components(prm.get("Constrained components"),
-                       kinematics.component_names(),
-                       file,
-                       section + "/Constrained components");
+      outer.empty() ? parse_components(prm.get("Constrained components"),
+                                       kinematics.component_names(),
+                                       file,
+                                       section + "/Constrained components")
+                    : constrained;
     displacement                 = prm.get("Displacement");
     traction                     = prm.get("Traction");
     pressure                     = prm.get("Pressure");

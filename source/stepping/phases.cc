@@ -51,6 +51,15 @@ namespace thinlayer
                        "every traction, pressure and prescribed displacement "
                        "is 0 (the weight is the initial state's); expected "
                        "at least one that is not, or a Strength reduction");
+    for (unsigned int k = 0; k < p.loading_phases.size(); ++k)
+      if (!analysis.applies_anything(Analysis<dim>::PhaseLoads::boundaries,
+                                     k + 1))
+        throw InputError(p.parameter_file,
+                         LoadingPhaseParameters::section(k + 2) +
+                           "/Boundary <id>",
+                         "the phase applies nothing: every traction, "
+                         "pressure and prescribed displacement it gives is "
+                         "0; expected at least one that is not");
     if (procedure == Procedure::k0)
       {
         summary.initial_out_of_balance = analysis.set_initial_stresses();
@@ -124,10 +133,27 @@ namespace thinlayer
         result        = run_phase({"loading", p.loading, steps});
         judge_outcome(analysis.has_external_load(), result, summary);
         steps += result.steps_run;
-        if (p.strength_reduction.active() &&
-            ended(result, "the strength reduction"))
-          return result;
       }
+
+    // Further loading phases, each from where the one before it ended.
+    for (unsigned int k = 0; k < p.loading_phases.size(); ++k)
+      {
+        const LoadingPhaseParameters &phase = p.loading_phases[k];
+        if (steps > 0 && ended(result, phase.name))
+          return result;
+        out << "  " << phase.name << std::endl;
+        analysis.begin_phase(Loads::boundaries, false, k + 1);
+        solver.begin_phase();
+        summary.phase                = phase.name;
+        summary.initial_load         = monitors.load();
+        summary.initial_displacement = monitors.displacement().mean;
+        result = run_phase({phase.name, phase.loading, steps});
+        judge_outcome(analysis.has_external_load(), result, summary);
+        steps += result.steps_run;
+      }
+    if (p.strength_reduction.active() && steps > 0 &&
+        ended(result, "the strength reduction"))
+      return result;
 
     if (p.strength_reduction.active())
       {

@@ -183,11 +183,16 @@ namespace thinlayer
     /**
      * Begin a phase that applies @p loads: the loads of the phase before
      * it, at its accepted load factor, are held fixed from now on, and the
-     * load factor starts again from 0. With @p reset_displacements the
-     * displacements start from zero; the stresses are kept.
+     * load factor starts again from 0; so are its prescribed displacements
+     * where it left them. With @p reset_displacements the displacements
+     * start from zero; the stresses are kept. The boundary values are
+     * those of @p boundary_set: 0 the Boundary sections', k the loading
+     * phase Phase k + 1's.
      */
     void
-    begin_phase(const PhaseLoads loads, const bool reset_displacements);
+    begin_phase(const PhaseLoads   loads,
+                const bool         reset_displacements,
+                const unsigned int boundary_set = 0);
 
     /**
      * The K0 procedure (KZeroStresses): every point of the continuum
@@ -208,10 +213,12 @@ namespace thinlayer
     void
     reduce_strength(const double factor);
 
-    /// Whether a phase of @p loads would apply a load or prescribed
-    /// displacements in proportion to its load factor.
+    /// Whether a phase of @p loads (with the boundary values of
+    /// @p boundary_set) would apply a load or prescribed displacements in
+    /// proportion to its load factor.
     bool
-    applies_anything(const PhaseLoads loads) const;
+    applies_anything(const PhaseLoads   loads,
+                     const unsigned int boundary_set = 0) const;
 
     /// @}
     /// @name What the solution methods do to the state
@@ -476,7 +483,8 @@ namespace thinlayer
     check_supports_and_load() const;
 
     /// The current phase's vectors at unit load factor from the parts
-    /// (ModeSystem) that @p loads names.
+    /// (ModeSystem) that @p loads names, the boundary values those of
+    /// boundary_set.
     void
     set_phase_loads(const PhaseLoads loads);
 
@@ -514,7 +522,11 @@ namespace thinlayer
     std::unique_ptr<parallel::fullydistributed::Triangulation<dim>>
                     distributed_tria;
     DoFHandler<dim> dof_handler;
-    BoundaryData    boundary_data;
+    /// The Boundary sections' conditions (they also give the constraints),
+    /// then each further loading phase's values.
+    std::vector<std::unique_ptr<BoundaryData>> boundary_data;
+    /// Which of them the current phase applies.
+    unsigned int boundary_set = 0;
 
     AffineConstraints<double>                element_constraints;
     SparsityPattern                          sparsity;

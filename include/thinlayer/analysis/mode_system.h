@@ -14,6 +14,7 @@
 #include <thinlayer/solvers/factorised_stiffness.h>
 
 #include <memory>
+#include <vector>
 
 namespace thinlayer
 {
@@ -62,14 +63,19 @@ namespace thinlayer
     ModeVector unit_load;
     ModeVector unit_rhs;
 
+    /// Prescribed displacements, tractions and their f - K u_prescribed.
+    struct BoundaryValues
+    {
+      ModeVector prescribed_displacement;
+      ModeVector load;
+      ModeVector rhs;
+    };
     /// The parts the phases combine into the above
-    /// (Analysis::begin_phase()): the Boundary sections' prescribed
-    /// displacements, tractions and their f - K u_prescribed, and the
+    /// (Analysis::begin_phase()): the Boundary sections' values (set 0)
+    /// and each further loading phase's (set k: Phase k + 1), and the
     /// body's weight with the surcharge.
-    ModeVector boundary_prescribed_displacement;
-    ModeVector boundary_load;
-    ModeVector boundary_rhs;
-    ModeVector weight_load;
+    std::vector<BoundaryValues> boundary_values;
+    ModeVector                  weight_load;
     /// The external load held fixed while the phase runs: the loads of the
     /// phases before it at their end, or the weight that the initial
     /// stresses carry. Zero in a run of one phase.

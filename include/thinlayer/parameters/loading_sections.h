@@ -5,6 +5,7 @@
 #include <deal.II/base/types.h>
 
 #include <thinlayer/base/name_table.h>
+#include <thinlayer/parameters/scene_sections.h>
 
 #include <map>
 #include <set>
@@ -32,6 +33,51 @@ namespace thinlayer
     declare(ParameterHandler &prm);
     void
     parse(ParameterHandler &prm, const std::string &parameter_file);
+  };
+
+
+  /**
+   * "Phase <n>" (n = 2, 3, ...; the Loading section with the Boundary
+   * sections is phase 1): a further loading, as a footing is first loaded
+   * vertically and then pushed sideways. It holds what the phases before
+   * it reached (their loads at their last load factor, their prescribed
+   * displacements where they ended) and applies its own boundary values
+   * from load factor 0 by its own programme. Its "Boundary <id>"
+   * subsections give Displacement, Traction and Pressure as the Boundary
+   * sections do; which components are constrained stays the Boundary
+   * sections' throughout the run (the stiffness is factorised once).
+   */
+  struct LoadingPhaseParameters
+  {
+    std::string name;
+    /// The phase's programme (the Loading section's collapse resolution).
+    LoadingParameters loading;
+    /// What the phase applies, per boundary id, with the constrained
+    /// components of the Boundary section of that id (none without one).
+    std::map<types::boundary_id, BoundaryParameters> boundaries;
+
+    /// "Phase <n>".
+    static std::string
+    section(const unsigned int n);
+    /// Declares the section with a "Boundary <id>" subsection for every
+    /// id of @p boundary_ids.
+    static void
+    declare(ParameterHandler                        &prm,
+            const unsigned int                       n,
+            const std::set<types::global_dof_index> &boundary_ids);
+    /// The boundaries of @p boundary_ids that the phase's section opens
+    /// (@p opened, "Phase <n>/Boundary <id>"), checked as the Boundary
+    /// sections are, with the constraints of @p constrained (the Boundary
+    /// sections).
+    void
+    parse(ParameterHandler                        &prm,
+          const std::string                       &parameter_file,
+          const unsigned int                       n,
+          const std::set<types::global_dof_index> &opened,
+          const std::map<types::boundary_id, BoundaryParameters> &constrained,
+          const LoadingParameters                                &first,
+          const KinematicsParameters                             &kinematics,
+          const MeshParameters                                   &mesh);
   };
 
 

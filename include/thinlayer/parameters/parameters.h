@@ -57,12 +57,14 @@ namespace thinlayer
     std::map<types::boundary_id, InterfaceElementParameters> interface_elements;
     InitialStateParameters                                   initial_state;
     LoadingParameters                                        loading;
-    StrengthReductionParameters                              strength_reduction;
-    SolverParameters                                         solver;
-    MonitorParameters                                        monitors;
-    ReferenceParameters                                      reference;
-    SweepParameters                                          sweep;
-    OutputParameters                                         output;
+    /// The further loading phases, Phase 2, 3, ... in order.
+    std::vector<LoadingPhaseParameters> loading_phases;
+    StrengthReductionParameters         strength_reduction;
+    SolverParameters                    solver;
+    MonitorParameters                   monitors;
+    ReferenceParameters                 reference;
+    SweepParameters                     sweep;
+    OutputParameters                    output;
   };
 } // namespace thinlayer
 

@@ -159,16 +159,23 @@ namespace thinlayer
     /// The section's name: "Boundary <id>".
     static std::string
     section(const unsigned int id);
+    /// With @p in_phase, as a subsection of a loading phase (Phase <n>).
     static void
-    declare(ParameterHandler &prm, const unsigned int id);
+    declare(ParameterHandler  &prm,
+            const unsigned int id,
+            const bool         in_phase = false);
     /// The expressions are checked against the kinematics' variables and
-    /// the geometry parameters.
+    /// the geometry parameters. Inside a section @p outer (as "Phase 2/",
+    /// which the errors name), with the constrained components
+    /// @p constrained rather than the section's own.
     void
     parse(ParameterHandler           &prm,
           const std::string          &parameter_file,
           const unsigned int          id,
           const KinematicsParameters &kinematics,
-          const MeshParameters       &mesh);
+          const MeshParameters       &mesh,
+          const std::string          &outer       = "",
+          const std::vector<bool>    &constrained = {});
 
   private:
     /// An InputError for a traction or pressure on constrained components.

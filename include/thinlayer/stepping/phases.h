@@ -24,9 +24,10 @@ namespace thinlayer
    * The phases of a run, in order: the initial state (Initial state: the
    * K0 procedure's stresses, or gravity loading's programme), the loading
    * (the Loading section's programme of the Boundary sections' values),
-   * and strength reduction (Strength reduction: a programme of the factor
-   * by which strengths are divided). Each phase holds the loads of the
-   * ones before it (Analysis::begin_phase()); each programme is a
+   * further loadings (Phase 2, 3, ...: each its programme of its own
+   * boundary values), and strength reduction (Strength reduction: a programme
+   * of the factor by which strengths are divided). Each phase holds the loads
+   * of the ones before it (Analysis::begin_phase()); each programme is a
    * Programme, judged by judge_outcome(); a phase that does not complete
    * ends the run, and the summary's phase says which one its figures are
    * of.
