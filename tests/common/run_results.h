@@ -61,6 +61,20 @@ namespace run_results
              : std::atof(json.c_str() + at + key.size() + 4);
   }
 
+  /// The Monitors and Output sections of a scene a test writes: the
+  /// reaction of boundary 1 along y against the displacement of boundary 3
+  /// along y, into results/, without VTU files.
+  inline std::string
+  reaction_monitors_and_output()
+  {
+    return "subsection Monitors\n  set Load measure = reaction\n"
+           "  set Load boundary id = 1\n  set Load component = y\n"
+           "  set Displacement boundary id = 3\n"
+           "  set Displacement component = y\nend\n"
+           "subsection Output\n  set Directory = results\n"
+           "  set Write VTU = false\nend\n";
+  }
+
   using Table = std::vector<std::map<std::string, double>>;
 
   /// A CSV of numbers, row by row, by column name.

@@ -85,42 +85,11 @@ namespace
            std::to_string(p) +
            "\nend\n"
            "subsection Boundary 4\n  set Constrained components = x\nend\n"
-           "subsection Loading\n  set Load increments = 1\nend\n"
-           "subsection Monitors\n  set Load measure = reaction\n"
-           "  set Load boundary id = 1\n  set Load component = y\n"
-           "  set Displacement boundary id = 3\n"
-           "  set Displacement component = y\nend\n"
-           "subsection Output\n  set Directory = results\n"
-           "  set Write VTU = false\nend\n";
+           "subsection Loading\n  set Load increments = 1\nend\n" +
+           run_results::reaction_monitors_and_output();
   }
 
 
-  /// The columns @p names of every row of the interface's profile after
-  /// the first step.
-  std::vector<std::vector<double>>
-  profile(const std::vector<std::string> &names)
-  {
-    std::ifstream in("results/interface-curve-5-0001.csv");
-    std::string   line, cell;
-    std::getline(in, line);
-    std::vector<std::string> header;
-    for (std::istringstream s(line); std::getline(s, cell, ',');)
-      header.push_back(cell);
-    std::vector<std::vector<double>> rows;
-    while (std::getline(in, line))
-      {
-        std::vector<std::string> cells;
-        for (std::istringstream s(line); std::getline(s, cell, ',');)
-          cells.push_back(cell);
-        std::vector<double> row;
-        for (const std::string &name : names)
-          for (unsigned int c = 0; c < header.size(); ++c)
-            if (header[c] == name)
-              row.push_back(std::stod(cells[c]));
-        rows.push_back(row);
-      }
-    return rows;
-  }
 } // namespace
 
 
@@ -163,12 +132,14 @@ main()
   expect(failure.empty(), "the run succeeds" + failure);
   expect(imbalance < 1e-10, "the tractions balance the stresses beside them");
   double     worst = 0;
-  const auto rows  = profile({"y", "normal_traction", "shear_traction"});
+  const auto rows = run_results::read_csv("results/interface-curve-5-0001.csv");
   expect(rows.size() > 8, "the interface's profile has its points");
   for (const auto &row : rows)
     {
-      const double exact = -(gamma_w * (1 - row[0]) + p);
-      worst = std::max({worst, std::abs(row[1] / exact - 1), std::abs(row[2])});
+      const double exact = -(gamma_w * (1 - row.at("y")) + p);
+      worst              = std::max({worst,
+                                     std::abs(row.at("normal_traction") / exact - 1),
+                                     std::abs(row.at("shear_traction"))});
     }
   std::printf("after the pressure p: sigma_n = -(gamma (H - y) + p), no "
               "shear, %s 1e-8\n",

@@ -50,13 +50,8 @@ namespace
            "subsection Phase 3\n  set Name = back\n"
            "  set Load increments = 1\n"
            "  subsection Boundary 3\n    set Displacement = 0; 3e-3\n  end\n"
-           "end\n"
-           "subsection Monitors\n  set Load measure = reaction\n"
-           "  set Load boundary id = 1\n  set Load component = y\n"
-           "  set Displacement boundary id = 3\n"
-           "  set Displacement component = y\nend\n"
-           "subsection Output\n  set Directory = results\n"
-           "  set Write VTU = false\nend\n";
+           "end\n" +
+           run_results::reaction_monitors_and_output();
   }
 
 
