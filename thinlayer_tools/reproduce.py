@@ -25,7 +25,7 @@ import time
 from thinlayer_tools import THINLAYER, TOP, mpirun, run_module
 from thinlayer_tools.report import (bearing_capacity, case1, case4, earth_pressure, footings,
                                     limits, methods, page, parallel, phases, scaling, solid,
-                                    speed, strength_reduction, weight)
+                                    speed, strength_reduction, wall_friction, weight)
 from thinlayer_tools.report.runs import DEFAULT, PAPER, Runs
 
 ALL_ALPHAS = "alpha = 10, 20, 30, 40, 45, 50, 60, 70, 80"
@@ -81,6 +81,8 @@ def run_list(quick):
     runs += weight.run_list(quick)
     # Earth pressure from the at-rest state: Rankine on a smooth wall.
     runs += earth_pressure.run_list(quick)
+    # Active earth pressure on a rough wall, against Coulomb and Rankine.
+    runs += wall_friction.run_list(quick)
     # Safety factors by strength reduction.
     runs += strength_reduction.run_list(quick)
     # Bearing capacity factors (a surcharge from the K0 procedure).
@@ -198,6 +200,7 @@ def sections(runs, quick):
             + case4.sections(runs, quick) + methods.sections(runs, quick)
             + limits.sections(runs, quick) + weight.sections(runs, quick)
             + earth_pressure.sections(runs, quick)
+            + wall_friction.sections(runs, quick)
             + strength_reduction.sections(runs, quick)
             + bearing_capacity.sections(runs, quick)
             + phases.sections(runs, quick)
