@@ -476,9 +476,11 @@ namespace thinlayer
             throw InputError(file,
                              LoadingPhaseParameters::section(n),
                              "expected the phases numbered 2, 3, ... without "
-                             "a gap (the Loading section is phase 1), but "
-                             "there is no 'Phase " +
-                               std::to_string(expected) + "'");
+                             "a gap (the Loading section is phase 1), but " +
+                               (n < 2 ? std::string("got 'Phase ") +
+                                          std::to_string(n) + "'"
+                                      : "there is no 'Phase " +
+                                          std::to_string(expected) + "'"));
           p.loading_phases.emplace_back();
           p.loading_phases.back().parse(
             prm, file, n, ids, p.boundaries, p.loading, p.kinematics, p.mesh);
