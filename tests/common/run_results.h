@@ -8,6 +8,7 @@
 #include <thinlayer/parallel/mpi.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <map>
@@ -59,6 +60,20 @@ namespace run_results
                json.compare(at + key.size() + 4, 4, "null") == 0
              ? NAN
              : std::atof(json.c_str() + at + key.size() + 4);
+  }
+
+  /// Run the command line @p arguments as the program would (printing
+  /// what a failed run said), and read the number @p key of the
+  /// summary.json in @p directory, where the arguments put the results.
+  inline double
+  run_and_read(const std::vector<std::string> &arguments,
+               const std::string              &key,
+               const std::string              &directory = "results")
+  {
+    std::ostringstream out, err;
+    if (thinlayer::run_command_line(arguments, out, err) != 0)
+      std::printf("run failed: %s\n", err.str().c_str());
+    return summary_number(directory, key);
   }
 
   /// The Monitors and Output sections of a scene a test writes: the

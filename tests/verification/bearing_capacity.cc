@@ -10,11 +10,9 @@
 // A displacement method collapses above the exact load: each plateau lies
 // above its factor and within 3% of it (measured +1.2% to +1.6% on this
 // mesh).
-#include <thinlayer/app/command_line.h>
 
 #include <cmath>
 #include <cstdio>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -44,10 +42,7 @@ namespace
           arguments.push_back("-s");
           arguments.push_back(s);
         }
-    std::ostringstream out, err;
-    if (thinlayer::run_command_line(arguments, out, err) != 0)
-      std::printf("run failed: %s\n", err.str().c_str());
-    return run_results::summary_number("results", "collapse_load");
+    return run_results::run_and_read(arguments, "collapse_load");
   }
 } // namespace
 

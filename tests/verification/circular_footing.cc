@@ -11,13 +11,10 @@
 // file names and which is within 2% on 960 cells. (Q8 on 3840 cells, +1.4%
 // and +1.9%, takes a minute; it is left to the report.) Release only:
 // deal.II's debug library makes it too long for the test suite.
-#include <thinlayer/app/command_line.h>
 
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <iostream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -29,10 +26,7 @@ namespace
   double
   collapse_load(const std::vector<std::string> &arguments)
   {
-    std::ostringstream out, err;
-    if (thinlayer::run_command_line(arguments, out, err) != 0)
-      std::cout << "run failed: " << err.str();
-    return run_results::summary_number("results", "collapse_load");
+    return run_results::run_and_read(arguments, "collapse_load");
   }
 } // namespace
 

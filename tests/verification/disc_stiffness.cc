@@ -13,13 +13,10 @@
 // value from different sides; their difference is the discretisation's, not
 // the kinematics'. Release only: 3D assembly under deal.II's debug library
 // is too slow for the test suite.
-#include <thinlayer/app/command_line.h>
 
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <iostream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -40,10 +37,7 @@ namespace
     arguments.insert(
       arguments.end(),
       {"-s", "Output/Directory=results", "-s", "Output/Write VTU=false"});
-    std::ostringstream out, err;
-    if (thinlayer::run_command_line(arguments, out, err) != 0)
-      std::cout << "run failed: " << err.str();
-    return run_results::summary_number("results", "last_converged_load");
+    return run_results::run_and_read(arguments, "last_converged_load");
   }
 
   struct Motion

@@ -14,12 +14,10 @@
 // base, within 0.5% of H / 3. The same from gravity loading (elastic,
 // then plastic as the wall moves): its at-rest ratio is that of an
 // elastic oedometer, nu / (1 - nu), before the wall moves.
-#include <thinlayer/app/command_line.h>
 
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -37,7 +35,6 @@ namespace
           const std::string &procedure = "K0 procedure")
   {
     const std::string              directory = "results";
-    std::ostringstream             out, err;
     const std::vector<std::string> arguments = {
       std::string(SOURCE_DIR) + "/../../prm/earth-pressure-rankine.prm",
       "-s",
@@ -57,9 +54,7 @@ namespace
       "Output/Directory=" + directory,
       "-s",
       "Output/Write VTU=false"};
-    if (thinlayer::run_command_line(arguments, out, err) != 0)
-      std::printf("run failed: %s\n", err.str().c_str());
-    return run_results::summary_number(directory, "collapse_load");
+    return run_results::run_and_read(arguments, "collapse_load", directory);
   }
 } // namespace
 

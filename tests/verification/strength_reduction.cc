@@ -17,12 +17,10 @@
 //    interface, prm/inclined-seam-zero-thickness-strength-reduction.prm):
 //    its tractions are admissible, so by statics F cannot exceed
 //    tan(phi) / tan(beta); it lies below it, within 1%.
-#include <thinlayer/app/command_line.h>
 
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -49,9 +47,7 @@ namespace
         arguments.push_back("-s");
         arguments.push_back(s);
       }
-    std::ostringstream out, err;
-    if (thinlayer::run_command_line(arguments, out, err) != 0)
-      std::printf("run failed: %s\n", err.str().c_str());
+    const double  load = run_results::run_and_read(arguments, "collapse_load");
     std::ifstream json("results/summary.json");
     std::string   line;
     phase.clear();
@@ -59,7 +55,7 @@ namespace
       if (line.find("\"phase\"") != std::string::npos)
         phase =
           line.substr(line.find(':') + 3, line.rfind('"') - line.find(':') - 3);
-    return run_results::summary_number("results", "collapse_load");
+    return load;
   }
 } // namespace
 

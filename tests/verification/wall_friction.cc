@@ -22,11 +22,9 @@
 // extrapolation 2 K_fine - K_coarse lies inside [K_C, K_a]. The thin column
 // at delta = phi (phi_w = 35.3 degrees) is left out: the default method
 // does not converge there (the report shows it).
-#include <thinlayer/app/command_line.h>
 
 #include <cmath>
 #include <cstdio>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -80,10 +78,7 @@ namespace
                                                 "Output/Directory=results",
                                                 "-s",
                                                 "Output/Write VTU=false"};
-    std::ostringstream             out, err;
-    if (thinlayer::run_command_line(arguments, out, err) != 0)
-      std::printf("run failed: %s\n", err.str().c_str());
-    return run_results::summary_number("results", "collapse_load");
+    return run_results::run_and_read(arguments, "collapse_load");
   }
 } // namespace
 
