@@ -50,6 +50,91 @@ namespace thinlayer
           mpi::max(mine ? fact : -std::numeric_limits<double>::infinity()));
       return {global, found};
     }
+
+
+    /// An InputError where the K0 procedure's stress at the @p worst point
+    /// (worst_over_ranks(): its yield ratio, and the place and material
+    /// of its cell) lies outside its material's yield surface.
+    void
+    refuse_outside_yield(const Parameters &parameters,
+                         const std::pair<double, std::vector<double>> &worst)
+    {
+      using text_format::printf;
+      const auto &[global_worst, facts] = worst;
+      if (global_worst > 1e-9)
+        {
+          const auto id = static_cast<types::material_id>(facts[2]);
+          const MaterialParameters &material = parameters.materials.at(id);
+          const double              s =
+            std::sin(material.friction_angle * numbers::PI / 180);
+          const std::string range =
+            material.cohesion == 0 && s > 0
+              ? " (without cohesion, between K_a = " +
+                  printf("%.4g", (1 - s) / (1 + s)) +
+                  " and K_p = " + printf("%.4g", (1 + s) / (1 - s)) + ")"
+              : "";
+          throw InputError(
+            parameters.parameter_file,
+            MaterialParameters::section(id) + "/K0",
+            "the K0 procedure's initial stress lies outside the yield "
+            "surface of material " +
+              std::to_string(id) +
+              (material.name.empty() ? "" : " (" + material.name + ")") +
+              " in the cell centred at (" + printf("%g", facts[0]) + ", " +
+              printf("%g", facts[1]) + "): yield ratio " +
+              printf("%.3g", global_worst) +
+              " (K0 = " + printf("%g", material.k0) +
+              "); expected a K0 the material can carry at rest" + range);
+        }
+    }
+
+
+    /// An InputError where the tractions @p found of interface elements
+    /// (InterfaceElements::set_initial_tractions()) differ between the two
+    /// sides or lie outside the slip surface, over the ranks.
+    template <typename InitialTractions>
+    void
+    refuse_initial_tractions(const Parameters       &parameters,
+                             const InitialTractions &found)
+    {
+      using text_format::printf;
+      const auto [mismatch, at] =
+        worst_over_ranks(found.mismatch,
+                         {found.mismatch_at[0],
+                          found.mismatch_at[1],
+                          double(found.mismatch_curve),
+                          double(found.mismatch_materials[0]),
+                          double(found.mismatch_materials[1])});
+      if (mismatch > 1e-9)
+        throw InputError(
+          parameters.parameter_file,
+          MaterialParameters::section(static_cast<types::material_id>(at[3])) +
+            "/K0",
+          "the K0 procedure's stresses on the two sides of "
+          "interface curve " +
+            printf("%g", at[2]) + " (materials " + printf("%g", at[3]) +
+            " and " + printf("%g", at[4]) +
+            ") put different tractions on it at (" + printf("%g", at[0]) +
+            ", " + printf("%g", at[1]) + "), by " + printf("%.3g", mismatch) +
+            " of the larger; expected the same K0 on both sides of "
+            "an interface that is not horizontal");
+      const auto [ratio, place] = worst_over_ranks(found.yield_ratio,
+                                                   {found.yield_at[0],
+                                                    found.yield_at[1],
+                                                    double(found.yield_curve)});
+      if (ratio > 1e-9)
+        throw InputError(
+          parameters.parameter_file,
+          InterfaceElementParameters::section(
+            static_cast<unsigned int>(place[2])) +
+            "/Friction angle",
+          "the K0 procedure's initial traction on interface curve " +
+            printf("%g", place[2]) + " at (" + printf("%g", place[0]) + ", " +
+            printf("%g", place[1]) + ") lies outside its slip surface, by " +
+            printf("%.3g", ratio) + " of the traction" +
+            "; expected an interface that can carry the at-rest "
+            "stresses (or K0s that put less shear on it)");
+    }
   } // namespace
 
 
@@ -182,34 +267,9 @@ namespace thinlayer
                   }
               }
           }
-        using text_format::printf;
-        const auto [global_worst, facts] =
-          worst_over_ranks(worst, {where[0], where[1], where_material});
-        if (global_worst > 1e-9)
-          {
-            const auto id = static_cast<types::material_id>(facts[2]);
-            const MaterialParameters &material = parameters.materials.at(id);
-            const double              s =
-              std::sin(material.friction_angle * numbers::PI / 180);
-            const std::string range =
-              material.cohesion == 0 && s > 0
-                ? " (without cohesion, between K_a = " +
-                    printf("%.4g", (1 - s) / (1 + s)) +
-                    " and K_p = " + printf("%.4g", (1 + s) / (1 - s)) + ")"
-                : "";
-            throw InputError(
-              parameters.parameter_file,
-              MaterialParameters::section(id) + "/K0",
-              "the K0 procedure's initial stress lies outside the yield "
-              "surface of material " +
-                std::to_string(id) +
-                (material.name.empty() ? "" : " (" + material.name + ")") +
-                " in the cell centred at (" + printf("%g", facts[0]) + ", " +
-                printf("%g", facts[1]) + "): yield ratio " +
-                printf("%.3g", global_worst) +
-                " (K0 = " + printf("%g", material.k0) +
-                "); expected a K0 the material can carry at rest" + range);
-          }
+        refuse_outside_yield(
+          parameters,
+          worst_over_ranks(worst, {where[0], where[1], where_material}));
 
         // Interface elements start from the traction of the stresses beside
         // them: in equilibrium only where both sides put the same traction
@@ -218,47 +278,8 @@ namespace thinlayer
           if (auto *interfaces =
                 dynamic_cast<InterfaceElements<dim> *>(group.get()))
             {
-              const auto found = interfaces->set_initial_tractions(initial);
-              const auto [mismatch, at] =
-                worst_over_ranks(found.mismatch,
-                                 {found.mismatch_at[0],
-                                  found.mismatch_at[1],
-                                  double(found.mismatch_curve),
-                                  double(found.mismatch_materials[0]),
-                                  double(found.mismatch_materials[1])});
-              if (mismatch > 1e-9)
-                throw InputError(
-                  parameters.parameter_file,
-                  MaterialParameters::section(
-                    static_cast<types::material_id>(at[3])) +
-                    "/K0",
-                  "the K0 procedure's stresses on the two sides of "
-                  "interface curve " +
-                    printf("%g", at[2]) + " (materials " + printf("%g", at[3]) +
-                    " and " + printf("%g", at[4]) +
-                    ") put different tractions on it at (" +
-                    printf("%g", at[0]) + ", " + printf("%g", at[1]) +
-                    "), by " + printf("%.3g", mismatch) +
-                    " of the larger; expected the same K0 on both sides of "
-                    "an interface that is not horizontal");
-              const auto [ratio, place] =
-                worst_over_ranks(found.yield_ratio,
-                                 {found.yield_at[0],
-                                  found.yield_at[1],
-                                  double(found.yield_curve)});
-              if (ratio > 1e-9)
-                throw InputError(
-                  parameters.parameter_file,
-                  InterfaceElementParameters::section(
-                    static_cast<unsigned int>(place[2])) +
-                    "/Friction angle",
-                  "the K0 procedure's initial traction on interface curve " +
-                    printf("%g", place[2]) + " at (" + printf("%g", place[0]) +
-                    ", " + printf("%g", place[1]) +
-                    ") lies outside its slip surface, by " +
-                    printf("%.3g", ratio) + " of the traction" +
-                    "; expected an interface that can carry the at-rest "
-                    "stresses (or K0s that put less shear on it)");
+              refuse_initial_tractions(
+                parameters, interfaces->set_initial_tractions(initial));
             }
 
         compute_internal_forces();
