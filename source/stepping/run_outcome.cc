@@ -59,16 +59,20 @@ namespace thinlayer
     std::string
     evidence(const ProgrammeResult &run)
     {
-      std::string text =
-        std::string(run.stopped_on_mechanism
-                      ? "the step converged, with a secant stiffness of "
-                      : "the failed step's secant stiffness is ") +
-        printf("%.2g", run.stiffness_ratio) + " of the elastic one";
+      // A strength reduction raises no load, so its steps have no secant
+      // stiffness (NaN): only the growth of the displacement change tells.
+      std::string text;
+      if (std::isfinite(run.stiffness_ratio))
+        text = std::string(run.stopped_on_mechanism
+                             ? "the step converged, with a secant stiffness of "
+                             : "the failed step's secant stiffness is ") +
+               printf("%.2g", run.stiffness_ratio) + " of the elastic one";
       if (std::isfinite(run.growth_ratio))
-        text += ", and its displacement change grew by a factor " +
+        text += std::string(text.empty() ? "the failed step's" : ", and its") +
+                " displacement change grew by a factor " +
                 printf("%.3g", run.growth_ratio) +
                 " over the second half of its iterations";
-      return text;
+      return text.empty() ? "no figures of the failed step" : text;
     }
 
     /// Where and how the load reached its plateau.

@@ -62,6 +62,20 @@ namespace run_results
              : std::atof(json.c_str() + at + key.size() + 4);
   }
 
+  /// The string @p key of @p directory/summary.json ("" if it has none).
+  inline std::string
+  summary_text(const std::string &directory, const std::string &key)
+  {
+    std::ostringstream text;
+    text << std::ifstream(directory + "/summary.json").rdbuf();
+    const std::string json = text.str();
+    const auto        at   = json.find("\"" + key + "\": \"");
+    if (at == std::string::npos)
+      return "";
+    const auto begin = at + key.size() + 5;
+    return json.substr(begin, json.find('"', begin) - begin);
+  }
+
   /// Run the command line @p arguments as the program would (printing
   /// what a failed run said), and read the number @p key of the
   /// summary.json in @p directory, where the arguments put the results.
