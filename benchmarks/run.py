@@ -20,7 +20,7 @@ all (the residual is not defined for the viscoplastic method, whose stresses
 are in equilibrium at every iteration). The discrete limit of a case
 and mesh is Newton's collapse load at TOL 1e-8 bracketed to 0.1%: the
 error against it is what the solver adds to the mesh's own error.
---quick runs mesh level 1 only.
+--quick runs mesh level 1 only, and the scenes with weight at TOL 1e-3 only.
 --ladder climbs the cost ladder ("no more model than the scene needs"):
 element Q8 or Q9 x 2x2 or 3x3 Gauss points x mesh level 1 and 2, for every
 case with its recommended method, and for Case 3 the harmonics {1}, {1,3},
@@ -62,19 +62,25 @@ CASES = {
                     {level: cases.geometry("case4", level, 10) for level in (1, 2)}),
     # Scenes with weight (each file's own mesh): the active thrust on a
     # smooth wall from the K0 state (Rankine's K_a), a slab's safety factor
-    # on a thin seam by strength reduction (tan(phi) / tan(beta)), and N_q
-    # under a smooth footing with a surcharge (Prandtl-Reissner).
+    # on a thin seam by strength reduction (tan(phi) / tan(beta)), N_q
+    # under a smooth footing with a surcharge (Prandtl-Reissner), a
+    # homogeneous slope's safety factor (Bishop's simplified method) and
+    # N_gamma under a rough footing (Martin's exact value).
     "rankine-active": ("prm/earth-pressure-rankine.prm", {1: ""}),
     "seam-safety": ("prm/inclined-seam-strength-reduction.prm", {1: ""}),
     "bearing-nq": ("prm/strip-footing-bearing-capacity.prm", {1: ""}),
+    "slope-safety": ("prm/slope-strength-reduction.prm", {1: ""}),
+    "n-gamma": ("prm/strip-footing-n-gamma.prm", {1: ""}),
 }
+WEIGHT_SCENES = ("rankine-active", "seam-safety", "bearing-nq", "slope-safety", "n-gamma")
 # The levels the default mode runs per case: two where a run takes about a
 # second, one where the slower methods take several (Case 3, Case 4), and
 # Prandtl at level 1 only, since its level 2 took a third of the whole
 # benchmark's time (the --performance mode times Prandtl on finer meshes).
 BENCHMARK_LEVELS = {"prandtl": (1,), "case1-adhesive": (1, 2), "case2": (1, 2),
                     "case3": (1,), "case4-rough": (1,), "rankine-active": (1,),
-                    "seam-safety": (1,), "bearing-nq": (1,)}
+                    "seam-safety": (1,), "bearing-nq": (1,), "slope-safety": (1,),
+                    "n-gamma": (1,)}
 # The cases the ladder climbs and the method each climbs with: the
 # recommended one (see README, "Choosing a solution method").
 LADDER_METHOD = {"prandtl": ("viscoplastic", "body loads"),
@@ -286,8 +292,10 @@ def benchmark(quick, repeat):
             if level not in BENCHMARK_LEVELS[case] or (quick and level > 1):
                 continue
             limit = discrete_limit(case, level, prm, geometry)
+            # --quick runs the scenes with weight at the looser TOL only.
+            tolerances = TOLERANCES[:1] if quick and case in WEIGHT_SCENES else TOLERANCES
             for method, criterion in METHODS:
-                for tol in TOLERANCES:
+                for tol in tolerances:
                     directory = os.path.join(OUT, "runs", "%s-%d-%s-%s" % (
                         case, level, method.replace(" ", "_"), tol))
                     summary, median, peak = median_run(

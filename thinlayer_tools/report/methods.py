@@ -210,7 +210,15 @@ WEIGHT_CASES = {"rankine-active": "Rankine's active thrust (K_a = 1/3) from the 
                 "seam-safety": "safety factor of a slab on a thin seam by strength "
                 "reduction (tan(phi) / tan(beta) = 1.5863)",
                 "bearing-nq": "N_q of a smooth strip footing with a surcharge "
-                "(Prandtl-Reissner 18.401)"}
+                "(Prandtl-Reissner 18.401)",
+                "slope-safety": "safety factor of a homogeneous slope by strength reduction "
+                "(Bishop's simplified method 1.378)",
+                "n-gamma": "N_gamma of a rough strip footing (Martin's exact 14.75; the "
+                "file's mesh lies 9% above it, so its runs are judged against the discrete "
+                "limit)"}
+# The scenes whose file's mesh is itself further than 2% from the classical
+# value: a method is judged on them against the discrete limit.
+JUDGED_AGAINST_LIMIT = ("n-gamma",)
 
 
 def benchmark_rows(runs):
@@ -271,11 +279,15 @@ def weight_speed_accuracy(runs, quick):
                       percent(r["relative_error"]), percent(r["discrete_error"]),
                       r["total_iterations"], "%.2f" % float(r["wall_median_s"])])
     # A method serves every scene where each of its runs ends at a collapse
-    # (or plateau) within 2% of the classical value.
+    # (or plateau) within 2% of the classical value (of the discrete limit
+    # where the mesh itself is further from the classical value).
+    def error(r):
+        return results.number(r["discrete_error" if r["case"] in JUDGED_AGAINST_LIMIT
+                                else "relative_error"])
+
     def serves(method):
         own = [r for r in rows if r["method"] == method]
-        return own and all(math.isfinite(results.number(r["relative_error"])) and
-                           abs(results.number(r["relative_error"])) <= 0.02 for r in own)
+        return own and all(math.isfinite(error(r)) and abs(error(r)) <= 0.02 for r in own)
     methods = list(dict.fromkeys(r["method"] for r in rows))
     reliable = [m for m in methods if serves(m)]
     scenes = "; ".join("%s: %s" % item for item in WEIGHT_CASES.items())
@@ -283,13 +295,15 @@ def weight_speed_accuracy(runs, quick):
         "speed-accuracy-weight", "Speed against accuracy: scenes with weight",
         "(not in the paper) the paper's scenes are weightless.",
         "beyond", "The benchmark's scenes with weight (%s), each on its file's mesh, by every "
-        "method at TOL 1e-3 and 1e-5 (the displacement test), drawn in the chart of the "
+        "method at TOL %s (the displacement test), drawn in the chart of the "
         "section above. A method serves all of them when every one of its runs ends at a "
-        "collapse or plateau within 2%% of the classical value: %s. An error of several "
+        "collapse or plateau within 2%% of the classical value (N_gamma: of the discrete "
+        "limit): %s. An error of several "
         "hundred percent is a wrong plateau, not a near miss (the paper's method on a "
         "cohesionless backfill: see \"Earth pressure with weight\"); the discrete limit "
         "(Newton, TOL 1e-8) is missing where Newton itself found none.%s" % (
-            scenes, ", ".join(reliable) if reliable else "none",
+            scenes, "1e-3" if quick else "1e-3 and 1e-5",
+            ", ".join(reliable) if reliable else "none",
             " Times of one run each (--quick)." if quick else " Times are medians of three runs."),
         rows=table,
         cost="%.0f s for %d runs" % (sum(float(r["wall_median_s"]) for r in rows), len(rows)),
