@@ -308,6 +308,10 @@ namespace thinlayer
       solution_vectors[m] += increment_vectors[m];
     for (const auto &group : groups)
       group->accept();
+    // The internal forces are the accepted state's (its last evaluation).
+    accepted_forces = 0;
+    for (const auto &forces : internal_force_vectors)
+      accepted_forces = std::max(accepted_forces, forces.linfty_norm());
     accepted_lambda = load_factor;
     current_lambda  = load_factor;
     pending         = false;

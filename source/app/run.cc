@@ -110,7 +110,9 @@ namespace thinlayer
             << " at the last converged step: mean " << printf("%.5e", u.mean)
             << ", min " << printf("%.5e", u.min) << ", max "
             << printf("%.5e", u.max) << ", spread (max-min)/|mean| "
-            << printf("%.3e", (u.max - u.min) / std::abs(u.mean)) << '\n';
+            << (u.mean != 0 ? printf("%.3e", (u.max - u.min) / std::abs(u.mean))
+                            : std::string("- (the mean is 0)"))
+            << '\n';
       if (run.any_step_converged)
         out << "  last converged load "
             << printf("%.5g", run.last_converged_load);

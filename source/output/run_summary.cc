@@ -48,6 +48,22 @@ namespace thinlayer
           nested[key] = number(value);
         object[name] = nested;
       }
+
+      void
+      operator()(const std::string &name, const std::vector<PhaseSummary> &list)
+      {
+        nlohmann::ordered_json array = nlohmann::ordered_json::array();
+        for (const PhaseSummary &phase : list)
+          array.push_back(
+            {{"name", phase.name},
+             {"outcome", phase.outcome},
+             {"reason", phase.reason},
+             {"load_steps", phase.load_steps},
+             {"collapse_load", number(phase.collapse_load)},
+             {"last_converged_load", number(phase.last_converged_load)},
+             {"final_displacement", number(phase.final_displacement)}});
+        object[name] = array;
+      }
     };
 
 
@@ -110,6 +126,10 @@ namespace thinlayer
 
       void
       operator()(const std::string &, const std::map<std::string, double> &)
+      {}
+
+      void
+      operator()(const std::string &, const std::vector<PhaseSummary> &)
       {}
     };
   } // namespace

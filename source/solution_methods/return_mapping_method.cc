@@ -56,8 +56,12 @@ namespace thinlayer
   ReturnMappingMethod<dim>::evaluate_residual(const double target,
                                               const bool   tangents)
   {
-    ResidualNorms norms{
-      analysis.return_mapping_update(tangents, stress_excess), 0, 0, 0, 0};
+    ResidualNorms norms{analysis.return_mapping_update(tangents, stress_excess),
+                        0,
+                        0,
+                        0,
+                        0,
+                        analysis.accepted_force_scale()};
     for (unsigned int m = 0; m < analysis.n_modes(); ++m)
       {
         const ModeSystem &mode = analysis.mode_system(m);
@@ -205,7 +209,9 @@ namespace thinlayer
   {
     using Criterion        = SolverParameters::ConvergenceCriterion;
     const double tolerance = parameters.tolerance;
-    if (norms.max <= 1e-10 * norms.forces)
+    // Round-off: also of the forces the step started from, where the
+    // target state carries none (a phase that unloads the body).
+    if (norms.max <= 1e-10 * std::max(norms.forces, norms.start_forces))
       return true;
     switch (parameters.convergence_criterion)
       {

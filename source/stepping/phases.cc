@@ -68,6 +68,11 @@ namespace thinlayer
           "the at-rest stresses of the weight, out of balance by " +
           text_format::printf("%.2e", summary.initial_out_of_balance) +
           " of the largest nodal weight";
+        PhaseSummary initial;
+        initial.name    = "initial state";
+        initial.outcome = summary.initial_state_outcome;
+        initial.reason  = summary.initial_state_reason;
+        summary.phases.push_back(initial);
       }
   }
 
@@ -83,6 +88,19 @@ namespace thinlayer
       return Programme<dim>(
                p, phase, analysis, solver, monitors, layers, writer, timer, out)
         .run();
+    };
+    // Each phase is judged on its own, and listed with its outcome.
+    const auto judge = [&](const ProgrammeResult &result, const bool load) {
+      judge_outcome(load, result, summary);
+      PhaseSummary phase;
+      phase.name                = summary.phase;
+      phase.outcome             = summary.outcome;
+      phase.reason              = summary.reason;
+      phase.load_steps          = result.steps_run;
+      phase.collapse_load       = summary.collapse_load;
+      phase.last_converged_load = result.last_converged_load;
+      phase.final_displacement  = monitors.displacement().mean;
+      summary.phases.push_back(phase);
     };
     // A phase that did not complete ends the run: its outcome is the run's.
     const auto ended = [&](const ProgrammeResult &result,
@@ -109,7 +127,7 @@ namespace thinlayer
           {"initial state",
                   {p.initial_state.load_increments, p.loading.collapse_resolution},
                   0});
-        judge_outcome(analysis.has_external_load(), result, summary);
+        judge(result, analysis.has_external_load());
         summary.initial_state_outcome = summary.outcome;
         summary.initial_state_reason  = summary.reason;
         summary.initial_state_steps   = result.steps_run;
@@ -131,7 +149,7 @@ namespace thinlayer
           }
         summary.phase = "loading";
         result        = run_phase({"loading", p.loading, steps});
-        judge_outcome(analysis.has_external_load(), result, summary);
+        judge(result, analysis.has_external_load());
         steps += result.steps_run;
       }
 
@@ -148,7 +166,7 @@ namespace thinlayer
         summary.initial_load         = monitors.load();
         summary.initial_displacement = monitors.displacement().mean;
         result = run_phase({phase.name, phase.loading, steps});
-        judge_outcome(analysis.has_external_load(), result, summary);
+        judge(result, analysis.has_external_load());
         steps += result.steps_run;
       }
     if (p.strength_reduction.active() && steps > 0 &&
@@ -168,7 +186,7 @@ namespace thinlayer
                                                    p.loading.collapse_resolution},
                                                   steps,
                                                   true});
-        judge_outcome(true, result, summary);
+        judge(result, true);
       }
     return result;
   }

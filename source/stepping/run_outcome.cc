@@ -104,6 +104,9 @@ namespace thinlayer
     const auto at = [](const double load_factor) {
       return " at load factor " + printf("%.6g", load_factor);
     };
+    // The figures are this phase's: none is kept from a phase before it.
+    s.collapse_load = std::numeric_limits<double>::quiet_NaN();
+    s.knee_load     = std::numeric_limits<double>::quiet_NaN();
     if (run.interrupted_by != 0)
       {
         s.outcome = "interrupted";

@@ -6,13 +6,15 @@
 //    back up by 3e-3 (Phase 3): at the end of each phase the base carries
 //    M u W / H (M the constrained modulus, u the top's settlement so far:
 //    1e-3, 3e-3, 0), to 1e-9 of the largest (history.csv's ten digits);
-//    history.csv names the phases.
+//    history.csv names the phases, and summary.json lists each with its
+//    own outcome (completed) and its own end (its final displacement).
 //  - A block pressed down by V (the Loading section) and pushed sideways
 //    (Phase 2, V held) on zero-thickness Coulomb interface elements
 //    (prm/sliding-block.prm): its horizontal force levels off at
 //    H = V tan(delta) (Coulomb's law of sliding friction, exact for a
 //    rigid block whatever the distribution of the normal tractions), to
-//    1e-9, for delta = 20 and 30 degrees.
+//    1e-9, for delta = 20 and 30 degrees; in summary.json's list of the
+//    phases that plateau is the push's, and the loading has none.
 #include <thinlayer/app/command_line.h>
 
 #include <cmath>
@@ -55,8 +57,48 @@ namespace
   }
 
 
-  /// The last row of each phase of results/history.csv: (phase, load,
-  /// displacement).
+  /// The entries of results/summary.json's list of phases, each as its
+  /// text.
+  std::vector<std::string>
+  listed_phases()
+  {
+    std::ifstream            in("results/summary.json");
+    const std::string        json((std::istreambuf_iterator<char>(in)),
+                           std::istreambuf_iterator<char>());
+    std::vector<std::string> entries;
+    const auto               begin = json.find("\"phases\": [");
+    const auto               end   = json.find("\n  ]", begin);
+    if (begin == std::string::npos || end == std::string::npos)
+      return entries;
+    for (auto at = json.find('{', begin); at != std::string::npos && at < end;
+         at      = json.find('{', at + 1))
+      entries.push_back(json.substr(at, json.find('}', at) - at));
+    return entries;
+  }
+
+
+  /// Whether the phase entry @p entry has the member @p text.
+  bool
+  has(const std::string &entry, const std::string &text)
+  {
+    return entry.find(text) != std::string::npos;
+  }
+
+
+  /// The number @p key of the phase entry @p entry (NaN if null or none).
+  double
+  number(const std::string &entry, const std::string &key)
+  {
+    const auto at = entry.find("\"" + key + "\": ");
+    return at == std::string::npos ||
+               entry.compare(at + key.size() + 4, 4, "null") == 0
+             ? NAN
+             : std::atof(entry.c_str() + at + key.size() + 4);
+  }
+
+
+  /// The last accepted row of each phase of results/history.csv: (phase,
+  /// load, displacement).
   std::vector<std::tuple<std::string, double, double>>
   phase_ends()
   {
@@ -71,6 +113,8 @@ namespace
         for (std::istringstream s(line); std::getline(s, cell, ',');)
           cells.push_back(cell);
         const std::string phase = cells.back();
+        if (cells.size() < 10 || cells[9] != "1")
+          continue;
         if (ends.empty() || std::get<0>(ends.back()) != phase)
           ends.emplace_back(phase, 0., 0.);
         ends.back() = {phase, std::stod(cells[3]), std::stod(cells[4])};
@@ -110,6 +154,17 @@ main()
                         std::abs(displacement + settled[k]) / 3e-3});
     }
   expect(worst < 1e-9, "each phase starts where the one before it ended");
+  const auto listed = listed_phases();
+  bool       each   = listed.size() == 3;
+  for (unsigned int k = 0; each && k < 3; ++k)
+    each =
+      has(listed[k], "\"name\": \"" + std::string(names[k]) + "\"") &&
+      has(listed[k], "\"outcome\": \"completed\"") &&
+      std::abs(number(listed[k], "final_displacement") + settled[k]) < 1e-12;
+  std::printf("summary.json lists %zu phases\n", listed.size());
+  expect(each,
+         "summary.json lists the three phases, each completed, each "
+         "ending where it moved the top");
 
   for (const double delta : {20., 30.})
     {
@@ -142,6 +197,12 @@ main()
       expect(text.find(",loading\n") != std::string::npos &&
                text.find(",push\n") != std::string::npos,
              "history.csv names the loading and the push");
+      const auto phases = listed_phases();
+      expect(phases.size() == 2 &&
+               std::isnan(number(phases[0], "collapse_load")) &&
+               std::abs(number(phases[1], "collapse_load") - 1) < 1e-9 &&
+               has(phases[1], "\"name\": \"push\""),
+             "the plateau is the push's, the loading has none");
     }
   return truths::conclude();
 }

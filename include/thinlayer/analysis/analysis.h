@@ -150,6 +150,11 @@ namespace thinlayer
     double
     accepted_load_factor() const;
 
+    /// The largest internal force (reactions included) of the last
+    /// accepted state: the force scale of a step that starts there.
+    double
+    accepted_force_scale() const;
+
     /// The load factor of the current state: of the last attempt while it
     /// is pending, else the accepted one.
     double
@@ -562,6 +567,7 @@ namespace thinlayer
     std::vector<unsigned int> dof_component;
 
     double accepted_lambda;
+    double accepted_forces = 0;
     /// The load factor of the current state, and whether that state is a
     /// pending attempt.
     double current_lambda;

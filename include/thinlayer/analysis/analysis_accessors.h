@@ -83,6 +83,14 @@ namespace thinlayer
 
 
   template <int dim>
+  inline double
+  Analysis<dim>::accepted_force_scale() const
+  {
+    return accepted_forces;
+  }
+
+
+  template <int dim>
   inline bool
   Analysis<dim>::is_pending() const
   {

@@ -4,9 +4,30 @@
 #include <limits>
 #include <map>
 #include <string>
+#include <vector>
 
 namespace thinlayer
 {
+  /**
+   * How one phase of a run ended (the initial state, the loading, each
+   * further loading phase, the strength reduction): the outcomes apply per
+   * phase, and a phase that does not complete ends the run, so only the
+   * last of these can be other than "completed" or "set".
+   */
+  struct PhaseSummary
+  {
+    std::string  name;
+    std::string  outcome;
+    std::string  reason;
+    unsigned int load_steps = 0;
+    /// The phase's collapse load (or plateau), NaN where it has none.
+    double collapse_load       = std::numeric_limits<double>::quiet_NaN();
+    double last_converged_load = std::numeric_limits<double>::quiet_NaN();
+    /// The monitored displacement at the phase's end (mean).
+    double final_displacement = std::numeric_limits<double>::quiet_NaN();
+  };
+
+
   /**
    * The figures of one run: what it was (model, discretisation, size), how
    * it ended (collapse load against the reference, iterations) and what it
@@ -41,6 +62,8 @@ namespace thinlayer
     /// "loading", or "initial state" where gravity loading did not
     /// complete and the loading was not run.
     std::string phase;
+    /// Every phase that ran, in order, with its own outcome.
+    std::vector<PhaseSummary> phases;
     /// Initial state/Procedure, and how it ended: "set" (K0 procedure),
     /// gravity loading's outcome, or empty (none); its reason, and the
     /// load steps of gravity loading.
@@ -134,8 +157,8 @@ namespace thinlayer
 
     /**
      * Calls @p visitor(name, value) for every figure in order, value being
-     * a double, an unsigned int, a bool, a std::string, or a map of names
-     * to doubles.
+     * a double, an unsigned int, a bool, a std::string, a map of names
+     * to doubles, or the list of phases.
      */
     template <typename Visitor>
     void
@@ -191,6 +214,8 @@ namespace thinlayer
       visitor("program_memory_mb_per_rank", program_memory_mb);
       visitor("warnings", warnings);
       visitor("timing", timing);
+      // Last, so that the run's own figures come first.
+      visitor("phases", phases);
     }
   };
 } // namespace thinlayer

@@ -26,6 +26,11 @@ namespace thinlayer
     /// external forces: the scales max |r| is measured against.
     double body_loads;
     double forces;
+    /// max |f| of the internal forces of the accepted state, where the
+    /// step starts (Analysis::accepted_force_scale()): the scale of
+    /// round-off in a step that unloads the body to nothing (where every
+    /// force of the target state vanishes).
+    double start_forces;
   };
 
 
