@@ -24,8 +24,8 @@ import time
 
 from thinlayer_tools import THINLAYER, TOP, mpirun, run_module
 from thinlayer_tools.report import (bearing_capacity, case1, case4, earth_pressure, footings,
-                                    limits, methods, page, parallel, phases, scaling, solid,
-                                    speed, strength_reduction, wall_friction, weight)
+                                    limits, methods, page, parallel, phases, pile, scaling,
+                                    solid, speed, strength_reduction, wall_friction, weight)
 from thinlayer_tools.report.runs import DEFAULT, PAPER, Runs
 
 ALL_ALPHAS = "alpha = 10, 20, 30, 40, 45, 50, 60, 70, 80"
@@ -89,6 +89,8 @@ def run_list(quick):
     runs += bearing_capacity.run_list(quick)
     # Loading phases: a block pressed, then pushed until it slides.
     runs += phases.run_list(quick)
+    # A pile's shaft resistance on interface elements (harmonic 0).
+    runs += pile.run_list(quick)
     # The same scenes on several MPI ranks (the fourth field), for the
     # section on ranks: every kinematics and element kind, each method kind.
     runs += parallel.ONE_RANK_RUNS
@@ -203,7 +205,7 @@ def sections(runs, quick):
             + wall_friction.sections(runs, quick)
             + strength_reduction.sections(runs, quick)
             + bearing_capacity.sections(runs, quick)
-            + phases.sections(runs, quick)
+            + phases.sections(runs, quick) + pile.sections(runs, quick)
             + speed.sections(runs, quick)
             + parallel.sections(runs, quick) + scaling.sections(runs, quick)
             + solid.sections(runs, quick))

@@ -105,8 +105,12 @@ def render(path, screenshot):
         return ["the screenshot is %d pixels wide, not %d" % (image.shape[1], width)]
     grey = image[:, :, :3].mean(axis=2)
     dark = (grey < 0.3).mean()
+    # Colours quantised to 8 levels a channel: a page of text and tables
+    # alone (black text, grey rules, blue links, the verdicts' green, red and
+    # blue) has about 16 when no figure falls in the screenshot; a failed
+    # render (a white or an error page) has one or two.
     colours = len({tuple((pixel * 8).astype(int)) for pixel in image[::7, ::7, :3].reshape(-1, 3)})
-    if dark < 0.002 or colours < 20:
+    if dark < 0.002 or colours < 8:
         return ["the screenshot looks blank (%.2f%% dark pixels, %d colours)" % (100 * dark, colours)]
     return []
 
