@@ -90,6 +90,28 @@ namespace run_results
     return summary_number(directory, key);
   }
 
+  /// Run the project's prm/@p name with the settings @p settings (each
+  /// "Section/Entry=value") into results/, without VTU files, and read the
+  /// number @p key of its summary.json.
+  inline double
+  run_prm(const std::string              &name,
+          const std::vector<std::string> &settings = {},
+          const std::string              &key      = "collapse_load")
+  {
+    std::vector<std::string> arguments = {std::string(SOURCE_DIR) +
+                                            "/../../prm/" + name,
+                                          "-s",
+                                          "Output/Directory=results",
+                                          "-s",
+                                          "Output/Write VTU=false"};
+    for (const std::string &setting : settings)
+      {
+        arguments.push_back("-s");
+        arguments.push_back(setting);
+      }
+    return run_and_read(arguments, key);
+  }
+
   /// The Monitors and Output sections of a scene a test writes: the
   /// reaction of boundary 1 along y against the displacement of boundary 3
   /// along y, into results/, without VTU files.

@@ -37,13 +37,8 @@ main()
   const double tan_delta = std::tan(20 * M_PI / 180);
   const double beta      = M_PI * (R + t) * L * L * K0 * gamma * tan_delta;
 
-  const double load = run_results::run_and_read(
-    {std::string(SOURCE_DIR) + "/../../prm/pile-shaft-axial-zero-thickness.prm",
-     "-s",
-     "Output/Directory=results",
-     "-s",
-     "Output/Write VTU=false"},
-    "collapse_load");
+  const double load =
+    run_results::run_prm("pile-shaft-axial-zero-thickness.prm");
   const std::string outcome = run_results::summary_text("results", "outcome");
   std::printf("outcome %s, load / beta-method estimate %.4f\n",
               outcome.c_str(),

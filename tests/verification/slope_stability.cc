@@ -50,18 +50,8 @@ namespace
                   4 * n_height / 5,
                   6 * n_height / 5);
     Result r;
-    r.factor =
-      run_results::run_and_read({std::string(SOURCE_DIR) +
-                                   "/../../prm/slope-strength-reduction.prm",
-                                 "-s",
-                                 dilation_setting,
-                                 "-s",
-                                 mesh,
-                                 "-s",
-                                 "Output/Directory=results",
-                                 "-s",
-                                 "Output/Write VTU=false"},
-                                "collapse_load");
+    r.factor = run_results::run_prm("slope-strength-reduction.prm",
+                                    {dilation_setting, mesh});
     r.last_converged =
       run_results::summary_number("results", "last_converged_load");
     r.outcome = run_results::summary_text("results", "outcome");
