@@ -567,6 +567,7 @@ namespace thinlayer
     std::vector<unsigned int> dof_component;
 
     double accepted_lambda;
+    /// accepted_force_scale(): set by accept_step().
     double accepted_forces = 0;
     /// The load factor of the current state, and whether that state is a
     /// pending attempt.
