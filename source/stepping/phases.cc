@@ -78,6 +78,26 @@ namespace thinlayer
 
 
   template <int dim>
+  void
+  Phases<dim>::judge(const ProgrammeResult &result,
+                     const bool             under_load,
+                     RunSummary            &summary) const
+  {
+    // Each phase is judged on its own, and listed with its outcome.
+    judge_outcome(under_load, result, summary);
+    PhaseSummary phase;
+    phase.name                = summary.phase;
+    phase.outcome             = summary.outcome;
+    phase.reason              = summary.reason;
+    phase.load_steps          = result.steps_run;
+    phase.collapse_load       = summary.collapse_load;
+    phase.last_converged_load = result.last_converged_load;
+    phase.final_displacement  = monitors.displacement().mean;
+    summary.phases.push_back(phase);
+  }
+
+
+  template <int dim>
   ProgrammeResult
   Phases<dim>::run(OutputWriter &writer, RunSummary &summary)
   {
@@ -88,19 +108,6 @@ namespace thinlayer
       return Programme<dim>(
                p, phase, analysis, solver, monitors, layers, writer, timer, out)
         .run();
-    };
-    // Each phase is judged on its own, and listed with its outcome.
-    const auto judge = [&](const ProgrammeResult &result, const bool load) {
-      judge_outcome(load, result, summary);
-      PhaseSummary phase;
-      phase.name                = summary.phase;
-      phase.outcome             = summary.outcome;
-      phase.reason              = summary.reason;
-      phase.load_steps          = result.steps_run;
-      phase.collapse_load       = summary.collapse_load;
-      phase.last_converged_load = result.last_converged_load;
-      phase.final_displacement  = monitors.displacement().mean;
-      summary.phases.push_back(phase);
     };
     // A phase that did not complete ends the run: its outcome is the run's.
     const auto ended = [&](const ProgrammeResult &result,
@@ -127,7 +134,7 @@ namespace thinlayer
           {"initial state",
                   {p.initial_state.load_increments, p.loading.collapse_resolution},
                   0});
-        judge(result, analysis.has_external_load());
+        judge(result, analysis.has_external_load(), summary);
         summary.initial_state_outcome = summary.outcome;
         summary.initial_state_reason  = summary.reason;
         summary.initial_state_steps   = result.steps_run;
@@ -149,7 +156,7 @@ namespace thinlayer
           }
         summary.phase = "loading";
         result        = run_phase({"loading", p.loading, steps});
-        judge(result, analysis.has_external_load());
+        judge(result, analysis.has_external_load(), summary);
         steps += result.steps_run;
       }
 
@@ -166,7 +173,7 @@ namespace thinlayer
         summary.initial_load         = monitors.load();
         summary.initial_displacement = monitors.displacement().mean;
         result = run_phase({phase.name, phase.loading, steps});
-        judge(result, analysis.has_external_load());
+        judge(result, analysis.has_external_load(), summary);
         steps += result.steps_run;
       }
     if (p.strength_reduction.active() && steps > 0 &&
@@ -186,7 +193,7 @@ namespace thinlayer
                                                    p.loading.collapse_resolution},
                                                   steps,
                                                   true});
-        judge(result, true);
+        judge(result, true, summary);
       }
     return result;
   }

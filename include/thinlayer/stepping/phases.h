@@ -65,6 +65,13 @@ namespace thinlayer
     bool
     loading_runs() const;
 
+    /// Judge the phase that ran as @p result (judge_outcome(), @p under_load
+    /// as there) and list it, with its own outcome, in @p summary.phases.
+    void
+    judge(const ProgrammeResult &result,
+          bool                   under_load,
+          RunSummary            &summary) const;
+
     const Parameters                     &p;
     Analysis<dim>                        &analysis;
     StepSolver<dim>                      &solver;
