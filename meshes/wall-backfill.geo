@@ -30,7 +30,8 @@
 //            3 "base" (y = 0, x > t; with depth > 0 y = -D, 0 < x),
 //            4 "far side" (x = t + width), 5 "ground" (y = H),
 //            7 "below the wall" (x = 0, -D < y < 0; depth > 0 only);
-//            zero_thickness: 6 "column face" (x = t, 0 < y < H)
+//            zero_thickness: 6 "column face" (x = t, 0 < y < H; with
+//            depth > 0 also the skin's foot, y = 0, 0 < x < t)
 DefineConstant[
   height         = {1, Name "Parameters/height"},
   width          = {3, Name "Parameters/width"},
@@ -88,6 +89,11 @@ EndIf
 Physical Surface("wall column", 2) = {1};
 Physical Curve("wall", 1) = {5};
 Physical Curve("ground", 5) = {3, 4};
-If (zero_thickness)
+// Below a skin whose foot stands on soil (depth > 0), the foot slides on
+// that soil through the same interface: a foot held to it would be a rough
+// foot of width t that raised the passive thrust by 2% for t = H / 50.
+If (zero_thickness && depth > 0)
+  Physical Curve("column face", 6) = {6, 1};
+ElseIf (zero_thickness)
   Physical Curve("column face", 6) = {6};
 EndIf

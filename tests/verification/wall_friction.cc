@@ -29,60 +29,33 @@
 
 #include <cmath>
 #include <cstdio>
-#include <string>
-#include <vector>
 
-#include "../common/run_results.h"
 #include "../common/truths.h"
+#include "../common/wall_backfill.h"
 
 namespace
 {
   const double phi = 30;
 
-  double
-  radians(const double degrees)
-  {
-    return degrees * M_PI / 180;
-  }
+  using wall_backfill::radians;
 
 
-  /// The wall's normal thrust coefficient of @p file with wall friction
-  /// @p delta on the mesh @p n_height x 2 n_height.
+  /// The active thrust with wall friction @p delta on @p n x 2 n cells.
   double
   thrust(const bool interface, const double delta, const unsigned int n)
   {
-    const std::string prm = std::string(SOURCE_DIR) +
-                            "/../../prm/earth-pressure-wall-friction" +
-                            (interface ? "-zero-thickness" : "") + ".prm";
-    char friction[96], mesh[160];
-    if (interface)
-      std::snprintf(friction,
-                    sizeof(friction),
-                    "Interface curve 6/Friction angle=%.17g",
-                    delta);
-    else
-      std::snprintf(friction,
-                    sizeof(friction),
-                    "Material 2/Friction angle=%.17g",
-                    std::asin(std::tan(radians(delta))) * 180 / M_PI);
-    std::snprintf(mesh,
-                  sizeof(mesh),
-                  "Mesh/Geometry parameters=height=1, width=3, layer=0.02, "
-                  "n_height=%u, n_width=%u, growth=%g%s",
+    char geometry[128];
+    std::snprintf(geometry,
+                  sizeof(geometry),
+                  "height=1, width=3, layer=0.02, n_height=%u, n_width=%u, "
+                  "growth=%g",
                   n,
                   2 * n,
-                  n == 12 ? 1.08 : 1.04,
-                  interface ? ", zero_thickness=1" : "");
-    const std::vector<std::string> arguments = {prm,
-                                                "-s",
-                                                friction,
-                                                "-s",
-                                                mesh,
-                                                "-s",
-                                                "Output/Directory=results",
-                                                "-s",
-                                                "Output/Write VTU=false"};
-    return run_results::run_and_read(arguments, "collapse_load");
+                  n == 12 ? 1.08 : 1.04);
+    return wall_backfill::thrust("earth-pressure-wall-friction",
+                                 interface,
+                                 delta,
+                                 geometry);
   }
 } // namespace
 
