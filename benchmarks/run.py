@@ -65,14 +65,17 @@ CASES = {
     # on a thin seam by strength reduction (tan(phi) / tan(beta)), N_q
     # under a smooth footing with a surcharge (Prandtl-Reissner), a
     # homogeneous slope's safety factor (Bishop's simplified method),
-    # N_gamma under a rough footing (Martin's exact value) and the passive
-    # thrust on a rough wall through interface elements (Lancellotta's lower
-    # bound; no exact value is known).
+    # N_gamma under a rough footing (Martin's exact value) and the active
+    # and the passive thrust on a rough wall through interface elements
+    # (Coulomb's and Lancellotta's bounds; no exact value is known). The
+    # pile's shaft is left out: its load keeps rising slowly (the toe), so
+    # it has no limit to measure a method against.
     "rankine-active": ("prm/earth-pressure-rankine.prm", {1: ""}),
     "seam-safety": ("prm/inclined-seam-strength-reduction.prm", {1: ""}),
     "bearing-nq": ("prm/strip-footing-bearing-capacity.prm", {1: ""}),
     "slope-safety": ("prm/slope-strength-reduction.prm", {1: ""}),
     "n-gamma": ("prm/strip-footing-n-gamma.prm", {1: ""}),
+    "active-wall": ("prm/earth-pressure-wall-friction-zero-thickness.prm", {1: ""}),
     "passive-wall": ("prm/earth-pressure-passive-wall-friction-zero-thickness.prm", {1: ""}),
 }
 # The levels the default mode runs per case: two where a run takes about a
@@ -82,7 +85,7 @@ CASES = {
 BENCHMARK_LEVELS = {"prandtl": (1,), "case1-adhesive": (1, 2), "case2": (1, 2),
                     "case3": (1,), "case4-rough": (1,), "rankine-active": (1,),
                     "seam-safety": (1,), "bearing-nq": (1,), "slope-safety": (1,),
-                    "n-gamma": (1,), "passive-wall": (1,)}
+                    "n-gamma": (1,), "active-wall": (1,), "passive-wall": (1,)}
 # The cases the ladder climbs and the method each climbs with: the
 # recommended one (see README, "Choosing a solution method").
 LADDER_METHOD = {"prandtl": ("viscoplastic", "body loads"),
