@@ -106,18 +106,21 @@ def run_list(quick):
     return runs
 
 
-def wall_friction(runs, quick):
-    table = [["delta/phi", "wall friction by", "cells up the wall", "method", "outcome",
-              "K_a (plateau)", "Coulomb", "Rankine", "extrapolated", "in the bracket",
-              "wall s"]]
-    inside, checked = 0, 0
-    for kind, delta, meshes in plan(quick):
-        low, high = bracket(delta)
+def extrapolations(runs, planned, bracket_of, suffix, table):
+    """Rows of @p table for the runs of @p planned (named with @p suffix)
+    and the paper's method's run: each thrust against its bracket
+    (bracket_of(delta)), with the first-order extrapolation from the two
+    meshes. Returns (extrapolations in the bracket, extrapolations, whether
+    every converged thrust lies above the bracket's lower end)."""
+    inside, checked, above = 0, 0, True
+    for kind, delta, meshes in planned:
+        low, high = bracket_of(delta)
         found = []
         for n in meshes:
-            s = runs.summary(run_name(kind, delta, n))
+            s = runs.summary(run_name(kind, delta, n, suffix))
             k = results.collapse_load(s)
             found.append(k)
+            above = above and (k is None or k > low)
             extrapolated = (2 * found[1] - found[0]
                             if len(found) == 2 and None not in found else None)
             if extrapolated is not None:
@@ -129,13 +132,21 @@ def wall_friction(runs, quick):
                           ("yes" if low <= extrapolated <= high else "NO")
                           if extrapolated is not None else "",
                           "%.1f" % s["wall_seconds"]])
-    paper = runs.summary(run_name("interface", 20, 12, "-paper"))
+    paper = runs.summary(run_name("interface", 20, 12, suffix + "-paper"))
     k = results.collapse_load(paper)
     table.append(["20/30", "interface", "12", "paper's", paper["outcome"],
                   "%.4f" % k if k is not None else
                   "%.4f (last converged)" % results.number(paper["last_converged_load"]),
-                  "%.4f" % bracket(20)[0], "%.4f" % bracket(20)[1], "", "",
+                  "%.4f" % bracket_of(20)[0], "%.4f" % bracket_of(20)[1], "", "",
                   "%.1f" % paper["wall_seconds"]])
+    return inside, checked, above
+
+
+def wall_friction(runs, quick):
+    table = [["delta/phi", "wall friction by", "cells up the wall", "method", "outcome",
+              "K_a (plateau)", "Coulomb", "Rankine", "extrapolated", "in the bracket",
+              "wall s"]]
+    inside, checked, _ = extrapolations(runs, plan(quick), bracket, "", table)
     names = [n for n, _, _ in run_list(quick) if "-passive" not in n]
     verdict = "agrees" if inside == checked and checked > 0 else "disagrees"
     verdict_text = "The extrapolation lies in the bracket in %d of %d cases%s." % (
@@ -168,33 +179,8 @@ def passive_wall_friction(runs, quick):
     table = [["delta/phi", "wall friction by", "cells up the wall", "method", "outcome",
               "K_p (plateau)", "Lancellotta", "Coulomb", "extrapolated", "in the bracket",
               "wall s"]]
-    inside, checked, above = 0, 0, True
-    for kind, delta, meshes in passive_plan(quick):
-        low, high = passive_bracket(delta)
-        found = []
-        for n in meshes:
-            s = runs.summary(run_name(kind, delta, n, "-passive"))
-            k = results.collapse_load(s)
-            found.append(k)
-            above = above and (k is None or k > low)
-            extrapolated = (2 * found[1] - found[0]
-                            if len(found) == 2 and None not in found else None)
-            if extrapolated is not None:
-                checked += 1
-                inside += low <= extrapolated <= high
-            table.append(["%d/%d" % (delta, PHI), kind, "%d" % n, "default", s["outcome"],
-                          "%.4f" % k if k is not None else "-", "%.4f" % low, "%.4f" % high,
-                          "%.4f" % extrapolated if extrapolated is not None else "",
-                          ("yes" if low <= extrapolated <= high else "NO")
-                          if extrapolated is not None else "",
-                          "%.1f" % s["wall_seconds"]])
-    paper = runs.summary(run_name("interface", 20, 12, "-passive-paper"))
-    k = results.collapse_load(paper)
-    table.append(["20/30", "interface", "12", "paper's", paper["outcome"],
-                  "%.4f" % k if k is not None else
-                  "%.4f (last converged)" % results.number(paper["last_converged_load"]),
-                  "%.4f" % passive_bracket(20)[0], "%.4f" % passive_bracket(20)[1], "", "",
-                  "%.1f" % paper["wall_seconds"]])
+    inside, checked, above = extrapolations(runs, passive_plan(quick), passive_bracket,
+                                            "-passive", table)
     names = [n for n, _, _ in run_list(quick) if "-passive" in n]
     good = inside == checked and checked > 0 and above
     verdict_text = ("The extrapolation lies in the bracket in %d of %d cases%s; every "
