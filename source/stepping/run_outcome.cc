@@ -93,6 +93,24 @@ namespace thinlayer
                     run.plateau_load / (1 - std::max(0., run.plateau_rise))) +
              ")";
     }
+
+
+    /// Withdraw the plateau of a run under prescribed displacement with
+    /// accepted steps that drifted outside the yield surface: its load is
+    /// read off those states, which are not the elastic-plastic response.
+    void
+    refuse_if_drift(const ProgrammeResult &run, RunSummary &s)
+    {
+      if (run.steps_with_drift == 0 || !std::isfinite(s.collapse_load))
+        return;
+      s.collapse_load      = std::numeric_limits<double>::quiet_NaN();
+      const unsigned int n = run.steps_with_drift;
+      s.reason += "; no plateau is claimed: " + std::to_string(n) +
+                  (n == 1 ? " accepted step has" : " accepted steps have") +
+                  " stresses more than 10 TOL outside the yield surface, so "
+                  "the loads read off them are not the elastic-plastic "
+                  "response";
+    }
   } // namespace
 
 
@@ -144,6 +162,7 @@ namespace thinlayer
               "rise over a doubling of the displacement fell to the collapse "
               "resolution";
           }
+        refuse_if_drift(run, s);
         return;
       }
     s.outcome = "not converged";

@@ -22,6 +22,11 @@
 //    prescribed displacement the first plateau state's load is the
 //    collapse load of a completed run, whatever the programme's last step
 //    did; the knee is reported beside a collapse.
+// 5. Drift: under prescribed displacement a run with accepted steps
+//    outside the yield surface (steps_with_drift > 0; one is enough)
+//    claims no plateau, its load being read off those states, and says
+//    why; under load the collapse load is the applied load, which drift
+//    does not change, and stands.
 #include <thinlayer/stepping/run_outcome.h>
 
 #include <cmath>
@@ -205,6 +210,18 @@ main()
     expect(is(judge(false, run), "completed", 2.5),
            "under prescribed displacement: the first plateau state's load, "
            "though the last step still rose");
+
+    std::cout << "5. drift\n";
+    run.steps_with_drift = 1;
+    s                    = judge(false, run);
+    expect(is(s, "completed", none) &&
+             s.reason.find("no plateau is claimed: 1 accepted step") !=
+               std::string::npos,
+           "a plateau of a run with drift is no collapse load");
+    run.stopped            = true;
+    run.stopped_on_plateau = true;
+    expect(is(judge(true, run), "collapse", 2.5),
+           "under load, the collapse at the applied load stands");
   }
   return truths::conclude();
 }

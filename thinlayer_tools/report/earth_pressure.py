@@ -123,7 +123,8 @@ def rankine_section(runs, quick):
            "and its viscoplastic strain increments overshoot the cohesionless apex: its "
            "iterations stop with every point inside the yield surface, in states that are "
            "not the elastic-plastic response (the active force rises as the wall moves "
-           "away); thinlayer flags the later ones as drift, the earlier ones not." % (
+           "away); thinlayer flags the later ones as drift, the earlier ones not, and claims "
+           "no plateau for a run with drift." % (
                SCENE, 100 * WITHIN, 100 * WITHIN,
                "It does." if good else "It does NOT.", paper_text))
     return Section(

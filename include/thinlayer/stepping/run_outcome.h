@@ -157,7 +157,12 @@ namespace thinlayer
    * collapse load where there is one; @p under_load: whether the scene
    * applies tractions or pressures (Analysis::has_external_load()), else
    * it is driven by prescribed displacements, where a failed step is no
-   * collapse and the load may reach a plateau.
+   * collapse and the load may reach a plateau. There a run with accepted
+   * steps that drifted outside the yield surface (ProgrammeResult::
+   * steps_with_drift) claims no plateau: its load is read off states that
+   * are not the elastic-plastic response. Under load the collapse load is
+   * the applied load of the last converged step, which the drift does not
+   * change; the drift is reported beside it.
    */
   void
   judge_outcome(const bool             under_load,
