@@ -265,63 +265,36 @@ namespace thinlayer
 
 
   // The class is instantiated in interface_elements.cc; these are the
-  // members defined here.
-  template void
-  InterfaceElements<2>::reinit(
-    const std::vector<FacingSides<2>> &,
-    const DoFHandler<2> &,
-    const Mapping<2> &,
-    const Kinematics &,
-    const std::map<types::boundary_id, InterfaceElementParameters> &,
-    const std::map<types::material_id, MaterialParameters> &,
-    const CellPartition &,
-    const std::string &);
-  template void
-  InterfaceElements<2>::reduce_strength(const StrengthReductionParameters &,
-                                        const double);
-  template InterfaceElements<2>::InitialTractions
-  InterfaceElements<2>::set_initial_tractions(
-    const std::function<SymmetricTensor<2, 3>(const dealii::Point<2> &,
-                                              types::material_id)> &);
-  template void
-  InterfaceElements<2>::check_stiffness(
-    const FacingSides<2> &,
-    const InterfaceElementParameters &,
-    const std::map<types::material_id, MaterialParameters> &,
-    const std::string &);
-  template void
-  InterfaceElements<2>::add_element(const FacingSides<2> &,
-                                    const InterfaceElementParameters &,
-                                    const bool,
-                                    const DoFHandler<2> &,
-                                    const Mapping<2> &);
-  template void
-  InterfaceElements<3>::reinit(
-    const std::vector<FacingSides<3>> &,
-    const DoFHandler<3> &,
-    const Mapping<3> &,
-    const Kinematics &,
-    const std::map<types::boundary_id, InterfaceElementParameters> &,
-    const std::map<types::material_id, MaterialParameters> &,
-    const CellPartition &,
-    const std::string &);
-  template void
-  InterfaceElements<3>::reduce_strength(const StrengthReductionParameters &,
-                                        const double);
-  template InterfaceElements<3>::InitialTractions
-  InterfaceElements<3>::set_initial_tractions(
-    const std::function<SymmetricTensor<2, 3>(const dealii::Point<3> &,
-                                              types::material_id)> &);
-  template void
-  InterfaceElements<3>::check_stiffness(
-    const FacingSides<3> &,
-    const InterfaceElementParameters &,
-    const std::map<types::material_id, MaterialParameters> &,
-    const std::string &);
-  template void
-  InterfaceElements<3>::add_element(const FacingSides<3> &,
-                                    const InterfaceElementParameters &,
-                                    const bool,
-                                    const DoFHandler<3> &,
-                                    const Mapping<3> &);
+  // members defined here, for each dimension.
+#define THINLAYER_INSTANTIATE_SETUP(d)                                  \
+  template void InterfaceElements<d>::reinit(                           \
+    const std::vector<FacingSides<d>> &,                                \
+    const DoFHandler<d> &,                                              \
+    const Mapping<d> &,                                                 \
+    const Kinematics &,                                                 \
+    const std::map<types::boundary_id, InterfaceElementParameters> &,   \
+    const std::map<types::material_id, MaterialParameters> &,           \
+    const CellPartition &,                                              \
+    const std::string &);                                               \
+  template void InterfaceElements<d>::reduce_strength(                  \
+    const StrengthReductionParameters &, const double);                 \
+  template InterfaceElements<d>::InitialTractions                       \
+  InterfaceElements<d>::set_initial_tractions(                          \
+    const std::function<SymmetricTensor<2, 3>(const dealii::Point<d> &, \
+                                              types::material_id)> &);  \
+  template void InterfaceElements<d>::check_stiffness(                  \
+    const FacingSides<d> &,                                             \
+    const InterfaceElementParameters &,                                 \
+    const std::map<types::material_id, MaterialParameters> &,           \
+    const std::string &);                                               \
+  template void InterfaceElements<d>::add_element(                      \
+    const FacingSides<d> &,                                             \
+    const InterfaceElementParameters &,                                 \
+    const bool,                                                         \
+    const DoFHandler<d> &,                                              \
+    const Mapping<d> &);
+
+  THINLAYER_INSTANTIATE_SETUP(2)
+  THINLAYER_INSTANTIATE_SETUP(3)
+#undef THINLAYER_INSTANTIATE_SETUP
 } // namespace thinlayer
