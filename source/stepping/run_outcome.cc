@@ -152,15 +152,35 @@ namespace thinlayer
                    plateau_stiffness_ratio * std::abs(run.first_stiffness))
           {
             // Levelled off less sharply than the resolution asks: the
-            // load at the end of the programme.
-            s.collapse_load = run.last_converged_load;
-            s.reason +=
-              "; the load levelled off by the end (its last "
-              "step's stiffness below " +
-              printf("%g", plateau_stiffness_ratio) +
-              " of the first step's), though no state's load "
-              "rise over a doubling of the displacement fell to the collapse "
-              "resolution";
+            // load at the end of the programme, if it has stopped rising.
+            const double      rise = run.curve.empty()
+                                       ? std::numeric_limits<double>::quiet_NaN()
+                                       : plateau_rise(run.curve,
+                                                 run.curve.back().displacement,
+                                                 run.curve.back().load);
+            const std::string stiffness =
+              "its last step's stiffness below " +
+              printf("%g", plateau_stiffness_ratio) + " of the first step's";
+            if (std::abs(rise) <= plateau_fallback_rise)
+              {
+                s.collapse_load = run.last_converged_load;
+                s.reason += "; the load levelled off by the end (" + stiffness +
+                            ", and it rose " + printf("%+.3f", 100 * rise) +
+                            "% over the last doubling of the displacement), "
+                            "though no state's load rise over a doubling of "
+                            "the displacement fell to the collapse "
+                            "resolution";
+              }
+            else
+              s.reason += "; no plateau is claimed: " + stiffness +
+                          ", but the load " +
+                          (std::isfinite(rise)
+                             ? "rose " + printf("%+.3f", 100 * rise) +
+                                 "% over the last doubling of the "
+                                 "displacement, more than " +
+                                 printf("%g", 100 * plateau_fallback_rise) + "%"
+                             : "has no state at half the last displacement "
+                               "to tell whether it still rises");
           }
         refuse_if_drift(run, s);
         return;

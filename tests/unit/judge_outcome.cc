@@ -5,7 +5,9 @@
 // 2. A programme that ran through is "completed"; under prescribed
 //    displacement its last load is a plateau (a collapse load) when the
 //    last step's stiffness is at most plateau_stiffness_ratio of the
-//    first's, and not at twice that.
+//    first's (not at twice that) and the load rose by at most
+//    plateau_fallback_rise over the last doubling of the displacement (not
+//    by twice that, nor where no state lies at half the displacement).
 // 3. A failed step is a collapse only under load, with a finite state,
 //    after a converged step (or a resolved bracket), and with a mechanism
 //    as evidence: secant stiffness below mechanism_stiffness_ratio (not at
@@ -103,10 +105,22 @@ main()
     run.last_converged_load = 3.0;
     run.first_stiffness     = 100;
     run.last_stiffness      = plateau_stiffness_ratio * 100;
+    run.curve = {{1, 3.0 / (1 + 0.99 * plateau_fallback_rise)}, {2, 3.0}};
     expect(is(judge(true, run), "completed", none), "under load: completed");
     expect(is(judge(false, run), "completed", 3.0),
-           "displacement-driven, last stiffness at the plateau ratio: the "
+           "displacement-driven, last stiffness at the plateau ratio and "
+           "the rise over the last doubling just below the fallback's: the "
            "plateau 3 is the collapse load");
+    run.curve = {{1, 3.0 / (1 + 2 * plateau_fallback_rise)}, {2, 3.0}};
+    const RunSummary rising = judge(false, run);
+    expect(is(rising, "completed", none) &&
+             rising.reason.find("no plateau is claimed") != std::string::npos,
+           "the load rising by twice the fallback's rise: no plateau, and "
+           "the reason says so");
+    run.curve = {{1.5, 2.9}, {2, 3.0}};
+    expect(is(judge(false, run), "completed", none),
+           "no state at half the displacement: no plateau");
+    run.curve          = {{1, 3.0}, {2, 3.0}};
     run.last_stiffness = 2 * plateau_stiffness_ratio * 100;
     expect(is(judge(false, run), "completed", none),
            "at twice the ratio: no plateau");
