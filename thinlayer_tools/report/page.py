@@ -10,6 +10,10 @@ VERDICTS = {
     "agrees": ("agrees with the closed form", "#2e7d32"),
     "disagrees": ("disagrees with the closed form", "#c62828"),
     "beyond": ("beyond the paper", "#1565c0"),
+    # A displacement criterion against published ultimate loads that are
+    # estimates, not closed forms (a laterally loaded pile).
+    "mobilises": ("passes the published values", "#2e7d32"),
+    "short": ("short of the published values", "#c62828"),
     "not run": ("not run in --quick", "#757575"),
 }
 
