@@ -12,29 +12,65 @@ namespace thinlayer
 {
   namespace
   {
-    /// The points along a straight side of a curve.
+    /**
+     * The points along the plus cell's side of a pair on a curve, through
+     * the mapping: on a side that follows a circle (attach_arcs()) they lie
+     * on the circle, and each point's frame turns with the side's tangent
+     * there; on a straight side they lie on its chord, as before.
+     */
     std::vector<InterfacePointPlace<2>>
     points_on_side(const FacingSides<2> &pair,
                    const Quadrature<1>  &rule,
+                   const Mapping<2>     &mapping,
                    const Kinematics     &kinematics)
     {
+      // The plus cell's face f: unit coordinate d = f / 2 fixed at f % 2,
+      // the other one running along the side.
+      const unsigned int f      = pair.plus_face;
+      const unsigned int d      = f / 2;
+      const unsigned int along  = 1 - d;
+      const double       across = f % 2;
+      const auto         unit   = [&](const double s) {
+        Point<2> p;
+        p[along] = s;
+        p[d]     = across;
+        return p;
+      };
+      const typename Triangulation<2>::cell_iterator cell(pair.plus_cell);
+      // Whether the side runs from the pair's entry at unit 0.
+      const Point<2> at_zero =
+        mapping.transform_unit_to_real_cell(cell, unit(0));
+      const bool forward =
+        at_zero.distance(pair.entry) <= at_zero.distance(pair.exit);
+
+      std::vector<Point<2>> units;
+      for (unsigned int q = 0; q < rule.size(); ++q)
+        units.push_back(
+          unit(forward ? rule.point(q)[0] : 1 - rule.point(q)[0]));
+      const FE_Q<2> linear(1);
+      FEValues<2>   values(mapping,
+                         linear,
+                         Quadrature<2>(units),
+                         update_quadrature_points | update_jacobians);
+      values.reinit(cell);
+
+      const double chord = (pair.exit - pair.entry).norm();
       std::vector<InterfacePointPlace<2>> places;
-      // A straight side: the points along its chord.
-      const Tensor<1, 2> chord   = pair.exit - pair.entry;
-      const double       length  = chord.norm();
-      const Tensor<1, 2> tangent = chord / length;
-      const Tensor<2, 3> frame({{tangent[0], tangent[1], 0.},
-                                {-tangent[1], tangent[0], 0.},
-                                {0., 0., 1.}});
       for (unsigned int q = 0; q < rule.size(); ++q)
         {
+          const DerivativeForm<1, 2, 2> &J = values.jacobian(q);
+          Tensor<1, 2>                   tangent({J[0][along], J[1][along]});
+          const double                   stretch = tangent.norm();
+          tangent /= forward ? stretch : -stretch;
           InterfacePointPlace<2> place;
-          place.position = pair.entry + rule.point(q)[0] * chord;
-          place.frame    = frame;
+          place.position = values.quadrature_point(q);
+          place.frame    = Tensor<2, 3>({{tangent[0], tangent[1], 0.},
+                                         {-tangent[1], tangent[0], 0.},
+                                         {0., 0., 1.}});
           place.weight =
-            rule.weight(q) * length * kinematics.area_factor(place.position);
-          place.arc_length   = pair.arc_length + rule.point(q)[0] * length;
-          place.unit_plus[0] = std::numeric_limits<double>::quiet_NaN();
+            rule.weight(q) * stretch * kinematics.area_factor(place.position);
+          place.arc_length = pair.arc_length + rule.point(q)[0] * chord;
+          place.unit_plus  = units[q];
           places.push_back(place);
         }
       return places;
@@ -131,10 +167,7 @@ namespace thinlayer
         ? Quadrature<1>(QGaussLobatto<1>(3))
         : Quadrature<1>(QGauss<1>(curve.points));
     if constexpr (dim == 2)
-      {
-        (void)mapping;
-        return points_on_side(pair, rule, kinematics);
-      }
+      return points_on_side(pair, rule, mapping, kinematics);
     else
       {
         (void)kinematics;

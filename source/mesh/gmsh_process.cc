@@ -133,75 +133,104 @@ namespace thinlayer
   } // namespace
 
 
+  namespace
+  {
+    /**
+     * Run gmsh on @p job with @p options before the parameters and
+     * "-o @p output", as run_gmsh() describes, and return what it wrote
+     * there.
+     */
+    std::string
+    run_gmsh_to(const GmshJob                  &job,
+                const std::vector<std::string> &options,
+                const std::string              &output,
+                std::ostream                   &progress)
+    {
+      const TemporaryDirectory directory;
+      const std::string        out_file = directory.path + "/" + output;
+      const std::string        log_file = directory.path + "/gmsh.log";
+
+      std::vector<std::string> arguments = {THINLAYER_GMSH_EXECUTABLE};
+      arguments.insert(arguments.end(), options.begin(), options.end());
+      for (const auto &[name, value] : job.parameters)
+        {
+          std::ostringstream text;
+          text.precision(17);
+          text << value;
+          arguments.insert(arguments.end(), {"-setnumber", name, text.str()});
+        }
+      arguments.insert(arguments.end(), {"-o", out_file, job.geometry});
+
+      const std::size_t budget =
+        (100u << 20) + std::size_t(job.max_cells) * 1024;
+      const auto   start       = std::chrono::steady_clock::now();
+      auto         next_report = start + std::chrono::seconds(5);
+      ChildProcess gmsh(arguments, log_file);
+      int          status;
+      while ((status = gmsh.poll()) < 0)
+        {
+          if (local_interruption_signal() != 0)
+            {
+              gmsh.kill_and_reap();
+              throw Interrupted("while gmsh was meshing " + job.geometry);
+            }
+          if (gmsh.resident_bytes() > budget)
+            {
+              gmsh.kill_and_reap();
+              throw InputError(
+                job.parameter_file,
+                "Mesh/Geometry parameters",
+                "gmsh used more than " + std::to_string(budget >> 20) +
+                  " MB meshing " + job.geometry +
+                  " and was stopped: these parameters ask for far more than "
+                  "Mesh/Maximum cells = " +
+                  std::to_string(job.max_cells) +
+                  " cells; check them, or raise that limit");
+            }
+          const auto now = std::chrono::steady_clock::now();
+          if (now >= next_report)
+            {
+              progress << "  meshing: gmsh has run for "
+                       << std::chrono::duration_cast<std::chrono::seconds>(
+                            now - start)
+                            .count()
+                       << " s, " << (gmsh.resident_bytes() >> 20) << " MB"
+                       << std::endl;
+              next_report += std::chrono::seconds(5);
+            }
+          std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        }
+
+      const std::string errors = errors_in(log_file);
+      if (status != 0 || !errors.empty())
+        throw InputError(job.geometry,
+                         "",
+                         "gmsh could not mesh this geometry:" +
+                           (errors.empty() ? std::string(" exit status ") +
+                                               std::to_string(status)
+                                           : errors));
+      return read_file(out_file);
+    }
+  } // namespace
+
+
   std::string
   run_gmsh(const GmshJob &job, std::ostream &progress)
   {
-    const TemporaryDirectory directory;
-    const std::string        msh_file = directory.path + "/mesh.msh";
-    const std::string        log_file = directory.path + "/gmsh.log";
+    return run_gmsh_to(
+      job,
+      {job.dimension == 3 ? "-3" : "-2", "-format", "msh22", "-nt", "1"},
+      "mesh.msh",
+      progress);
+  }
 
-    std::vector<std::string> arguments = {THINLAYER_GMSH_EXECUTABLE,
-                                          job.dimension == 3 ? "-3" : "-2",
-                                          "-format",
-                                          "msh22",
-                                          "-nt",
-                                          "1"};
-    for (const auto &[name, value] : job.parameters)
-      {
-        std::ostringstream text;
-        text.precision(17);
-        text << value;
-        arguments.insert(arguments.end(), {"-setnumber", name, text.str()});
-      }
-    arguments.insert(arguments.end(), {"-o", msh_file, job.geometry});
 
-    const std::size_t budget = (100u << 20) + std::size_t(job.max_cells) * 1024;
-    const auto        start  = std::chrono::steady_clock::now();
-    auto              next_report = start + std::chrono::seconds(5);
-    ChildProcess      gmsh(arguments, log_file);
-    int               status;
-    while ((status = gmsh.poll()) < 0)
-      {
-        if (local_interruption_signal() != 0)
-          {
-            gmsh.kill_and_reap();
-            throw Interrupted("while gmsh was meshing " + job.geometry);
-          }
-        if (gmsh.resident_bytes() > budget)
-          {
-            gmsh.kill_and_reap();
-            throw InputError(
-              job.parameter_file,
-              "Mesh/Geometry parameters",
-              "gmsh used more than " + std::to_string(budget >> 20) +
-                " MB meshing " + job.geometry +
-                " and was stopped: these parameters ask for far more than "
-                "Mesh/Maximum cells = " +
-                std::to_string(job.max_cells) +
-                " cells; check them, or raise that limit");
-          }
-        const auto now = std::chrono::steady_clock::now();
-        if (now >= next_report)
-          {
-            progress << "  meshing: gmsh has run for "
-                     << std::chrono::duration_cast<std::chrono::seconds>(now -
-                                                                         start)
-                          .count()
-                     << " s, " << (gmsh.resident_bytes() >> 20) << " MB"
-                     << std::endl;
-            next_report += std::chrono::seconds(5);
-          }
-        std::this_thread::sleep_for(std::chrono::milliseconds(20));
-      }
-
-    const std::string errors = errors_in(log_file);
-    if (status != 0 || !errors.empty())
-      throw InputError(job.geometry,
-                       "",
-                       "gmsh could not mesh this geometry:" +
-                         (errors.empty() ? std::string(" exit status ") +
-                                             std::to_string(status)
-                                         : errors));
-    return read_file(msh_file);
+  std::string
+  unrolled_geometry(const GmshJob &job, std::ostream &progress)
+  {
+    return run_gmsh_to(job,
+                       {"-0", "-nt", "1"},
+                       "geometry.geo_unrolled",
+                       progress);
   }
 } // namespace thinlayer

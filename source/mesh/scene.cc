@@ -1,5 +1,6 @@
 #include <thinlayer/base/file_utilities.h>
 #include <thinlayer/base/input_error.h>
+#include <thinlayer/mesh/curved_geometry.h>
 #include <thinlayer/mesh/gmsh_process.h>
 #include <thinlayer/mesh/mesh_splitting.h>
 #include <thinlayer/mesh/msh_file.h>
@@ -70,6 +71,16 @@ namespace thinlayer
       return false;
     }
 
+    GmshJob
+    gmsh_job(const Parameters &p)
+    {
+      return {p.mesh.file,
+              p.mesh.geometry_parameters,
+              p.mesh.max_cells,
+              p.parameter_file,
+              p.kinematics.dimension};
+    }
+
     /**
      * Mesh a .geo with the gmsh program, setting its DefineConstant[]
      * parameters with -setnumber. Returns the mesh in gmsh's 2.2 format.
@@ -85,12 +96,7 @@ namespace thinlayer
                            "'" + name + "' is not a parameter of " +
                              p.mesh.file);
 
-      return run_gmsh({p.mesh.file,
-                       p.mesh.geometry_parameters,
-                       p.mesh.max_cells,
-                       p.parameter_file,
-                       p.kinematics.dimension},
-                      progress);
+      return run_gmsh(gmsh_job(p), progress);
     }
 
     /**
@@ -309,6 +315,18 @@ namespace thinlayer
                          "limit");
     check_cell_shapes(tria, p.mesh.file);
     check_ids(p, tria);
+
+    if (extension == ".geo" && p.mesh.curved_cells)
+      {
+        const std::vector<GeometryArc> arcs   = arcs_of_geometry(mpi::on_root(
+          [&]() { return unrolled_geometry(gmsh_job(p), progress); }));
+        const unsigned int             curved = attach_arcs(tria, arcs);
+        if (curved > 0)
+          progress << "  curved " << curved << " cell "
+                   << (dim == 2 ? "sides" : "faces") << " along " << arcs.size()
+                   << " circular arc" << (arcs.size() == 1 ? "" : "s")
+                   << " of the geometry" << std::endl;
+      }
   }
 
 

@@ -21,6 +21,11 @@ namespace thinlayer
       std::make_unique<parallel::fullydistributed::Triangulation<dim>>(
         mpi::communicator());
     tria->create_triangulation(description);
+    // The description carries the manifold ids of the cells and faces, not
+    // the manifolds: the curved sides stay curved on every rank.
+    for (const types::manifold_id id : serial.get_manifold_ids())
+      if (id != numbers::flat_manifold_id)
+        tria->set_manifold(id, serial.get_manifold(id));
     return tria;
   }
 

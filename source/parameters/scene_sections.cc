@@ -121,6 +121,17 @@ namespace thinlayer
                       "once its memory shows it making far more (a "
                       "mistyped geometry parameter), and a larger mesh is "
                       "refused.");
+    prm.declare_entry(
+      "Curved cells",
+      "true",
+      Patterns::Bool(),
+      "true: the cell sides a .geo's circles and arcs run along (its "
+      "Circle(n) = {start, centre, end} curves, boundaries and curves "
+      "inside the body alike, in 3D the cylinders an extruded arc sweeps) "
+      "follow the circle, through the quadratic mapping, so that a body "
+      "slides on the circle, not on the polygon of its nodes. false: every "
+      "cell keeps straight sides, as does a .msh file always (it carries "
+      "no geometry).");
     prm.leave_subsection();
   }
 
@@ -139,7 +150,8 @@ namespace thinlayer
       (mesh.front() == '/') ? mesh : directory_of(parameter_file) + "/" + mesh;
     geometry_parameters =
       parse_geometry_parameters(prm.get("Geometry parameters"), parameter_file);
-    max_cells = prm.get_integer("Maximum cells");
+    max_cells    = prm.get_integer("Maximum cells");
+    curved_cells = prm.get_bool("Curved cells");
     prm.leave_subsection();
   }
 

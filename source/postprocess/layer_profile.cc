@@ -168,15 +168,21 @@ namespace thinlayer
     const bool         forward = (entry_face % 2 == 0);
     const Point<2>     entry   = mid(forward ? 0. : 1.);
     const Tensor<1, 2> chord   = mid(forward ? 1. : 0.) - entry;
-    const Tensor<1, 2> tangent = chord / chord.norm();
-    const Tensor<1, 2> normal({-tangent[1], tangent[0]});
+    // The layer's tangent at a point of its midline, along the run: on a
+    // layer that follows a circle (attach_arcs()) it turns along the cell.
+    const auto tangent_at = [&](const double along) {
+      const double       h = 1e-6;
+      const Tensor<1, 2> t = mid(along + h) - mid(along - h);
+      return (forward ? 1. : -1.) * t / t.norm();
+    };
     // Which unit face lies on the +n side.
+    const Tensor<1, 2> chord_normal({-chord[1], chord[0]});
     const Tensor<1, 2> across =
       mapping.transform_unit_to_real_cell(cell,
                                           unit_point(long_direction, 0.5, 1.)) -
       mapping.transform_unit_to_real_cell(cell,
                                           unit_point(long_direction, 0.5, 0.));
-    const double plus_face = (across * normal > 0) ? 1. : 0.;
+    const double plus_face = (across * chord_normal > 0) ? 1. : 0.;
 
     const unsigned int n_1d = static_cast<unsigned int>(
       std::lround(std::sqrt(analysis.n_quadrature_points())));
@@ -189,7 +195,9 @@ namespace thinlayer
       std::reverse(abscissae.begin(), abscissae.end());
     for (const double along : abscissae)
       {
-        LayerSample<2> sample;
+        const Tensor<1, 2> tangent = tangent_at(along);
+        const Tensor<1, 2> normal({-tangent[1], tangent[0]});
+        LayerSample<2>     sample;
         sample.cell       = cell;
         sample.t1         = Tensor<1, 3>({tangent[0], tangent[1], 0});
         sample.n          = Tensor<1, 3>({normal[0], normal[1], 0});

@@ -33,8 +33,7 @@ namespace thinlayer
     /// On a surface: the patch of the face the point stands for (its
     /// weight's share), for the profile's VTU.
     std::array<Point<3>, 4> patch;
-    /// The point in the plus cell's unit cell (NaN where it is found from
-    /// @p position, as along a curve).
+    /// The point in the plus cell's unit cell.
     Point<dim> unit_plus;
   };
 
@@ -43,8 +42,10 @@ namespace thinlayer
    * The integration points of an interface element, the facing sides
    * @p pair, by the rule of @p curve (Gauss or Lobatto, per direction of a
    * face):
-   * - on a curve, along the side's chord (a curve's sides are straight), the
-   *   frame the chord's tangent and its quarter turn anticlockwise;
+   * - on a curve, along the plus cell's side as @p mapping maps it (on a
+   *   circle where the side follows one, attach_arcs(); else its chord),
+   *   the frame the side's tangent there and its quarter turn
+   *   anticlockwise, the weight the side's length element;
    * - on a surface, over the plus cell's face as @p mapping maps it: at each
    *   point the normal n pointing away from the plus cell (upward by
    *   pair_facing_sides()), t1 = first_tangent(n), t2 = t1 x n, the weight

@@ -43,6 +43,14 @@ namespace thinlayer
    */
   std::string
   run_gmsh(const GmshJob &job, std::ostream &progress);
+
+  /**
+   * The geometry of @p job as gmsh unrolls it (gmsh -0: every entity with
+   * its points' coordinates evaluated, the parameters set), run as
+   * run_gmsh() runs gmsh; arcs_of_geometry() reads its circles.
+   */
+  std::string
+  unrolled_geometry(const GmshJob &job, std::ostream &progress);
 } // namespace thinlayer
 
 #endif

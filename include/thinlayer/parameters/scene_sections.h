@@ -30,6 +30,9 @@ namespace thinlayer
     /// The most cells a scene may have (a mistyped geometry parameter
     /// otherwise meshes until the machine runs out of memory).
     unsigned int max_cells;
+    /// Whether the cells along the circles and arcs of a .geo follow them
+    /// (attach_arcs()), or keep straight sides (the polygon gmsh meshes).
+    bool curved_cells;
 
     static void
     declare(ParameterHandler &prm);

@@ -1,0 +1,127 @@
+// Truth checked: Lame's thick cylinder from a gmsh geometry with circles.
+// meshes/circular-inclusion.geo gives the half annulus 1 <= r <= 2 (its
+// thin inner ring 1 <= r <= 1.02, one cell across, and the rest both
+// elastic, E = 1, nu = 0.3),
+// pressure p = 1 inside, the outer circle held, y = 0 a line of symmetry.
+// In plane strain u_r = A r + B / r with u_r(2) = 0 and sigma_rr(1) = -p:
+//   B = p / (2 (lambda + mu) / b^2 + 2 mu / a^2), A = -B / b^2.
+// On the meshes with n = 2, 4, 8 cells along each quarter circle (and n
+// across the rest) the L2
+// error of the displacement must fall as the element's where the cells
+// follow the circles (Mesh/Curved cells = true: order 3, asked at least
+// 2.5 between the two finer meshes), and stays at the polygon's where they
+// do not (order 2 at best): on the finest mesh the curved cells' error is
+// asked to be below a tenth of the straight ones'. Release only: six
+// solves.
+#include <deal.II/base/function.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <thinlayer/analysis/analysis.h>
+#include <thinlayer/mesh/scene.h>
+#include <thinlayer/parameters/parameters.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "../common/scene_test_utilities.h"
+
+using namespace dealii;
+
+namespace
+{
+  const double a = 1, b = 2, pressure = 1, E = 1, nu = 0.3;
+  const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
+  const double mu     = E / (2 * (1 + nu));
+  const double B = pressure / (2 * (lambda + mu) / (b * b) + 2 * mu / (a * a));
+  const double A = -B / (b * b);
+
+  class Lame : public Function<2>
+  {
+  public:
+    Lame()
+      : Function<2>(2)
+    {}
+    void
+    vector_value(const Point<2> &x, Vector<double> &u) const override
+    {
+      const double r = x.norm();
+      u[0]           = (A * r + B / r) * x[0] / r;
+      u[1]           = (A * r + B / r) * x[1] / r;
+    }
+  };
+
+
+  /// The L2 error of the displacement on @p n cells per quarter circle.
+  double
+  error(const unsigned int n, const bool curved)
+  {
+    const std::string prm =
+      "subsection Mesh\n"
+      "  set File = " SOURCE_DIR "/../../meshes/circular-inclusion.geo\n"
+      "  set Geometry parameters = radius=1, thickness=0.02, outer=2, "
+      "n_around=" +
+      std::to_string(n) + ", n_radial=" + std::to_string(n) +
+      ", growth=1\n"
+      "  set Curved cells = " +
+      (curved ? "true" : "false") +
+      "\n"
+      "end\n"
+      "subsection Material 1\n"
+      "  set Young's modulus = 1\n  set Poisson's ratio = 0.3\n"
+      "end\n"
+      "subsection Material 2\n"
+      "  set Young's modulus = 1\n  set Poisson's ratio = 0.3\n"
+      "end\n"
+      "subsection Boundary 1\n  set Pressure = 1\nend\n"
+      "subsection Boundary 2\n  set Constrained components = y\nend\n"
+      "subsection Boundary 3\n  set Constrained components = x, y\nend\n"
+      "subsection Monitors\n  set Displacement boundary id = 1\nend\n";
+    double result = 0;
+    thinlayer_tests::with_solved_step(
+      prm,
+      "cylinder.prm",
+      [&](const thinlayer::Analysis<2> &analysis,
+          const thinlayer::Parameters &) {
+        const auto    &tria = analysis.get_dof_handler().get_triangulation();
+        Vector<double> errors(tria.n_active_cells());
+        VectorTools::integrate_difference(analysis.get_mapping(),
+                                          analysis.get_dof_handler(),
+                                          analysis.get_solution(),
+                                          Lame(),
+                                          errors,
+                                          QGauss<2>(5),
+                                          VectorTools::L2_norm);
+        result =
+          VectorTools::compute_global_error(tria, errors, VectorTools::L2_norm);
+      });
+    return result;
+  }
+} // namespace
+
+
+int
+main()
+{
+  std::vector<double> curved, straight;
+  for (const unsigned int n : {2u, 4u, 8u})
+    {
+      curved.push_back(error(n, true));
+      straight.push_back(error(n, false));
+      std::printf("n = %u: L2 error curved %.2e, straight %.2e\n",
+                  n,
+                  curved.back(),
+                  straight.back());
+    }
+  const double curved_rate   = std::log2(curved[1] / curved[2]);
+  const double straight_rate = std::log2(straight[1] / straight[2]);
+  std::printf("rates between n = 4 and 8: curved %.2f (at least 2.5: %s), "
+              "straight %.2f; curved below a tenth of straight on n = 8: "
+              "%s\n",
+              curved_rate,
+              curved_rate >= 2.5 ? "yes" : "NO",
+              straight_rate,
+              curved[2] < 0.1 * straight[2] ? "yes" : "NO");
+}
