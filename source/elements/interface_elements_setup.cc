@@ -126,7 +126,10 @@ namespace thinlayer
         const double larger = std::max(sides[0].norm(), sides[1].norm());
         const double mismatch =
           larger > 0 ? (sides[0] - sides[1]).norm() / larger : 0.;
-        if (mismatch > found.mismatch)
+        // Along a straight interface in a linear at-rest state the ratios
+        // tie; a margin keeps the first point of the tie, whatever the
+        // round-off of the points' places.
+        if (mismatch > found.mismatch * (1 + 1e-9))
           {
             found.mismatch           = mismatch;
             found.mismatch_at        = point.position;
@@ -141,7 +144,7 @@ namespace thinlayer
             const double size = traction.norm();
             const double ratio =
               element.law->yield_function(traction) / (size > 0 ? size : 1.);
-            if (ratio > found.yield_ratio)
+            if (ratio > found.yield_ratio * (1 + 1e-9))
               {
                 found.yield_ratio = ratio;
                 found.yield_at    = point.position;
