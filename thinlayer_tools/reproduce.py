@@ -23,10 +23,10 @@ import sys
 import time
 
 from thinlayer_tools import THINLAYER, TOP, mpirun, run_module
-from thinlayer_tools.report import (bearing_capacity, case1, case4, earth_pressure, footings,
-                                    limits, methods, page, parallel, phases, pile, pile_lateral,
-                                    scaling, solid, speed, strength_reduction, wall_friction,
-                                    weight)
+from thinlayer_tools.report import (bearing_capacity, case1, case4, curved, earth_pressure,
+                                    footings, limits, methods, page, parallel, phases, pile,
+                                    pile_lateral, scaling, solid, speed, strength_reduction,
+                                    wall_friction, weight)
 from thinlayer_tools.report.runs import DEFAULT, PAPER, Runs
 
 ALL_ALPHAS = "alpha = 10, 20, 30, 40, 45, 50, 60, 70, 80"
@@ -94,6 +94,8 @@ def run_list(quick):
     runs += pile.run_list(quick)
     # A pile loaded laterally (harmonics 0-3).
     runs += pile_lateral.run_list(quick)
+    # Curved interfaces: a pile section sliding on a circle.
+    runs += curved.run_list(quick)
     # The same scenes on several MPI ranks (the fourth field), for the
     # section on ranks: every kinematics and element kind, each method kind.
     runs += parallel.ONE_RANK_RUNS
@@ -210,6 +212,7 @@ def sections(runs, quick):
             + bearing_capacity.sections(runs, quick)
             + phases.sections(runs, quick) + pile.sections(runs, quick)
             + pile_lateral.sections(runs, quick)
+            + curved.sections(runs, quick)
             + speed.sections(runs, quick)
             + parallel.sections(runs, quick) + scaling.sections(runs, quick)
             + solid.sections(runs, quick))
