@@ -1,0 +1,126 @@
+// Truth checked: curved cells under Fourier kinematics. The r-z plane of a
+// thick spherical shell a = 1 <= rho <= b = 2 (meshes/spherical-shell.geo,
+// its circles gmsh arcs), harmonic 0, elastic (E = 1, nu = 0.3), pressure
+// p = 1 inside, the outside held: u_rho = A rho + B / rho^2 with
+// u_rho(b) = 0 and sigma_rhorho(a) = -p,
+//   B = p / ((3 lambda + 2 mu) / b^3 + 4 mu / a^3), A = -B / b^3.
+// On n = 2, 4, 8 cells along each quarter circle (n across) the L2 error of
+// the displacement must fall as the element's where the cells follow the
+// circles (order at least 2.5 between the two finer meshes), and on n = 8
+// be below a tenth of the straight cells' (the polygon revolved: a
+// faceted sphere). Release only: six solves.
+#include <deal.II/base/function.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <thinlayer/analysis/analysis.h>
+#include <thinlayer/mesh/scene.h>
+#include <thinlayer/parameters/parameters.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "../common/scene_test_utilities.h"
+
+using namespace dealii;
+
+namespace
+{
+  const double a = 1, b = 2, pressure = 1, E = 1, nu = 0.3;
+  const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
+  const double mu     = E / (2 * (1 + nu));
+  const double B =
+    pressure / ((3 * lambda + 2 * mu) / (b * b * b) + 4 * mu / (a * a * a));
+  const double A = -B / (b * b * b);
+
+  /// The exact displacement in the components (r, z, theta).
+  class Lame : public Function<2>
+  {
+  public:
+    Lame()
+      : Function<2>(3)
+    {}
+    void
+    vector_value(const Point<2> &x, Vector<double> &u) const override
+    {
+      const double rho   = x.norm();
+      const double u_rho = A * rho + B / (rho * rho);
+      u[0]               = u_rho * x[0] / rho;
+      u[1]               = u_rho * x[1] / rho;
+      u[2]               = 0;
+    }
+  };
+
+
+  /// The L2 error of the displacement on @p n cells per quarter circle.
+  double
+  error(const unsigned int n, const bool curved)
+  {
+    const std::string prm =
+      "subsection Mesh\n"
+      "  set File = " SOURCE_DIR "/../../meshes/spherical-shell.geo\n"
+      "  set Geometry parameters = inner=1, outer=2, n_around=" +
+      std::to_string(n) + ", n_radial=" + std::to_string(n) +
+      "\n"
+      "  set Curved cells = " +
+      (curved ? "true" : "false") +
+      "\n"
+      "end\n"
+      "subsection Kinematics\n"
+      "  set Type = fourier\n  set Harmonics = 0\n  set Stations = 0\n"
+      "  set Axis boundary id = 3\n"
+      "end\n"
+      "subsection Material 1\n"
+      "  set Young's modulus = 1\n  set Poisson's ratio = 0.3\n"
+      "end\n"
+      "subsection Boundary 1\n  set Pressure = 1\nend\n"
+      "subsection Boundary 2\n  set Constrained components = r, z\nend\n"
+      "subsection Monitors\n  set Displacement boundary id = 1\nend\n";
+    double result = 0;
+    thinlayer_tests::with_solved_step(
+      prm,
+      "sphere.prm",
+      [&](const thinlayer::Analysis<2> &analysis,
+          const thinlayer::Parameters &) {
+        const auto    &tria = analysis.get_dof_handler().get_triangulation();
+        Vector<double> errors(tria.n_active_cells());
+        VectorTools::integrate_difference(analysis.get_mapping(),
+                                          analysis.get_dof_handler(),
+                                          analysis.get_solution(0),
+                                          Lame(),
+                                          errors,
+                                          QGauss<2>(5),
+                                          VectorTools::L2_norm);
+        result =
+          VectorTools::compute_global_error(tria, errors, VectorTools::L2_norm);
+      });
+    return result;
+  }
+} // namespace
+
+
+int
+main()
+{
+  std::vector<double> curved, straight;
+  for (const unsigned int n : {2u, 4u, 8u})
+    {
+      curved.push_back(error(n, true));
+      straight.push_back(error(n, false));
+      std::printf("n = %u: L2 error curved %.2e, straight %.2e\n",
+                  n,
+                  curved.back(),
+                  straight.back());
+    }
+  const double curved_rate   = std::log2(curved[1] / curved[2]);
+  const double straight_rate = std::log2(straight[1] / straight[2]);
+  std::printf("rates between n = 4 and 8: curved %.2f (at least 2.5: %s), "
+              "straight %.2f; curved below a tenth of straight on n = 8: "
+              "%s\n",
+              curved_rate,
+              curved_rate >= 2.5 ? "yes" : "NO",
+              straight_rate,
+              curved[2] < 0.1 * straight[2] ? "yes" : "NO");
+}
