@@ -7,9 +7,11 @@
 #include <thinlayer/app/command_line.h>
 #include <thinlayer/parallel/mpi.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -151,6 +153,22 @@ namespace run_results
       }
     return rows;
   }
+
+  /// The newest of the files @p directory/@p prefix*.csv (the last step's
+  /// profile), its name; empty where there is none.
+  inline std::string
+  newest_csv(const std::string &directory, const std::string &prefix)
+  {
+    std::string last;
+    for (const auto &entry : std::filesystem::directory_iterator(directory))
+      {
+        const std::string name = entry.path().filename().string();
+        if (name.rfind(prefix, 0) == 0 && entry.path().extension() == ".csv")
+          last = std::max(last, name);
+      }
+    return last.empty() ? last : directory + "/" + last;
+  }
+
 } // namespace run_results
 
 #endif

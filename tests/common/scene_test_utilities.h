@@ -5,12 +5,15 @@
 // text of a parameter file, set up and solved in one step to load factor 1;
 // and the elastic cylinder the Fourier tests use.
 
+#include <deal.II/base/symmetric_tensor.h>
+
 #include <thinlayer/analysis/analysis.h>
 #include <thinlayer/mesh/scene.h>
 #include <thinlayer/parameters/parameter_reader.h>
 #include <thinlayer/parameters/parameters.h>
 #include <thinlayer/stepping/step_solver.h>
 
+#include <algorithm>
 #include <iostream>
 #include <string>
 
@@ -21,6 +24,44 @@ namespace thinlayer_tests
    * analysis, solve one step to load factor 1, accept it, and hand the
    * analysis and its parameters to @p inspect while they live.
    */
+  /**
+   * The patch tests' field u = 1e-3 (x + 0.5 y, 0.3 x - 0.2 y) (eps_xx =
+   * 1e-3, eps_yy = -2e-4, eps_xy = 4e-4) in plane strain on a material of
+   * E = 1000, nu = 0.25: its stress, from Lame's constants, independently
+   * of the code's elasticity tensor.
+   */
+  inline dealii::SymmetricTensor<2, 3>
+  patch_stress()
+  {
+    const double                  E = 1000, nu = 0.25;
+    const double                  lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
+    const double                  mu     = E / (2 * (1 + nu));
+    const double                  exx = 1e-3, eyy = -2e-4, exy = 4e-4;
+    dealii::SymmetricTensor<2, 3> exact;
+    exact[0][0] = lambda * (exx + eyy) + 2 * mu * exx;
+    exact[1][1] = lambda * (exx + eyy) + 2 * mu * eyy;
+    exact[2][2] = lambda * (exx + eyy);
+    exact[0][1] = 2 * mu * exy;
+    return exact;
+  }
+
+
+  /// The largest |sigma - @p reference| over every Gauss point of
+  /// @p analysis.
+  inline double
+  largest_stress_difference(const thinlayer::Analysis<2>        &analysis,
+                            const dealii::SymmetricTensor<2, 3> &reference)
+  {
+    const unsigned int n_cells =
+      analysis.get_dof_handler().get_triangulation().n_active_cells();
+    double largest = 0;
+    for (unsigned int c = 0; c < n_cells; ++c)
+      for (unsigned int q = 0; q < analysis.n_quadrature_points(); ++q)
+        largest = std::max(largest, (analysis.stress(c, q) - reference).norm());
+    return largest;
+  }
+
+
   /**
    * An elastic cylinder (E = 1000, nu = 0.3) of radius 1 and height 2 as
    * the r-z plane of block.geo (3 x 4 cells; boundary ids 1 bottom, 2 the

@@ -10,18 +10,14 @@
 // be below a tenth of the straight cells' (the polygon revolved: a
 // faceted sphere). Release only: six solves.
 #include <deal.II/base/function.h>
-#include <deal.II/base/quadrature_lib.h>
-#include <deal.II/numerics/vector_tools.h>
 
 #include <thinlayer/analysis/analysis.h>
 #include <thinlayer/mesh/scene.h>
 #include <thinlayer/parameters/parameters.h>
 
-#include <cmath>
-#include <cstdio>
 #include <string>
-#include <vector>
 
+#include "../common/curved_convergence.h"
 #include "../common/scene_test_utilities.h"
 
 using namespace dealii;
@@ -84,17 +80,7 @@ namespace
       "sphere.prm",
       [&](const thinlayer::Analysis<2> &analysis,
           const thinlayer::Parameters &) {
-        const auto    &tria = analysis.get_dof_handler().get_triangulation();
-        Vector<double> errors(tria.n_active_cells());
-        VectorTools::integrate_difference(analysis.get_mapping(),
-                                          analysis.get_dof_handler(),
-                                          analysis.get_solution(0),
-                                          Lame(),
-                                          errors,
-                                          QGauss<2>(5),
-                                          VectorTools::L2_norm);
-        result =
-          VectorTools::compute_global_error(tria, errors, VectorTools::L2_norm);
+        result = thinlayer_tests::l2_error(analysis, Lame());
       });
     return result;
   }
@@ -104,23 +90,5 @@ namespace
 int
 main()
 {
-  std::vector<double> curved, straight;
-  for (const unsigned int n : {2u, 4u, 8u})
-    {
-      curved.push_back(error(n, true));
-      straight.push_back(error(n, false));
-      std::printf("n = %u: L2 error curved %.2e, straight %.2e\n",
-                  n,
-                  curved.back(),
-                  straight.back());
-    }
-  const double curved_rate   = std::log2(curved[1] / curved[2]);
-  const double straight_rate = std::log2(straight[1] / straight[2]);
-  std::printf("rates between n = 4 and 8: curved %.2f (at least 2.5: %s), "
-              "straight %.2f; curved below a tenth of straight on n = 8: "
-              "%s\n",
-              curved_rate,
-              curved_rate >= 2.5 ? "yes" : "NO",
-              straight_rate,
-              curved[2] < 0.1 * straight[2] ? "yes" : "NO");
+  thinlayer_tests::compare_curved_and_straight(error);
 }

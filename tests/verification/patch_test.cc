@@ -21,17 +21,8 @@ using namespace dealii;
 int
 main()
 {
-  // u = 1e-3 (x + 0.5 y, 0.3 x - 0.2 y): eps_xx = 1e-3, eps_yy = -2e-4,
-  // eps_xy = 4e-4.
-  const double          E = 1000, nu = 0.25;
-  const double          lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
-  const double          mu     = E / (2 * (1 + nu));
-  const double          exx = 1e-3, eyy = -2e-4, exy = 4e-4;
-  SymmetricTensor<2, 3> exact;
-  exact[0][0] = lambda * (exx + eyy) + 2 * mu * exx;
-  exact[1][1] = lambda * (exx + eyy) + 2 * mu * eyy;
-  exact[2][2] = lambda * (exx + eyy);
-  exact[0][1] = 2 * mu * exy;
+  // u = 1e-3 (x + 0.5 y, 0.3 x - 0.2 y) on E = 1000, nu = 0.25.
+  const SymmetricTensor<2, 3> exact = thinlayer_tests::patch_stress();
   std::printf("exact stress: xx %.6f yy %.6f zz %.6f xy %.6f\n",
               exact[0][0],
               exact[1][1],
@@ -76,10 +67,8 @@ main()
               const thinlayer::Parameters  &p) {
             n_cells =
               analysis.get_dof_handler().get_triangulation().n_active_cells();
-            for (unsigned int c = 0; c < n_cells; ++c)
-              for (unsigned int q = 0; q < analysis.n_quadrature_points(); ++q)
-                max_error =
-                  std::max(max_error, (analysis.stress(c, q) - exact).norm());
+            max_error =
+              thinlayer_tests::largest_stress_difference(analysis, exact);
             reaction =
               thinlayer::Monitors<2>(p.monitors, analysis, p.parameter_file)
                 .load();

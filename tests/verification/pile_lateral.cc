@@ -31,7 +31,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
@@ -117,16 +116,9 @@ main()
          "loads");
 
   // The layer's tractions at the last step, by station.
-  std::string last;
-  for (const auto &entry : std::filesystem::directory_iterator("results"))
-    {
-      const std::string name = entry.path().filename().string();
-      if (name.rfind("interface-2-", 0) == 0 &&
-          entry.path().extension() == ".csv")
-        last = std::max(last, name);
-    }
   std::map<double, run_results::Table> stations;
-  for (const auto &row : run_results::read_csv("results/" + last))
+  for (const auto &row : run_results::read_csv(
+         run_results::newest_csv("results", "interface-2-")))
     stations[row.at("angle")].push_back(row);
   expect(stations.size() == 7, "the layer's profile at seven stations");
 

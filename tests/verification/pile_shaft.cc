@@ -36,7 +36,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -49,14 +48,8 @@ namespace
   run_results::Table
   last_profile(const std::string &prefix)
   {
-    std::string last;
-    for (const auto &entry : std::filesystem::directory_iterator("results"))
-      {
-        const std::string name = entry.path().filename().string();
-        if (name.rfind(prefix, 0) == 0 && entry.path().extension() == ".csv")
-          last = std::max(last, name);
-      }
-    run_results::Table profile = run_results::read_csv("results/" + last);
+    run_results::Table profile =
+      run_results::read_csv(run_results::newest_csv("results", prefix));
     std::sort(profile.begin(), profile.end(), [](const auto &a, const auto &b) {
       return a.at("y") < b.at("y");
     });
