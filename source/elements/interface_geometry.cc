@@ -12,11 +12,42 @@ namespace thinlayer
 {
   namespace
   {
+    /// The points along a straight side of a curve: on its chord, one
+    /// frame for the side.
+    std::vector<InterfacePointPlace<2>>
+    points_on_chord(const FacingSides<2> &pair,
+                    const Quadrature<1>  &rule,
+                    const Kinematics     &kinematics)
+    {
+      std::vector<InterfacePointPlace<2>> places;
+      const Tensor<1, 2>                  chord   = pair.exit - pair.entry;
+      const double                        length  = chord.norm();
+      const Tensor<1, 2>                  tangent = chord / length;
+      const Tensor<2, 3>                  frame({{tangent[0], tangent[1], 0.},
+                                                 {-tangent[1], tangent[0], 0.},
+                                                 {0., 0., 1.}});
+      for (unsigned int q = 0; q < rule.size(); ++q)
+        {
+          InterfacePointPlace<2> place;
+          place.position = pair.entry + rule.point(q)[0] * chord;
+          place.frame    = frame;
+          place.weight =
+            rule.weight(q) * length * kinematics.area_factor(place.position);
+          place.arc_length   = pair.arc_length + rule.point(q)[0] * length;
+          place.unit_plus[0] = std::numeric_limits<double>::quiet_NaN();
+          places.push_back(place);
+        }
+      return places;
+    }
+
+
     /**
      * The points along the plus cell's side of a pair on a curve, through
      * the mapping: on a side that follows a circle (attach_arcs()) they lie
      * on the circle, and each point's frame turns with the side's tangent
-     * there; on a straight side they lie on its chord, as before.
+     * there. A straight side keeps points_on_chord(), the same points to
+     * round-off: near a collapse, round-off decides whether a failed
+     * step's iterations show the mechanism.
      */
     std::vector<InterfacePointPlace<2>>
     points_on_side(const FacingSides<2> &pair,
@@ -24,6 +55,10 @@ namespace thinlayer
                    const Mapping<2>     &mapping,
                    const Kinematics     &kinematics)
     {
+      if (pair.plus_cell->face(pair.plus_face)->manifold_id() ==
+          numbers::flat_manifold_id)
+        return points_on_chord(pair, rule, kinematics);
+
       // The plus cell's face f: unit coordinate d = f / 2 fixed at f % 2,
       // the other one running along the side.
       const unsigned int f      = pair.plus_face;

@@ -33,7 +33,8 @@ namespace thinlayer
     /// On a surface: the patch of the face the point stands for (its
     /// weight's share), for the profile's VTU.
     std::array<Point<3>, 4> patch;
-    /// The point in the plus cell's unit cell.
+    /// The point in the plus cell's unit cell (NaN on a straight side of a
+    /// curve, where it is found from @p position).
     Point<dim> unit_plus;
   };
 
@@ -42,10 +43,11 @@ namespace thinlayer
    * The integration points of an interface element, the facing sides
    * @p pair, by the rule of @p curve (Gauss or Lobatto, per direction of a
    * face):
-   * - on a curve, along the plus cell's side as @p mapping maps it (on a
-   *   circle where the side follows one, attach_arcs(); else its chord),
-   *   the frame the side's tangent there and its quarter turn
-   *   anticlockwise, the weight the side's length element;
+   * - on a curve, along the side's chord where it is straight, the frame
+   *   the chord's tangent and its quarter turn anticlockwise; where the
+   *   side follows a circle (attach_arcs()), along the plus cell's side as
+   *   @p mapping maps it, the frame turning with the side's tangent, the
+   *   weight its length element;
    * - on a surface, over the plus cell's face as @p mapping maps it: at each
    *   point the normal n pointing away from the plus cell (upward by
    *   pair_facing_sides()), t1 = first_tangent(n), t2 = t1 x n, the weight
