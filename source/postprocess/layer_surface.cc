@@ -107,15 +107,16 @@ namespace thinlayer
       return mapping.transform_unit_to_real_cell(
         cell, unit_point(thickness, a, b, across));
     };
-    // The normal from the mid-surface's two chords through the centre;
-    // which unit face lies on the +n side.
-    const Tensor<1, 3> chord_a = at(1, 0.5, 0.5) - at(0, 0.5, 0.5);
-    const Tensor<1, 3> chord_b = at(0.5, 1, 0.5) - at(0.5, 0, 0.5);
-    Tensor<1, 3>       normal  = cross_product_3d(chord_a, chord_b);
-    normal                     = upward(normal / normal.norm());
-    const double plus_face =
-      (at(0.5, 0.5, 1) - at(0.5, 0.5, 0)) * normal > 0 ? 1. : 0.;
-    const Tensor<1, 3> tangent = first_tangent(normal);
+    // The mid-surface's normal at a point, from its two tangents there: on
+    // a layer that follows a cylinder (attach_arcs()) it turns across the
+    // cell.
+    const auto normal_at = [&](const double a, const double b) {
+      const double       h   = 1e-6;
+      const Tensor<1, 3> t_a = at(a + h, b, 0.5) - at(a - h, b, 0.5);
+      const Tensor<1, 3> t_b = at(a, b + h, 0.5) - at(a, b - h, 0.5);
+      const Tensor<1, 3> n   = cross_product_3d(t_a, t_b);
+      return upward(n / n.norm());
+    };
 
     const unsigned int n_1d = static_cast<unsigned int>(
       std::lround(std::cbrt(analysis.n_quadrature_points())));
@@ -124,8 +125,13 @@ namespace thinlayer
     for (unsigned int i = 0; i < n_1d; ++i)
       for (unsigned int j = 0; j < n_1d; ++j)
         {
-          const double   a = gauss_1d.point(i)[0];
-          const double   b = gauss_1d.point(j)[0];
+          const double       a       = gauss_1d.point(i)[0];
+          const double       b       = gauss_1d.point(j)[0];
+          const Tensor<1, 3> normal  = normal_at(a, b);
+          const Tensor<1, 3> tangent = first_tangent(normal);
+          // Which unit face lies on the +n side.
+          const double plus_face =
+            (at(a, b, 1) - at(a, b, 0)) * normal > 0 ? 1. : 0.;
           LayerSample<3> sample;
           sample.cell             = cell;
           sample.t1               = tangent;

@@ -15,10 +15,15 @@
 // 2% of the exact pressure, closer than on 6. And the polygon: with
 // straight cells (Mesh/Curved cells = false) the smooth pile on the thin
 // layer carries far more (+23% on 12 cells), every vertex anchoring the
-// contact; asked, the curved cells' error is below a fifth of it.
+// contact; asked, the curved cells' error is below a fifth of it. And the
+// contact's profile follows the circle: on 12 cells its tractions, with
+// its normal and tangent at each point, integrate to the pile's reaction
+// within 1%.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "../common/run_results.h"
 #include "../common/truths.h"
@@ -34,6 +39,49 @@ namespace
     return M_PI + 2 * delta + 2 * std::cos(delta) +
            4 * (std::cos(delta / 2) + std::sin(delta / 2));
   }
+
+  /**
+   * The pile's load (its reaction on the half body) from the newest profile
+   * results/@p prefix*.csv of the contact on its circle, @p n Gauss points
+   * per cell side: the traction the contact puts on the pile,
+   * -sigma_n cos(theta) - tau sin(theta) per unit length, integrated with
+   * those points over theta. The profile runs from (-r, 0) to (r, 0), its
+   * normal outward (the tangent's quarter turn) and its shear along the
+   * run; both follow the circle only if the cells do.
+   */
+  double
+  profile_load(const std::string &prefix, const unsigned int n)
+  {
+    run_results::Table profile =
+      run_results::read_csv(run_results::newest_csv("results", prefix));
+    std::sort(profile.begin(), profile.end(), [](const auto &a, const auto &b) {
+      return a.at("arc_length") < b.at("arc_length");
+    });
+    // Gauss abscissae of the side's angle span, and weights (of 1).
+    const double spread = n == 2 ? 1 / std::sqrt(3.) : std::sqrt(3. / 5.);
+    const std::vector<double> weights =
+      n == 2 ? std::vector<double>{0.5, 0.5}
+             : std::vector<double>{5. / 18, 8. / 18, 5. / 18};
+    double load = 0;
+    for (unsigned int k = 0; k + n - 1 < profile.size(); k += n)
+      {
+        const auto angle = [&](const unsigned int i) {
+          return std::atan2(profile[i].at("y"), profile[i].at("x"));
+        };
+        const double span = std::abs(angle(k + n - 1) - angle(k)) / spread;
+        for (unsigned int q = 0; q < n; ++q)
+          {
+            const auto  &p     = profile[k + q];
+            const double theta = angle(k + q);
+            const double r     = std::hypot(p.at("x"), p.at("y"));
+            load += weights[q] * span * r *
+                    (-p.at("normal_traction") * std::cos(theta) -
+                     p.at("shear_traction") * std::sin(theta));
+          }
+      }
+    return load;
+  }
+
 
   /// The plateau of one run: @p zero_thickness picks the scene, @p n the
   /// cells per quarter circle (and 5 n / 3 outwards).
@@ -75,6 +123,14 @@ main()
         const double exact  = randolph_houlsby(alpha);
         const double coarse = plateau(zero_thickness, alpha, 6) / exact - 1;
         const double fine   = plateau(zero_thickness, alpha, 12) / exact - 1;
+        // The reaction, from the last converged load (divided by c (R + t)
+        // for the skin's outer circle, by c R for the layer's).
+        const double reaction =
+          run_results::summary_number("results", "last_converged_load") *
+          (zero_thickness ? 1.02 : 1.);
+        const double from_profile = zero_thickness
+                                      ? profile_load("interface-curve-4-", 3)
+                                      : profile_load("interface-2-", 2);
         std::printf("%s, alpha = %g: exact %.3f; errors %+.2f%% on 6, %+.2f%% "
                     "on 12 cells per quarter\n",
                     zero_thickness ? "interface elements" : "thin layer",
@@ -84,6 +140,11 @@ main()
                     100 * fine);
         expect(std::abs(fine) < 0.02 && std::abs(fine) < std::abs(coarse),
                "within 2% on 12, closer than on 6");
+        std::printf("  statics on 12: the contact's profile gives %.4f of the "
+                    "reaction\n",
+                    from_profile / reaction);
+        expect(std::abs(from_profile / reaction - 1) < 0.01,
+               "the contact's profile carries the pile's load (1%)");
         if (!zero_thickness && alpha < 0.5)
           curved_smooth = fine;
       }

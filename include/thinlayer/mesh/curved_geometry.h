@@ -17,7 +17,7 @@ namespace thinlayer
    */
   struct GeometryArc
   {
-    /// The curve's tag in the geometry, for messages.
+    /// The curve's tag in the geometry.
     int      tag;
     Point<3> centre;
     Point<3> start;
