@@ -80,12 +80,12 @@ main()
   const double broms  = 1.5 * K_p * gamma * D * L * L;
   const double hansen = brinch_hansen(phi, D, L) / broms;
 
-  const double load =
-    run_results::run_prm("pile-lateral.prm",
-                         {"Kinematics/Harmonics=0, 1",
-                          "Kinematics/Stations=0, 45, 90, 135, 180",
+  const double load = run_results::run_prm(
+    "pile-lateral.prm",
+    {"Kinematics/Harmonics=0, 1",
+     "Kinematics/Stations=0, 45, 90, 135, 180",
      "Loading/Load increments=1, 1, 2, 4, 8, 16, 32, 64, 128, 244"},
-                         "last_converged_load");
+    "last_converged_load");
   const std::string outcome = run_results::summary_text("results", "outcome");
   const double      collapse =
     run_results::summary_number("results", "collapse_load");
