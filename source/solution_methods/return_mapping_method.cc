@@ -91,20 +91,56 @@ namespace thinlayer
   {
     const double dlambda = target - analysis.accepted_load_factor();
     const double scale   = accepted_step != 0 ? dlambda / accepted_step : 0;
-    for (unsigned int m = 0; m < analysis.n_modes(); ++m)
+    if (scale > 0)
       {
-        ModeVector &increment = analysis.step_increment()[m];
-        if (scale > 0)
+        for (unsigned int m = 0; m < analysis.n_modes(); ++m)
           {
-            increment = accepted_increment[m];
+            ModeVector &increment = analysis.step_increment()[m];
+            increment             = accepted_increment[m];
             increment *= scale;
           }
-        else
+        return;
+      }
+    // The first step, or a reversal of the load: no secant predictor. The
+    // prescribed displacements of the step are carried into the body by
+    // its elastic response to them alone, dlambda (u_p - K^-1 K u_p) (the
+    // loads are left to the first correction, as before). Moving only the
+    // constrained DoFs would put a pile's or a footing's whole displacement
+    // into the one row of cells beside it: a thin layer there is sheared by
+    // u / t, far beyond yield even where the step is elastic, and the
+    // iterations have to bring it back from there (on a layer that follows
+    // a circle, and so can slide round it, they often could not).
+    ModeVectors &increments = analysis.step_increment();
+    double       prescribed = 0;
+    for (unsigned int m = 0; m < analysis.n_modes(); ++m)
+      {
+        const ModeSystem &mode = analysis.mode_system(m);
+        prescribed =
+          std::max(prescribed, mode.unit_prescribed_displacement.linfty_norm());
+      }
+    const bool lift = prescribed > 0 && dlambda != 0;
+    for (unsigned int m = 0; m < analysis.n_modes(); ++m)
+      {
+        const ModeSystem &mode = analysis.mode_system(m);
+        if (lift)
           {
-            // The first step, or a reversal of the load: no predictor.
-            increment = analysis.mode_system(m).unit_prescribed_displacement;
-            increment *= dlambda;
+            // -K u_p: the right-hand side f - K u_p less f.
+            increments[m] = mode.unit_rhs;
+            increments[m] -= mode.unit_load;
+            increments[m] *= dlambda;
+            mode.condense(increments[m]);
           }
+        else
+          increments[m] = 0;
+      }
+    if (lift)
+      analysis.elastic_solve(increments);
+    for (unsigned int m = 0; m < analysis.n_modes(); ++m)
+      {
+        const ModeSystem &mode = analysis.mode_system(m);
+        if (lift)
+          mode.distribute(increments[m]);
+        increments[m].add(dlambda, mode.unit_prescribed_displacement);
       }
   }
 

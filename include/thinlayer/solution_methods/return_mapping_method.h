@@ -149,10 +149,11 @@ namespace thinlayer
      * The secant predictor: each mode's increment of the last accepted
      * step and that step's size in load factor (0: none yet). An attempt
      * in the same direction starts from that increment scaled to its own
-     * size rather than from the prescribed displacements alone, so that a
-     * step along a plastic branch starts near its end. The scaled
-     * increment meets the step's prescribed displacements exactly: they
-     * are proportional to the load factor.
+     * size rather than from the elastic response to the step's prescribed
+     * displacements (predict()), so that a step along a plastic branch
+     * starts near its end. The scaled increment meets the step's
+     * prescribed displacements exactly: they are proportional to the load
+     * factor.
      */
     ModeVectors accepted_increment;
     double      accepted_step        = 0;
@@ -162,7 +163,12 @@ namespace thinlayer
     ModeVectors stress_excess;
     ModeVector  condensed;
 
-    /// The increment an attempt to @p target starts from.
+    /**
+     * The increment an attempt to @p target starts from: the secant
+     * predictor, or, for the first step and a reversal of the load, the
+     * body's elastic response to the step's prescribed displacements
+     * alone (its loads enter with the first correction).
+     */
     void
     predict(const double target);
 
