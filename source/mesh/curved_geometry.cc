@@ -3,7 +3,9 @@
 #include <thinlayer/mesh/curved_geometry.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <map>
+#include <set>
 #include <sstream>
 
 namespace thinlayer
@@ -77,13 +79,25 @@ namespace thinlayer
   {
     std::map<int, Point<3>>         points;
     std::vector<std::array<int, 4>> circles;
-    std::istringstream              text(unrolled);
-    std::string                     line;
+    // The curves that bound a surface or are embedded in one: only those
+    // are sides of cells. A construction circle that no surface uses
+    // curves nothing, even where straight sides happen to end on it.
+    std::set<int>      bounding;
+    std::istringstream text(unrolled);
+    std::string        line;
     while (std::getline(text, line))
       {
         const std::vector<std::string> fields = braced_fields(line);
         try
           {
+            // gmsh 4 unrolls an embedded curve as "Line {5} In Surface
+            // {1};", a loop as "Curve Loop(1) = {...};".
+            if (line.rfind("Curve Loop(", 0) == 0 ||
+                line.rfind("Line Loop(", 0) == 0 ||
+                ((line.rfind("Line", 0) == 0 || line.rfind("Curve", 0) == 0) &&
+                 line.find("In Surface") != std::string::npos))
+              for (const std::string &field : fields)
+                bounding.insert(std::abs(std::atoi(field.c_str())));
             if (const int tag = entity_tag(line, "Point");
                 tag >= 0 && fields.size() >= 3)
               points[tag] = Point<3>(std::stod(fields[0]),
@@ -105,8 +119,8 @@ namespace thinlayer
     std::vector<GeometryArc> arcs;
     for (const auto &[tag, start, centre, end] : circles)
       {
-        if (points.count(start) == 0 || points.count(centre) == 0 ||
-            points.count(end) == 0)
+        if (bounding.count(tag) == 0 || points.count(start) == 0 ||
+            points.count(centre) == 0 || points.count(end) == 0)
           continue;
         GeometryArc arc{tag,
                         points.at(centre),

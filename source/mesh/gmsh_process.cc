@@ -188,6 +188,20 @@ namespace thinlayer
                   " cells; check them, or raise that limit");
             }
           const auto now = std::chrono::steady_clock::now();
+          if (std::chrono::duration<double>(now - start).count() >
+              job.time_limit)
+            {
+              gmsh.kill_and_reap();
+              std::ostringstream limit;
+              limit << job.time_limit;
+              throw InputError(job.parameter_file,
+                               "Mesh/Meshing time limit",
+                               "gmsh ran for more than " + limit.str() +
+                                 " s on " + job.geometry +
+                                 " and was stopped: the script loops without "
+                                 "end, or asks for a far finer mesh than "
+                                 "meant; check it, or raise the limit");
+            }
           if (now >= next_report)
             {
               progress << "  meshing: gmsh has run for "

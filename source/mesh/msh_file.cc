@@ -4,6 +4,7 @@
 #include <thinlayer/mesh/msh_file.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <numeric>
 #include <sstream>
@@ -38,6 +39,35 @@ namespace thinlayer
     }
 
 
+    /// Whether @p text is three finite numbers, each written whole (not
+    /// "abc", "nan" or "1junk"), read into @p x.
+    bool
+    read_coordinates(const std::string &text, std::array<double, 3> &x)
+    {
+      std::istringstream words(text);
+      std::string        word;
+      unsigned int       n = 0;
+      while (words >> word)
+        {
+          if (n == 3)
+            return false;
+          try
+            {
+              std::size_t used = 0;
+              x[n]             = std::stod(word, &used);
+              if (used != word.size() || !std::isfinite(x[n]))
+                return false;
+            }
+          catch (const std::exception &)
+            {
+              return false;
+            }
+          ++n;
+        }
+      return n == 3;
+    }
+
+
     /// The nodes and elements of format 2.2.
     void
     read_version_2(const std::string &text, MshFile &mesh)
@@ -61,8 +91,13 @@ namespace thinlayer
           std::string rest;
           nodes >> id;
           std::getline(nodes, rest);
+          if (!nodes)
+            break;
           std::array<double, 3> x{{0, 0, 0}};
-          std::istringstream(rest) >> x[0] >> x[1] >> x[2];
+          if (!read_coordinates(rest, x))
+            fail(mesh.file,
+                 "node " + std::to_string(id) + " has the coordinates '" +
+                   Utilities::trim(rest) + "'; expected three finite numbers");
           mesh.node_ids.push_back(id);
           mesh.positions.push_back(x);
           mesh.node_text.push_back(rest);
@@ -169,6 +204,10 @@ namespace thinlayer
             {
               std::array<double, 3> x{{0, 0, 0}};
               nodes >> x[0] >> x[1] >> x[2];
+              if (nodes && !(std::isfinite(x[0]) && std::isfinite(x[1]) &&
+                             std::isfinite(x[2])))
+                fail(mesh.file,
+                     "a node has coordinates that are not finite numbers");
               double u;
               for (int k = 0; parametric != 0 && k < entity_dim; ++k)
                 nodes >> u;
@@ -269,6 +308,21 @@ namespace thinlayer
       fail(file,
            "a mesh in gmsh's format " + std::to_string(version).substr(0, 3) +
              "; expected format 2.2 or 4.1 (gmsh -format msh22)");
+
+    std::vector<long> ids = node_ids;
+    std::sort(ids.begin(), ids.end());
+    if (const auto twice = std::adjacent_find(ids.begin(), ids.end());
+        twice != ids.end())
+      fail(file,
+           "node " + std::to_string(*twice) +
+             " is defined twice; expected each node number once");
+    for (const MshElement &e : elements)
+      if (e.physical() < 0 || e.physical() > 2147483647l)
+        fail(file,
+             "element " + std::to_string(e.id) + " has the physical tag " +
+               std::to_string(e.physical()) +
+               "; expected a physical group's tag, a whole number from 1 "
+               "to 2147483647 (or 0, none)");
   }
 
 

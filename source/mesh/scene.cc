@@ -1,7 +1,9 @@
 #include <thinlayer/base/file_utilities.h>
 #include <thinlayer/base/input_error.h>
 #include <thinlayer/mesh/curved_geometry.h>
+#include <thinlayer/mesh/geometry_script.h>
 #include <thinlayer/mesh/gmsh_process.h>
+#include <thinlayer/mesh/mesh_checks.h>
 #include <thinlayer/mesh/mesh_splitting.h>
 #include <thinlayer/mesh/msh_file.h>
 #include <thinlayer/mesh/scene.h>
@@ -20,57 +22,6 @@ namespace thinlayer
 {
   namespace
   {
-    bool
-    is_identifier_char(const char c)
-    {
-      return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
-    }
-
-    /**
-     * The text of a .geo with the files it includes, to check that the
-     * geometry parameters set from the parameter file exist. Scanned by
-     * hand: a regular expression recurses over long lines.
-     */
-    std::string
-    geometry_text(const std::string &file, const unsigned int depth = 0)
-    {
-      std::string       text = read_file(file);
-      const std::string directory =
-        std::filesystem::path(file).parent_path().string();
-      std::string included;
-      for (std::size_t at = text.find("Include");
-           at != std::string::npos && depth < 8;
-           at = text.find("Include", at + 7))
-        {
-          std::size_t open = at + 7;
-          while (open < text.size() &&
-                 std::isspace(static_cast<unsigned char>(text[open])))
-            ++open;
-          if (open >= text.size() || text[open] != '"')
-            continue;
-          const std::size_t close = text.find('"', open + 1);
-          if (close == std::string::npos)
-            break;
-          included += geometry_text((directory.empty() ? "" : directory + "/") +
-                                      text.substr(open + 1, close - open - 1),
-                                    depth + 1);
-        }
-      return text + included;
-    }
-
-    /// Whether @p name stands in @p text as a whole word.
-    bool
-    contains_word(const std::string &text, const std::string &name)
-    {
-      for (std::size_t at = text.find(name); at != std::string::npos;
-           at             = text.find(name, at + 1))
-        if ((at == 0 || !is_identifier_char(text[at - 1])) &&
-            (at + name.size() == text.size() ||
-             !is_identifier_char(text[at + name.size()])))
-          return true;
-      return false;
-    }
-
     GmshJob
     gmsh_job(const Parameters &p)
     {
@@ -78,7 +29,8 @@ namespace thinlayer
               p.mesh.geometry_parameters,
               p.mesh.max_cells,
               p.parameter_file,
-              p.kinematics.dimension};
+              p.kinematics.dimension,
+              p.mesh.meshing_time_limit};
     }
 
     /**
@@ -88,13 +40,15 @@ namespace thinlayer
     std::string
     mesh_geometry(const Parameters &p, std::ostream &progress)
     {
-      const std::string geo = geometry_text(p.mesh.file);
+      const GeometryScript script(p.mesh.file, p.parameter_file);
       for (const auto &[name, value] : p.mesh.geometry_parameters)
-        if (!contains_word(geo, name))
+        if (!script.has_word(name))
           throw InputError(p.parameter_file,
                            "Mesh/Geometry parameters",
                            "'" + name + "' is not a parameter of " +
                              p.mesh.file);
+      if (!p.mesh.trust_geometry_scripts)
+        script.check_safe();
 
       return run_gmsh(gmsh_job(p), progress);
     }
@@ -285,6 +239,15 @@ namespace thinlayer
                        "expected a .geo or .msh file, got '" + p.mesh.file +
                          "'");
 
+    // The geometry as gmsh unrolls it: its physical groups (every surface
+    // must be in one) and its arcs (Mesh/Curved cells).
+    const std::string unrolled = extension == ".geo" ? mpi::on_root([&]() {
+      return unrolled_geometry(gmsh_job(p), progress);
+    })
+                                                     : std::string();
+    if (extension == ".geo")
+      check_bodies_in_groups(unrolled, p.mesh.file, dim);
+
     // The mesh is read once: the checks, the splitting and the
     // triangulation all work on what was read.
     MshFile mesh(msh, p.mesh.file);
@@ -295,6 +258,10 @@ namespace thinlayer
                                               "with four distinct corners"
                                             : ": expected a hexahedron with "
                                               "eight distinct corners"));
+    // Conforming as read, before interface elements split it; checked once
+    // each cell is known to have a shape (a flat cell puts its nodes on
+    // its neighbours' sides, which check_cell_shapes() names better).
+    const MshFile as_read = mesh;
     if (!p.interface_elements.empty())
       {
         std::set<unsigned int> curves;
@@ -303,6 +270,7 @@ namespace thinlayer
         mesh = split_along_curves(mesh, curves);
         msh  = mesh.text();
       }
+    check_physical_faces_on_boundary(mesh, dim, "Interface curve");
     create_triangulation(mesh, tria);
     if (tria.n_active_cells() > p.mesh.max_cells)
       throw InputError(p.parameter_file,
@@ -314,12 +282,12 @@ namespace thinlayer
                          "; check the geometry parameters, or raise the "
                          "limit");
     check_cell_shapes(tria, p.mesh.file);
+    check_conforming(as_read, dim);
     check_ids(p, tria);
 
     if (extension == ".geo" && p.mesh.curved_cells)
       {
-        const std::vector<GeometryArc> arcs   = arcs_of_geometry(mpi::on_root(
-          [&]() { return unrolled_geometry(gmsh_job(p), progress); }));
+        const std::vector<GeometryArc> arcs   = arcs_of_geometry(unrolled);
         const unsigned int             curved = attach_arcs(tria, arcs);
         if (curved > 0)
           progress << "  curved " << curved << " cell "

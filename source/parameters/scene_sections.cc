@@ -132,6 +132,21 @@ namespace thinlayer
       "slides on the circle, not on the polygon of its nodes. false: every "
       "cell keeps straight sides, as does a .msh file always (it carries "
       "no geometry).");
+    prm.declare_entry(
+      "Trust geometry scripts",
+      "false",
+      Patterns::Bool(),
+      "gmsh runs a .geo with your rights, and a .geo can run shell commands "
+      "(SystemCall, OnelabRun) and write or delete files (Printf > file, "
+      "Save, Print, DeleteFile, ...). false: a .geo (or a file it includes) "
+      "with such a statement is refused, naming its line. true: gmsh runs "
+      "the script as it is; only for scripts you trust.");
+    prm.declare_entry("Meshing time limit",
+                      "600",
+                      Patterns::Double(0),
+                      "Seconds gmsh may take to mesh the .geo (each of its "
+                      "runs); it is stopped beyond them (a loop without "
+                      "end, or a mesh far finer than meant).");
     prm.leave_subsection();
   }
 
@@ -150,8 +165,11 @@ namespace thinlayer
       (mesh.front() == '/') ? mesh : directory_of(parameter_file) + "/" + mesh;
     geometry_parameters =
       parse_geometry_parameters(prm.get("Geometry parameters"), parameter_file);
-    max_cells    = prm.get_integer("Maximum cells");
-    curved_cells = prm.get_bool("Curved cells");
+    max_cells              = prm.get_integer("Maximum cells");
+    curved_cells           = prm.get_bool("Curved cells");
+    trust_geometry_scripts = prm.get_bool("Trust geometry scripts");
+    meshing_time_limit =
+      positive(prm, "Meshing time limit", parameter_file, "Mesh");
     prm.leave_subsection();
   }
 

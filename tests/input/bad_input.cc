@@ -373,6 +373,101 @@ namespace
     write("sliver.prm", one_material_scene("sliver.msh"));
     check("a cell 1e-13 thick in a mesh of size 1", {"sliver.prm"});
   }
+
+
+  /// Meshes deal.II reads that are not the body they describe, and mesh
+  /// files that are not what they say: refused, naming the node, the
+  /// element or the group.
+  void
+  check_mesh_files()
+  {
+    const std::vector<std::string> square = {"0 0", "1 0", "1 1", "0 1"};
+    for (const auto &[what, bad] :
+         std::vector<std::pair<std::string, std::string>>{
+           {"a coordinate that is no number ('abc')", "abc 1"},
+           {"a coordinate 'nan'", "nan 1"},
+           {"a coordinate with trailing characters ('1junk')", "1junk 1"}})
+      {
+        std::vector<std::string> nodes = square;
+        nodes[2]                       = bad;
+        write_msh("coordinate.msh", nodes, {{1, 2, 3, 4}});
+        write("coordinate.prm", one_material_scene("coordinate.msh"));
+        check("a .msh with " + what, {"coordinate.prm"});
+      }
+
+    write_msh("twice.msh", square, {{1, 2, 3, 4}});
+    std::string text = read_text("twice.msh");
+    text.replace(text.find("$Nodes\n4\n"), 9, "$Nodes\n5\n2 5 5 0\n");
+    write("twice.msh", text);
+    write("twice.prm", one_material_scene("twice.msh"));
+    check("a .msh that defines node 2 twice", {"twice.prm"});
+
+    write_msh("tag.msh", square, {{1, 2, 3, 4}});
+    text = read_text("tag.msh");
+    text.replace(text.find("3 2 1 1 1 2 3 4"), 15, "3 2 -2 1 1 2 3 4");
+    write("tag.msh", text);
+    write("tag.prm", one_material_scene("tag.msh"));
+    check("a .msh whose cell has the physical tag -2", {"tag.prm"});
+
+    // A large cell beside two small ones: node 7 at (1, 0.5) lies on the
+    // large cell's side 2-3.
+    write_msh("hanging.msh",
+              {"0 0", "1 0", "1 1", "0 1", "2 0", "2 0.5", "1 0.5", "2 1"},
+              {{1, 2, 3, 4}, {2, 5, 6, 7}, {7, 6, 8, 3}});
+    write("hanging.prm", one_material_scene("hanging.msh"));
+    check("a hanging node (cells joined at corners only)", {"hanging.prm"});
+
+    // Two cells side by side, each with its own nodes along x = 1.
+    write_msh("crack.msh",
+              {"0 0", "1 0", "1 1", "0 1", "1 0", "2 0", "2 1", "1 1"},
+              {{1, 2, 3, 4}, {5, 6, 7, 8}});
+    write("crack.prm", one_material_scene("crack.msh"));
+    check("duplicate points (a crack between two cells)", {"crack.prm"});
+
+    // The second surface of the valid scene in no physical group: gmsh
+    // would leave its cells out.
+    std::string lost = good_geo;
+    lost.replace(lost.find("Physical Surface(\"upper\", 2) = {2};"), 35, "");
+    write("lost.geo", lost);
+    write("lost.prm", one_material_scene("lost.geo"));
+    check("a surface in no physical group", {"lost.prm"});
+
+    // The valid scene's middle line as a physical curve of its own.
+    write("inner.geo", good_geo + "Physical Curve(\"inner\", 5) = {3};\n");
+    write("inner.prm", scene("inner.geo"));
+    check("a physical curve inside the body, with no section for it",
+          {"inner.prm"});
+  }
+
+
+  /// Circles the geometry draws but no surface uses curve nothing.
+  void
+  check_construction_circles()
+  {
+    // A unit square whose four corners lie on a circle of radius 1/sqrt(2)
+    // drawn for construction only: its sides stay straight.
+    write("circle.geo",
+          "Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0}; Point(3) = {1, 1, 0};\n"
+          "Point(4) = {0, 1, 0}; Point(5) = {0.5, 0.5, 0};\n"
+          "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4};\n"
+          "Line(4) = {4, 1};\n"
+          "Circle(5) = {1, 5, 2}; Circle(6) = {2, 5, 3};\n"
+          "Circle(7) = {3, 5, 4}; Circle(8) = {4, 5, 1};\n"
+          "Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};\n"
+          "Transfinite Curve{1, 2, 3, 4} = 2; Transfinite Surface{1};\n"
+          "Recombine Surface{1};\n"
+          "Physical Surface(1) = {1}; Physical Curve(1) = {1};\n"
+          "Physical Curve(2) = {3};\n");
+    write("circle.prm", one_material_scene("circle.geo"));
+    std::ostringstream out, err;
+    const int          status = thinlayer::run_command_line(
+      {"circle.prm", "-s", "Output/Directory=circle"}, out, err);
+    std::cout << "* (construction circles through a square's corners that no "
+                 "surface uses: meshed as designed)\n  exit status "
+              << status << ", a cell side curved: "
+              << (out.str().find("curved") != std::string::npos ? "YES" : "no")
+              << "\n\n";
+  }
 } // namespace
 
 
@@ -387,4 +482,6 @@ main()
   check_ignored_entries();
   check_fourier_stations();
   check_cells();
+  check_mesh_files();
+  check_construction_circles();
 }

@@ -30,8 +30,11 @@ namespace thinlayer
    * The circular arcs of a geometry, from gmsh's unrolled form of it
    * (gmsh -0 writes every entity with its points' coordinates evaluated,
    * whatever the .geo computed them from): the lines Point(p) = {x, y, z,
-   * ...}; and Circle(n) = {start, centre, end};. Other curves (lines,
-   * ellipses, splines) are not arcs and stay as gmsh meshes them.
+   * ...}; and Circle(n) = {start, centre, end};. Only circles that bound
+   * a surface (a Curve Loop lists them) or are embedded in one are arcs
+   * of the mesh; a construction circle that no surface uses curves
+   * nothing. Other curves (lines, ellipses, splines) are not arcs and stay
+   * as gmsh meshes them.
    */
   std::vector<GeometryArc>
   arcs_of_geometry(const std::string &unrolled);

@@ -21,6 +21,8 @@ namespace thinlayer
     std::string parameter_file;
     /// The dimension to mesh: 2 (surfaces) or 3 (volumes).
     unsigned int dimension = 2;
+    /// Mesh/Meshing time limit: seconds gmsh may run.
+    double time_limit = 600;
   };
 
   /**
@@ -38,6 +40,8 @@ namespace thinlayer
    *   vastly more cells than Mesh/Maximum cells is stopped within seconds
    *   instead of meshing until the machine runs out of memory (an
    *   InputError naming Mesh/Geometry parameters),
+   * - it runs longer than GmshJob::time_limit (an InputError naming
+   *   Mesh/Meshing time limit: a loop without end in the script),
    * - or this function leaves by an exception.
    * gmsh's own errors become an InputError naming the .geo.
    */

@@ -33,6 +33,11 @@ namespace thinlayer
     /// Whether the cells along the circles and arcs of a .geo follow them
     /// (attach_arcs()), or keep straight sides (the polygon gmsh meshes).
     bool curved_cells;
+    /// Whether gmsh may run a .geo that runs programs or writes files
+    /// (check_geometry_script()).
+    bool trust_geometry_scripts;
+    /// Seconds gmsh may take for each of its runs on a .geo.
+    double meshing_time_limit;
 
     static void
     declare(ParameterHandler &prm);
