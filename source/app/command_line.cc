@@ -23,21 +23,25 @@ namespace thinlayer
     void
     print_usage(std::ostream &out)
     {
-      out << "usage: thinlayer FILE.prm [-s \"Section/Entry=value\"]...\n"
-          << "       thinlayer --print-parameters\n"
-          << "       thinlayer --help\n\n"
-          << "Runs the scene described by FILE.prm (a gmsh .geo or .msh plus\n"
-          << "materials, boundary conditions and a load programme). -s\n"
-          << "overrides any entry, e.g. -s \"Mesh/Geometry "
-             "parameters=alpha=30\"\n"
-          << "or -s \"Material 2/Young's modulus=1e4\". Results go to the\n"
-          << "directory named by Output/Directory: history.csv, summary.json,\n"
-          << "fields.pvd with one VTU per load step.\n\n"
-          << "Exit status: 0 a result (non-convergence is one), 1 bad input,\n"
-          << "a failed write or a sweep run that ended in an error, 2 a bad\n"
-          << "command line, 3 an internal error or a failed linear solver\n"
-          << "(out of memory, CG not converging), 4 a run that missed its\n"
-          << "Reference/Expected outcome or load range, 128 + N signal N.\n";
+      out
+        << "usage: thinlayer FILE.prm [-s \"Section/Entry=value\"]...\n"
+        << "       thinlayer [FILE.prm [-s ...]] --print-parameters\n"
+        << "       thinlayer --help\n\n"
+        << "Runs the scene described by FILE.prm (a gmsh .geo or .msh plus\n"
+        << "materials, boundary conditions and a load programme). -s\n"
+        << "overrides any entry, e.g. -s \"Mesh/Geometry "
+           "parameters=alpha=30\"\n"
+        << "or -s \"Material 2/Young's modulus=1e4\". Results go to the\n"
+        << "directory named by Output/Directory: history.csv, summary.json,\n"
+        << "fields.pvd with one VTU per load step. --print-parameters\n"
+        << "prints every entry with its documentation: with FILE.prm, that\n"
+        << "scene's values (a file that runs as given), else the defaults.\n\n"
+        << "Exit status: 0 a result (non-convergence is one), 1 bad input,\n"
+        << "a failed write or a sweep run that ended in an error, 2 a bad\n"
+        << "command line or environment, 3 an internal error or a failed\n"
+        << "linear solver\n"
+        << "(out of memory, CG not converging), 4 a run that missed its\n"
+        << "Reference/Expected outcome or load range, 128 + N signal N.\n";
     }
 
 
@@ -50,6 +54,7 @@ namespace thinlayer
     parse_arguments(const std::vector<std::string> &arguments,
                     std::string                    &file,
                     std::vector<std::string>       &overrides,
+                    bool                           &print,
                     std::ostream                   &out,
                     std::ostream                   &err)
     {
@@ -62,10 +67,7 @@ namespace thinlayer
               return 0;
             }
           else if (a == "--print-parameters")
-            {
-              ParameterReader().print_parameters(out);
-              return 0;
-            }
+            print = true;
           else if (a == "-s" || a == "--set")
             {
               if (i + 1 == arguments.size())
@@ -90,6 +92,16 @@ namespace thinlayer
                   << "' and '" << a << "'\n";
               return 2;
             }
+        }
+      if (print && file.empty() && !overrides.empty())
+        {
+          err << "thinlayer: -s needs a parameter file to override\n";
+          return 2;
+        }
+      if (print && file.empty())
+        {
+          ParameterReader().print_parameters(out);
+          return 0;
         }
       if (file.empty())
         {
@@ -117,8 +129,9 @@ namespace thinlayer
 
     std::string              file;
     std::vector<std::string> overrides;
+    bool                     print = false;
     if (const int status =
-          parse_arguments(arguments, file, overrides, out, root_err);
+          parse_arguments(arguments, file, overrides, print, out, root_err);
         status >= 0)
       return status;
 
@@ -128,6 +141,12 @@ namespace thinlayer
         // A file size limit (ulimit -f) then fails the write (EFBIG), which
         // is reported like a full disk, instead of killing the program.
         std::signal(SIGXFSZ, SIG_IGN);
+        // The scene's every entry, documented: a file that runs as given.
+        if (print)
+          {
+            ParameterReader().read(file, overrides, &out);
+            return 0;
+          }
         const Parameters parameters = ParameterReader().read(file, overrides);
         SweepResult      result;
         if (parameters.sweep.values.empty())
@@ -139,6 +158,11 @@ namespace thinlayer
         else
           result = run_sweep(file, overrides, parameters, out);
         out.flush();
+        // 128 + the signal, as a shell reports a process it ended. A signal
+        // first: mpirun, sent SIGTERM, passes it on and stops forwarding
+        // standard output, so that the ranks' last lines fail.
+        if (interrupted())
+          return 128 + interruption_signal();
         if (!out)
           {
             root_err
@@ -146,9 +170,6 @@ namespace thinlayer
                  "are in Output/Directory\n";
             return 1;
           }
-        // 128 + the signal, as a shell reports a process it ended.
-        if (interrupted())
-          return 128 + interruption_signal();
         if (result.failed_runs > 0)
           {
             root_err << "thinlayer: " << result.failed_runs

@@ -9,7 +9,9 @@
 #include <thinlayer/output/results_directory.h>
 #include <thinlayer/parallel/mpi.h>
 #include <thinlayer/parameters/parameter_reader.h>
+#include <thinlayer/parameters/parameter_text.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -124,9 +126,20 @@ namespace thinlayer
                       const std::vector<unsigned int> &combination,
                       const std::string               &directory)
     {
-      std::vector<std::string> result = overrides;
-      for (const auto &o : overrides_for(base, combination, directory))
-        result.push_back(o);
+      // The run's own values replace the command line's for the same
+      // entries (Sweep/Values, Output/Directory, a swept entry).
+      const std::vector<std::string> own =
+        overrides_for(base, combination, directory);
+      const auto path_of = [](const std::string &o) {
+        return entry_path(o.substr(0, o.find('=')));
+      };
+      std::vector<std::string> result;
+      for (const auto &o : overrides)
+        if (std::none_of(own.begin(), own.end(), [&](const std::string &r) {
+              return path_of(r) == path_of(o);
+            }))
+          result.push_back(o);
+      result.insert(result.end(), own.begin(), own.end());
       try
         {
           ParameterReader().read(file, result);

@@ -32,13 +32,16 @@ namespace thinlayer
     std::string
     csv_field(const std::string &text)
     {
-      if (text.find_first_of(",\"\n") == std::string::npos)
+      // As RFC 4180 and CSV libraries read a field: quoted where it holds
+      // a separator or a quote, its quotes doubled. A line break becomes a
+      // space, so that every record stays one line for line-based tools.
+      if (text.find_first_of(",\"\n\r") == std::string::npos)
         return text;
       std::string quoted = "\"";
       for (const char c : text)
-        quoted += (c == '"')    ? std::string("\"\"")
-                  : (c == '\n') ? std::string(" ")
-                                : std::string(1, c);
+        quoted += (c == '"')                 ? std::string("\"\"")
+                  : (c == '\n' || c == '\r') ? std::string(" ")
+                                             : std::string(1, c);
       return quoted + "\"";
     }
   } // namespace text_format

@@ -347,7 +347,11 @@ namespace thinlayer
                                item + "'");
           if (!allowed.at(static_cast<Id>(id)))
             throw InputError(file, entry, what + " " + item + " " + why);
-          ids.insert(static_cast<Id>(id));
+          if (!ids.insert(static_cast<Id>(id)).second)
+            throw InputError(file,
+                             entry,
+                             "'" + item +
+                               "' is given twice; expected each id once");
         }
       return ids;
     }

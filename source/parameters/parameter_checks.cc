@@ -45,6 +45,27 @@ namespace thinlayer
                          " expressions separated by ';' (or one for all), "
                          "got " +
                          std::to_string(parts.size()));
+    // muParser reads "a, b" outside a function's parentheses as its comma
+    // operator, whose value is b: a decimal comma ("-1,5") would silently
+    // be 5.
+    for (const auto &p : parts)
+      {
+        int depth = 0;
+        for (const char c : p)
+          if (c == '(')
+            ++depth;
+          else if (c == ')')
+            --depth;
+          else if (c == ',' && depth <= 0)
+            throw InputError(file,
+                             entry,
+                             "'" + p +
+                               "' has a comma outside a function's "
+                               "parentheses, which the expression parser "
+                               "reads as an operator whose value is the "
+                               "part after it; write a decimal point (1.5, "
+                               "not 1,5) and separate components with ';'");
+      }
     const SilencedErrorStream silence;
     try
       {

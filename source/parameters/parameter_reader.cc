@@ -1,12 +1,15 @@
 #include <deal.II/base/utilities.h>
 
 #include <thinlayer/base/input_error.h>
+#include <thinlayer/parameters/entry_checks.h>
 #include <thinlayer/parameters/parameter_checks.h>
 #include <thinlayer/parameters/parameter_reader.h>
 #include <thinlayer/parameters/parameter_text.h>
 #include <thinlayer/parameters/parameters.h>
+#include <thinlayer/parameters/scene_checks.h>
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -17,105 +20,41 @@ namespace thinlayer
 {
   namespace
   {
-    /// Where @p line is, for messages: "line 7", or "line 7 of FILE" for a
-    /// line of an included file.
-    std::string
-    position(const ParameterLine &line, const std::string &file)
-    {
-      return "line " + std::to_string(line.line) +
-             (line.file == file ? std::string() : " of '" + line.file + "'");
-    }
-
-
-    /// What Initial state/Procedure needs of the rest of the scene.
-    void
-    check_initial_state(const Parameters &p)
-    {
-      using Procedure           = InitialStateParameters::Procedure;
-      const Procedure procedure = p.initial_state.procedure;
-      if (procedure == Procedure::none)
-        return;
-      const std::string name =
-        InitialStateParameters::procedure_names.name(procedure);
-      const std::string entry  = "Initial state/Procedure";
-      bool              weight = p.initial_state.surcharge > 0;
-      for (const auto &[id, material] : p.materials)
-        weight = weight || material.unit_weight > 0;
-      if (!weight)
-        throw InputError(p.parameter_file,
-                         entry,
-                         "expected a Material <id>/Unit weight > 0 or an "
-                         "Initial state/Surcharge > 0 for the " +
-                           name +
-                           ": without them the initial state is "
-                           "free of stress");
-      if (procedure != Procedure::k0)
-        return;
-      if (p.kinematics.dimension == 3)
-        throw InputError(p.parameter_file,
-                         entry,
-                         "the K0 procedure is built for 2D meshes (plane "
-                         "strain, Fourier); expected 'gravity loading' in "
-                         "3D");
-      if (p.kinematics.fourier &&
-          (p.kinematics.antisymmetric ||
-           std::find(p.kinematics.harmonics.begin(),
-                     p.kinematics.harmonics.end(),
-                     0u) == p.kinematics.harmonics.end()))
-        throw InputError(p.parameter_file,
-                         entry,
-                         "the K0 stresses are the same at every angle: "
-                         "expected Kinematics/Harmonics to include 0 "
-                         "(symmetric)");
-    }
-
-
     /**
-     * A section opened twice, or an entry set twice in one section:
-     * ParameterHandler lets the later win, silently.
+     * Throw ParameterHandler's @p message about the joined lines (includes
+     * expanded) as an InputError naming the file and line the text came
+     * from: ParameterHandler counts the lines of the whole text, "Line <N>
+     * of file <F>".
      */
-    void
-    check_nothing_given_twice(const std::vector<ParameterLine> &lines,
-                              const std::string                &file)
+    [[noreturn]] void
+    throw_at_line(const std::string                &message,
+                  const std::vector<ParameterLine> &lines,
+                  const std::string                &file)
     {
-      std::vector<std::string>             path;
-      std::map<std::string, ParameterLine> first;
-      for (const auto &line : lines)
+      const std::string prefix = "Line <";
+      const auto        begin  = message.find(prefix);
+      const auto        close  = message.find('>', begin);
+      const auto        colon  = message.find(": ", close);
+      if (begin == 0 && close != std::string::npos &&
+          colon != std::string::npos)
         {
-          std::string key;
-          std::string name;
-          for (const auto &p : path)
-            name += p + "/";
-          if (line.kind == ParameterLine::Kind::subsection)
+          const std::string number =
+            message.substr(prefix.size(), close - prefix.size());
+          double n = 0;
+          if (to_number(number, n) && n >= 1 && n <= lines.size())
             {
-              path.push_back(line.name);
-              key = "subsection ";
-              name += line.name;
+              const ParameterLine &line =
+                lines[static_cast<unsigned int>(n) - 1];
+              throw InputError(line.file,
+                               "",
+                               line_position(line, line.file) +
+                                 (line.file == file
+                                    ? std::string()
+                                    : " (included by '" + file + "')") +
+                                 ": " + message.substr(colon + 2));
             }
-          else if (line.kind == ParameterLine::Kind::end)
-            {
-              if (!path.empty())
-                path.pop_back();
-              continue;
-            }
-          else if (line.kind == ParameterLine::Kind::set)
-            {
-              key = "entry ";
-              name += line.name;
-            }
-          else
-            continue;
-          const auto [it, inserted] = first.emplace(key + name, line);
-          if (!inserted)
-            throw InputError(file,
-                             name,
-                             "given twice, at " + position(it->second, file) +
-                               " and " + position(line, file) +
-                               " (the later would silently win); expected "
-                               "each " +
-                               (key == "entry " ? "entry" : "subsection") +
-                               " once");
         }
+      throw InputError(file, "", message);
     }
 
 
@@ -135,20 +74,30 @@ namespace thinlayer
                const std::string &entry)
     {
       if (name.compare(0, kind.size(), kind) != 0 ||
-          (name.size() > kind.size() && name[kind.size()] != ' '))
+          (name.size() > kind.size() &&
+           !std::isspace(static_cast<unsigned char>(name[kind.size()]))))
         return -1;
-      const std::string id = Utilities::trim(name.substr(kind.size()));
-      if (!id.empty() && id.size() <= 10 &&
+      // One form of each id, so that a section is found where it is
+      // declared: "Material 01" would be a section no id declares, and a
+      // tab (which ParameterHandler reads as a space) no form at all.
+      const bool spaced = name.size() > kind.size() && name[kind.size()] == ' ';
+      const std::string id = spaced ? name.substr(kind.size() + 1) : "";
+      if (spaced && !id.empty() && id.size() <= 10 &&
           id.find_first_not_of("0123456789") == std::string::npos &&
-          std::stoul(id) <= max_section_id)
+          (id == "0" || id[0] != '0') && std::stoul(id) <= max_section_id)
         return static_cast<long>(std::stoul(id));
+      std::string shown;
+      for (const char c : name)
+        shown += c == '\t' ? std::string("\\t") : std::string(1, c);
       throw InputError(where,
                        entry,
                        "expected '" + kind +
-                         " <id>' with <id> a whole "
+                         " <id>', one space before <id>, a whole "
                          "number from 0 to " +
                          std::to_string(max_section_id) +
-                         " (a physical group of the mesh), got '" + name + "'");
+                         " without leading zeros or spaces (a physical group "
+                         "of the mesh), got '" +
+                         shown + "'");
     }
 
 
@@ -172,7 +121,7 @@ namespace thinlayer
                     section_id(line.name,
                                kind,
                                file,
-                               "subsection, " + position(line, file));
+                               "subsection, " + line_position(line, file));
                   id >= 0)
                 ids.insert(id);
           }
@@ -213,7 +162,8 @@ namespace thinlayer
       for (const auto &line : lines)
         if (line.kind == ParameterLine::Kind::subsection)
           {
-            const std::string where = "subsection, " + position(line, file);
+            const std::string where =
+              "subsection, " + line_position(line, file);
             if (depth == 0)
               {
                 outer = section_id(line.name, outer_kind, file, where);
@@ -250,63 +200,6 @@ namespace thinlayer
     }
 
 
-    /**
-     * Entries the user gave that mean nothing in this scene: accepted
-     * silently, they would let a user believe they had an effect.
-     */
-    void
-    check_entries_mean_something(const Parameters            &p,
-                                 const std::set<std::string> &given)
-    {
-      const auto refuse_if_given = [&](const std::string &entry,
-                                       const std::string &why) {
-        if (given.count(entry) != 0)
-          throw InputError(p.parameter_file,
-                           entry,
-                           "means nothing " + why + "; expected it unset");
-      };
-      if (!p.kinematics.fourier)
-        for (const char *entry : {"Kinematics/Harmonics",
-                                  "Kinematics/Series",
-                                  "Kinematics/Stations",
-                                  "Kinematics/Axis boundary id",
-                                  "Monitors/Displacement angle"})
-          refuse_if_given(entry,
-                          "in plane strain or 3d (it is for "
-                          "Kinematics/Type = fourier)");
-      // Q8 is the default in 3D too, where it stands for Q20: written out,
-      // it is a mistake.
-      if (p.kinematics.dimension == 3 &&
-          p.discretisation.element_name == "Q8" &&
-          given.count("Discretisation/Element") != 0)
-        throw InputError(p.parameter_file,
-                         "Discretisation/Element",
-                         "Q8 is a quadrilateral; expected Q20 or Q27 in 3d");
-      using Measure = MonitorParameters::DisplacementMeasure;
-      if (p.monitors.displacement_measure == Measure::boundary_average)
-        refuse_if_given("Monitors/Displacement point",
-                        "with Displacement measure = boundary average "
-                        "(it is for the point measure)");
-      else
-        refuse_if_given("Monitors/Displacement boundary id",
-                        "with Displacement measure = point (it is for the "
-                        "boundary average)");
-      using Load = MonitorParameters::LoadMeasure;
-      if (p.monitors.load_measure != Load::reaction)
-        for (const char *entry :
-             {"Monitors/Load boundary id", "Monitors/Load component"})
-          refuse_if_given(entry,
-                          "unless Load measure = reaction (it is for the "
-                          "reactions' resultant)");
-      if (p.monitors.load_measure != Load::stress_average)
-        for (const char *entry :
-             {"Monitors/Load material id", "Monitors/Load stress component"})
-          refuse_if_given(entry,
-                          "unless Load measure = stress average (it is for "
-                          "the averaged stress)");
-    }
-
-
     /// Sections renamed, by their former name: a file that uses one still
     /// runs for one release, with a warning.
     const std::map<std::string, std::string> former_section_names = {
@@ -338,7 +231,7 @@ namespace thinlayer
             const auto renamed = former_section_names.find(line.name);
             if (depth == 0 && renamed != former_section_names.end())
               {
-                warn("'" + file + "', " + position(line, file),
+                warn("'" + file + "', " + line_position(line, file),
                      line.name,
                      renamed->second);
                 line.text = "subsection " + renamed->second;
@@ -503,6 +396,7 @@ namespace thinlayer
       if (p.loading.collapse_resolution > 0)
         p.solver.max_cut_backs = 0;
       p.monitors.parse(prm, file, p.kinematics);
+      check_monitors_and_phases(p);
       p.reference.parse(prm, file, p.mesh);
       p.sweep.parse(prm, file);
       p.output.parse(prm, file);
@@ -518,9 +412,13 @@ namespace thinlayer
 
   Parameters
   ParameterReader::read(const std::string              &file,
-                        const std::vector<std::string> &overrides) const
+                        const std::vector<std::string> &overrides,
+                        std::ostream                   *documented) const
   {
-    return read_from_string(read_parameter_file(file), file, overrides);
+    return read_from_string(read_parameter_file(file),
+                            file,
+                            overrides,
+                            documented);
   }
 
 
@@ -528,13 +426,16 @@ namespace thinlayer
   ParameterReader::read_from_string(
     const std::string              &text,
     const std::string              &file,
-    const std::vector<std::string> &given_overrides) const
+    const std::vector<std::string> &given_overrides,
+    std::ostream                   *documented) const
   {
     std::vector<ParameterLine>     lines     = parameter_lines(text, file);
     std::vector<std::string>       overrides = given_overrides;
     const std::vector<std::string> warnings =
       rename_former_sections(lines, overrides, file);
-    check_nothing_given_twice(lines, file);
+    check_nothing_given_twice(lines, file, overrides);
+    check_numbers_representable(lines, overrides);
+    check_trust_given_on_command_line(lines);
     const auto material_ids =
       ids_of_sections(lines, file, overrides, "Material");
     const auto boundary_ids =
@@ -553,17 +454,50 @@ namespace thinlayer
       }
     catch (const ExceptionBase &e)
       {
-        throw InputError(file, "", message_of(e));
+        throw_at_line(message_of(e), lines, file);
       }
     for (const auto &o : overrides)
       apply_override(prm, o);
 
-    Parameters parameters =
-      parse_sections(prm, file, material_ids, boundary_ids, curve_ids, phases);
-    check_entries_mean_something(parameters, given_entries(lines, overrides));
+    Parameters parameters;
+    try
+      {
+        parameters = parse_sections(
+          prm, file, material_ids, boundary_ids, curve_ids, phases);
+        ParameterHandler defaults;
+        declare_sections(
+          defaults, material_ids, boundary_ids, curve_ids, phases);
+        const std::set<std::string> written = given_entries(lines, overrides);
+        check_entries_mean_something(
+          parameters, entries_off_default(written, prm, defaults), written);
+      }
+    catch (const InputError &e)
+      {
+        // The message names where the entry was set: the line of this
+        // file or of a file it includes, or the command line.
+        const EntrySource source = source_of(e.entry, lines, overrides);
+        if (e.file != file || source.file.empty())
+          throw;
+        throw InputError(source.file,
+                         e.entry,
+                         e.expected + (source.line.empty()
+                                         ? std::string()
+                                         : " (" + source.line + ")"));
+      }
+    // Q8 stands for Q20 in 3D; the record names the element itself, so
+    // that it runs again as given.
+    if (parameters.kinematics.dimension == 3 &&
+        parameters.discretisation.element_name == "Q8")
+      {
+        prm.enter_subsection("Discretisation");
+        prm.set("Element", "Q20");
+        prm.leave_subsection();
+      }
     // The record names the mesh by its absolute path, so that it can be
-    // run again from anywhere.
+    // run again from anywhere; it trusts no script (only a command line
+    // can).
     prm.enter_subsection("Mesh");
+    prm.set("Trust geometry scripts", false);
     prm.set("File",
             std::filesystem::absolute(parameters.mesh.file)
               .lexically_normal()
@@ -574,6 +508,11 @@ namespace thinlayer
     for (const auto &o : overrides)
       effective << " -s \"" << o << '"';
     effective << '\n';
+    if (documented != nullptr)
+      {
+        *documented << effective.str();
+        prm.print_parameters(*documented, ParameterHandler::PRM);
+      }
     prm.print_parameters(effective, ParameterHandler::ShortPRM);
     parameters.effective_parameters = effective.str();
     parameters.warnings             = warnings;

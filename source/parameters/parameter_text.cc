@@ -101,6 +101,14 @@ namespace thinlayer
   } // namespace
 
 
+  std::string
+  line_position(const ParameterLine &line, const std::string &file)
+  {
+    return "line " + std::to_string(line.line) +
+           (line.file == file ? std::string() : " of '" + line.file + "'");
+  }
+
+
   ParameterLine
   scan_parameter_line(const std::string &text)
   {
@@ -233,12 +241,11 @@ namespace thinlayer
   }
 
 
-  std::set<std::string>
-  given_entries(const std::vector<ParameterLine> &lines,
-                const std::vector<std::string>   &overrides)
+  std::vector<std::pair<const ParameterLine *, std::string>>
+  set_entries(const std::vector<ParameterLine> &lines)
   {
-    std::set<std::string>    given;
-    std::vector<std::string> path;
+    std::vector<std::pair<const ParameterLine *, std::string>> entries;
+    std::vector<std::string>                                   path;
     for (const auto &line : lines)
       if (line.kind == ParameterLine::Kind::subsection)
         path.push_back(line.name);
@@ -249,8 +256,19 @@ namespace thinlayer
           std::string name;
           for (const auto &p : path)
             name += p + "/";
-          given.insert(name + line.name);
+          entries.emplace_back(&line, name + line.name);
         }
+    return entries;
+  }
+
+
+  std::set<std::string>
+  given_entries(const std::vector<ParameterLine> &lines,
+                const std::vector<std::string>   &overrides)
+  {
+    std::set<std::string> given;
+    for (const auto &[line, path] : set_entries(lines))
+      given.insert(path);
     for (const auto &o : overrides)
       given.insert(entry_path(o.substr(0, o.find('='))));
     return given;

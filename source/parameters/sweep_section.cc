@@ -32,16 +32,20 @@ namespace thinlayer
                              "expected 'name = v1, v2, ...' (a geometry "
                              "parameter or Section/Entry), got '" +
                                item + "'");
-          if (key == "Output/Directory" || key == "Sweep/Values")
+          if (key == "Output/Directory" || key == "Sweep/Values" ||
+              key == "Mesh/Trust geometry scripts")
             throw InputError(file,
                              "Sweep/Values",
                              "'" + key + "' cannot be swept: " +
                                (key == "Sweep/Values"
                                   ? std::string("a sweep does not sweep "
                                                 "itself")
-                                  : std::string("every run of a sweep "
+                                : key == "Output/Directory"
+                                  ? std::string("every run of a sweep "
                                                 "writes into run-NNN of the "
-                                                "sweep's directory")));
+                                                "sweep's directory")
+                                  : std::string("only the command line can "
+                                                "trust a geometry script")));
           for (const auto &[earlier, v] : sweep)
             if (earlier == key)
               throw InputError(file,

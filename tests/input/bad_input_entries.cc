@@ -83,7 +83,7 @@ namespace
   check_meaningless_entries()
   {
     check("Fourier harmonics in plane strain",
-          {"good.prm", "-s", "Kinematics/Harmonics=1"});
+          {"good.prm", "-s", "Kinematics/Harmonics=1, 3"});
     check("Fourier stations in plane strain",
           {"good.prm", "-s", "Kinematics/Stations=0, 90, 180"});
     check("a Fourier axis boundary id in plane strain",
@@ -230,6 +230,114 @@ namespace
       many += "1e-" + std::to_string(k % 9 + 2) + (k < 50 ? ", " : "");
     check("a sweep of 1000 x 50 runs, over the cap", {"good.prm", "-s", many});
   }
+
+
+  /// Entries accepted without a word that the run could not honour.
+  void
+  check_silent_entries()
+  {
+    const std::string phases =
+      "subsection Phase 2\n  set Name = unloading\n  subsection Boundary 2\n"
+      "    set Traction = 0; 0.5\n  end\nend\n"
+      "subsection Phase 3\n  set Name = unloading\n  subsection Boundary 2\n"
+      "    set Traction = 0; -0.5\n  end\nend\n";
+    write("same-names.prm", scene("good.geo", "", phases));
+    check("two phases of one name", {"same-names.prm"});
+    write("loading-name.prm",
+          scene("good.geo",
+                "",
+                "subsection Phase 2\n  set Name = loading\n"
+                "  subsection Boundary 2\n    set Traction = 0; 0.5\n  end\n"
+                "end\n"));
+    check("a phase named like the loading", {"loading-name.prm"});
+    write("reduced-twice.prm",
+          scene("good.geo",
+                "  set Yield criterion = tresca\n  set Cohesion = 10\n",
+                "subsection Strength reduction\n  set Materials = 1, 1\n"
+                "end\n"));
+    check("Strength reduction/Materials = 1, 1", {"reduced-twice.prm"});
+    check("a reaction read off a boundary that constrains nothing",
+          {"good.prm",
+           "-s",
+           "Monitors/Load measure=reaction",
+           "-s",
+           "Monitors/Load boundary id=2"});
+    check("Linear solver iterations with cholmod",
+          {"good.prm", "-s", "Solver/Linear solver iterations=5"});
+    check("Linear solver tolerance with umfpack",
+          {"good.prm",
+           "-s",
+           "Solver/Linear solver=umfpack",
+           "-s",
+           "Solver/Linear solver tolerance=1e-6"});
+    // The valid scene as the r-z plane of a Fourier body.
+    write("fourier.prm",
+          "subsection Mesh\n  set File = good.geo\nend\n"
+          "subsection Kinematics\n  set Type = fourier\n"
+          "  set Axis boundary id = 3\nend\n"
+          "subsection Material 1\nend\nsubsection Material 2\nend\n"
+          "subsection Boundary 1\n  set Constrained components = r, z, theta"
+          "\nend\n"
+          "subsection Boundary 2\n  set Traction = 1; -1; 0\nend\n"
+          "subsection Monitors\n  set Displacement boundary id = 2\nend\n"
+          "subsection Output\n  set Directory = results\nend\n");
+    check("a Fourier body with a unit weight but no harmonic 0",
+          {"fourier.prm", "-s", "Material 1/Unit weight=1"});
+    check("gravity loading of a Fourier body in the antisymmetric series",
+          {"fourier.prm",
+           "-s",
+           "Kinematics/Harmonics=0",
+           "-s",
+           "Kinematics/Series=antisymmetric",
+           "-s",
+           "Material 2/Unit weight=1",
+           "-s",
+           "Initial state/Procedure=gravity loading"});
+  }
+
+
+  /// The record of a run and the printed parameters run as given.
+  void
+  check_records()
+  {
+    const std::string valid = summary_entry("previous", "final_displacement");
+    std::filesystem::copy_file(
+      "previous/parameters.prm",
+      "record.prm",
+      std::filesystem::copy_options::overwrite_existing);
+    check("(the record of the valid run, parameters.prm: run as designed, "
+          "into the same directory)",
+          {"record.prm"});
+    std::cout << "  the same displacement as the valid run: "
+              << (summary_entry("results", "final_displacement") == valid
+                    ? "yes"
+                    : "NO")
+              << "\n\n";
+
+    std::ostringstream printed, err;
+    const int          status =
+      thinlayer::run_command_line({"good.prm", "--print-parameters"},
+                                  printed,
+                                  err);
+    write("printed.prm", printed.str());
+    std::cout << "* good.prm --print-parameters: exit status " << status
+              << ", entries documented: "
+              << (printed.str().find("\n  # ") != std::string::npos ? "yes"
+                                                                    : "NO")
+              << "\n\n";
+    check("(what it printed: run as designed)", {"printed.prm"});
+    std::cout << "  the same displacement as the valid run: "
+              << (summary_entry("results", "final_displacement") == valid
+                    ? "yes"
+                    : "NO")
+              << "\n\n";
+
+    std::ostringstream defaults;
+    thinlayer::run_command_line({"--print-parameters"}, defaults, err);
+    write("defaults.prm", defaults.str());
+    check("the defaults --print-parameters prints, which name no mesh",
+          {"defaults.prm"});
+  }
 } // namespace
 
 
@@ -243,4 +351,6 @@ main()
   check_sweeps();
   check_reference_expectations();
   check_former_names();
+  check_silent_entries();
+  check_records();
 }

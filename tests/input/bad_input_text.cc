@@ -130,6 +130,124 @@ namespace
     check("a thin layer of material id 300, which the file does not describe "
           "(ids above 255 are read)",
           {"good.prm", "-s", "Layers/Material ids=300"});
+    std::string padded = scene();
+    padded.replace(padded.find("subsection Material 1\n"),
+                   22,
+                   "subsection Material 01\n");
+    write("padded-id.prm", padded);
+    check("a section 'Material 01' (a leading zero)", {"padded-id.prm"});
+    std::string tabbed = scene();
+    tabbed.replace(tabbed.find("subsection Material 1\n"),
+                   22,
+                   "subsection Material\t1\n");
+    write("tabbed-id.prm", tabbed);
+    check("a section 'Material<tab>1'", {"tabbed-id.prm"});
+  }
+
+
+  /// A decimal comma, which the expression parser reads as its comma
+  /// operator (1,5 is 5), in every kind of expression.
+  void
+  check_decimal_commas()
+  {
+    check("a decimal comma in a traction (0; -1,5)",
+          {"good.prm", "-s", "Boundary 2/Traction=0; -1,5"});
+    check("a decimal comma in a pressure",
+          {"good.prm",
+           "-s",
+           "Boundary 2/Traction=0; 0",
+           "-s",
+           "Boundary 2/Pressure=1,5"});
+    check("a decimal comma in a prescribed displacement",
+          {"good.prm",
+           "-s",
+           "Boundary 2/Traction=0; 0",
+           "-s",
+           "Boundary 2/Constrained components=y",
+           "-s",
+           "Boundary 2/Displacement=0; -0,001"});
+    check("a decimal comma in the analytic load",
+          {"good.prm", "-s", "Reference/Analytic load=2,5"});
+    check("(a function of two arguments keeps its comma: run as designed)",
+          {"good.prm",
+           "-s",
+           "Boundary 2/Traction=0; -min(1, 2)",
+           "-s",
+           "Output/Directory=elsewhere"});
+  }
+
+
+  /// Numbers a double does not hold at full precision, which
+  /// ParameterHandler cannot convert.
+  void
+  check_numbers()
+  {
+    check("a Young's modulus of 1e-320 (below the smallest normal double)",
+          {"good.prm", "-s", "Material 1/Young's modulus=1e-320"});
+    check("a tolerance of 1e-310",
+          {"good.prm", "-s", "Solver/Tolerance=1e-310"});
+    check("a Poisson's ratio of 4.9e-324",
+          {"good.prm", "-s", "Material 1/Poisson's ratio=4.9e-324"});
+    check("a unit weight of 1e400 (beyond the largest double)",
+          {"good.prm", "-s", "Material 1/Unit weight=1e400"});
+    write("tiny-cohesion.prm",
+          scene("good.geo",
+                "  set Yield criterion = tresca\n  set Cohesion = 2e-315\n"));
+    check("a cohesion of 2e-315 in the file (named with its line)",
+          {"tiny-cohesion.prm"});
+    check("a traction of 1e-320 in an expression",
+          {"good.prm", "-s", "Boundary 2/Traction=0; -1e-320"});
+    check("a load increment of 1e-320",
+          {"good.prm", "-s", "Loading/Load increments=1e-320"});
+    check("(a name and a directory with such digits in them: run as "
+          "designed)",
+          {"good.prm",
+           "-s",
+           "Material 1/Name=sand1e-999",
+           "-s",
+           "Output/Directory=run1e-999"});
+  }
+
+
+  /// Overrides given twice, and entries set back to their default.
+  void
+  check_overrides()
+  {
+    check("one entry overridden twice",
+          {"good.prm",
+           "-s",
+           "Material 1/Young's modulus=5",
+           "-s",
+           "Material 1 / Young's modulus = 6"});
+    write("fourier-only.prm",
+          scene() + "subsection Kinematics\n  set Harmonics = 1, 3\nend\n");
+    check("(an entry that means nothing here, set back to its default by "
+          "-s: run as designed)",
+          {"fourier-only.prm",
+           "-s",
+           "Kinematics/Harmonics=1",
+           "-s",
+           "Output/Directory=elsewhere"});
+  }
+
+
+  /// Errors inside an included file name that file and its own line.
+  void
+  check_included_errors()
+  {
+    write("inner.prm",
+          "# the materials\n\nsubsection Material 2\n"
+          "  set Youngs modulus = 5\nend\n");
+    std::string outer = scene();
+    outer.replace(outer.find("subsection Material 2\nend\n"),
+                  26,
+                  "include inner.prm\n");
+    write("outer.prm", "# a scene\n" + outer);
+    check("an unknown entry in an included file", {"outer.prm"});
+    write("inner.prm",
+          "# the materials\n\nsubsection Material 2\n"
+          "  set Young's modulus = 0\nend\n");
+    check("a value refused in an included file", {"outer.prm"});
   }
 } // namespace
 
@@ -142,4 +260,8 @@ main()
   check_long_lines();
   check_not_text();
   check_section_ids();
+  check_decimal_commas();
+  check_numbers();
+  check_overrides();
+  check_included_errors();
 }

@@ -22,7 +22,7 @@ namespace thinlayer
     csv_number(const double value);
 
     /// A CSV field, quoted where it holds a comma, a quote or a line break
-    /// (RFC 4180; line breaks become spaces).
+    /// (RFC 4180, as CSV libraries read it); a line break becomes a space.
     std::string
     csv_field(const std::string &text);
   } // namespace text_format

@@ -27,16 +27,21 @@ namespace thinlayer
      */
     Parameters
     read(const std::string              &file,
-         const std::vector<std::string> &overrides = {}) const;
+         const std::vector<std::string> &overrides  = {},
+         std::ostream                   *documented = nullptr) const;
 
     /**
      * Same as read(), from the text of a parameter file; @p file_name is
-     * used in messages and to resolve the mesh path.
+     * used in messages and to resolve the mesh path. Where @p documented is
+     * given, every entry as used, each with its documentation, is written
+     * there (what --print-parameters prints for a scene: a file that runs
+     * as given).
      */
     Parameters
     read_from_string(const std::string              &text,
                      const std::string              &file_name,
-                     const std::vector<std::string> &overrides = {}) const;
+                     const std::vector<std::string> &overrides = {},
+                     std::ostream *documented                  = nullptr) const;
 
     /**
      * Every entry with its documentation and default, with one example

@@ -3,6 +3,7 @@
 
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace thinlayer
@@ -55,6 +56,13 @@ namespace thinlayer
   };
 
 
+  /**
+   * Where @p line is, for messages about @p file: "line 7", or "line 7 of
+   * 'FILE'" for a line of a file that @p file includes.
+   */
+  std::string
+  line_position(const ParameterLine &line, const std::string &file);
+
   /// Classify one line of a parameter file (without its comment).
   ParameterLine
   scan_parameter_line(const std::string &text);
@@ -90,6 +98,11 @@ namespace thinlayer
   /// The lines as one text that ParameterHandler reads (includes expanded).
   std::string
   joined_text(const std::vector<ParameterLine> &lines);
+
+  /// Each set line of @p lines with the path "Section/Sub/Entry" of the
+  /// entry it sets.
+  std::vector<std::pair<const ParameterLine *, std::string>>
+  set_entries(const std::vector<ParameterLine> &lines);
 
   /**
    * "Section/Sub/Entry" of every entry that @p lines set, and of every
