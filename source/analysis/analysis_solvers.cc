@@ -8,11 +8,13 @@
 #include <thinlayer/analysis/analysis.h>
 #include <thinlayer/analysis/rigid_body_modes.h>
 #include <thinlayer/base/input_error.h>
+#include <thinlayer/base/text_format.h>
 #include <thinlayer/parallel/mpi.h>
 #include <thinlayer/solvers/singular_matrix.h>
 
 #include <algorithm>
 #include <limits>
+#include <tuple>
 
 namespace thinlayer
 {
@@ -142,20 +144,90 @@ namespace thinlayer
     if (kinematics.is_fourier())
       return;
     const OwnedDofPlaces places = owned_dof_places();
-    const std::string    motion =
+    const FreeMotion     motion =
       mpi::n_ranks() == 1
-           ? free_rigid_body_motion(places,
+            ? free_rigid_body_motion(places,
                                  systems[0]->constraints,
                                  systems[0]->condensed_stiffness)
-           : free_rigid_body_motion(places,
+            : free_rigid_body_motion(places,
                                  systems[0]->constraints,
                                  *systems[0]->distributed_stiffness);
-    if (!motion.empty())
+    if (motion.description.empty())
+      return;
+    // Rounding leaves about 1e-15 of a motion nothing holds; more is a
+    // motion the supports hold through a stiffness rounding swamps.
+    if (motion.resistance > 1e-13)
+      throw_ill_conditioned(motion.description, motion.resistance);
+    throw InputError(parameters.parameter_file,
+                     "Boundary <id>/Constrained components",
+                     "the supports leave the body free to move: " +
+                       motion.description +
+                       " meets no constrained component; constrain enough "
+                       "components to prevent every rigid-body motion");
+  }
+
+
+  template <int dim>
+  void
+  Analysis<dim>::throw_ill_conditioned(const std::string &motion,
+                                       const double       resistance) const
+  {
+    using text_format::printf;
+    // The largest ratio of bulk to shear modulus, K / G = 2 (1 + nu) /
+    // (3 (1 - 2 nu)), and the range of Young's moduli.
+    double             bulk_ratio = 0, stiffest = 0;
+    double             softest        = std::numeric_limits<double>::max();
+    types::material_id incompressible = 0, hard = 0, soft = 0;
+    for (const auto &[id, material] : parameters.materials)
+      {
+        const double nu    = material.poissons_ratio;
+        const double ratio = 2 * (1 + nu) / (3 * (1 - 2 * nu));
+        if (ratio > bulk_ratio)
+          std::tie(bulk_ratio, incompressible) = std::make_pair(ratio, id);
+        if (material.youngs_modulus > stiffest)
+          std::tie(stiffest, hard) =
+            std::make_pair(material.youngs_modulus, id);
+        if (material.youngs_modulus < softest)
+          std::tie(softest, soft) = std::make_pair(material.youngs_modulus, id);
+      }
+    const std::string held =
+      "the stiffness is too ill-conditioned for a solution to be trusted: "
+      "the supports hold every rigid-body motion, but " +
+      motion + " meets a stiffness only " + printf("%.1e", resistance) +
+      " of the body's, which rounding (1e-15 of it) swamps: ";
+    using Material = MaterialParameters;
+    // The cause: the larger of the two ratios.
+    if (bulk_ratio >= stiffest / softest && bulk_ratio > 100)
+      throw InputError(
+        parameters.parameter_file,
+        Material::section(incompressible) + "/Poisson's ratio",
+        held + "its Poisson's ratio " +
+          printf("%.15g",
+                 parameters.materials.at(incompressible).poissons_ratio) +
+          " makes its bulk modulus " + printf("%.1e", bulk_ratio) +
+          " times its shear modulus; expected a Poisson's "
+          "ratio further from 0.5 (0.49 is nearly "
+          "incompressible)");
+    if (stiffest / softest > 100)
       throw InputError(parameters.parameter_file,
-                       "Boundary <id>/Constrained components",
-                       "the supports leave the body free to move: " + motion +
-                         " meets no constrained component; constrain enough "
-                         "components to prevent every rigid-body motion");
+                       Material::section(soft) + "/Young's modulus",
+                       held + "the Young's moduli range from " +
+                         printf("%g", softest) + " (" +
+                         Material::section(soft) + ") to " +
+                         printf("%g", stiffest) + " (" +
+                         Material::section(hard) + "), a ratio of " +
+                         printf("%.1e", stiffest / softest) +
+                         "; expected moduli closer to each other");
+    if (!parameters.interface_elements.empty())
+      throw InputError(parameters.parameter_file,
+                       "Interface curve <id>/Normal stiffness",
+                       held + "expected interface elements stiffer against the "
+                              "cells beside them, or supports that hold the "
+                              "body more firmly");
+    throw InputError(parameters.parameter_file,
+                     "Boundary <id>/Constrained components",
+                     held + "expected supports that hold the body more firmly, "
+                            "or cells of less extreme shape");
   }
 
 
@@ -401,6 +473,8 @@ namespace thinlayer
   template void
   Analysis<2>::throw_singular(const unsigned int) const;
   template void
+  Analysis<2>::throw_ill_conditioned(const std::string &, const double) const;
+  template void
   Analysis<3>::elastic_solve(ModeVectors &);
   template OwnedDofPlaces
   Analysis<3>::owned_dof_places() const;
@@ -416,4 +490,6 @@ namespace thinlayer
   Analysis<3>::time_substitution();
   template void
   Analysis<3>::throw_singular(const unsigned int) const;
+  template void
+  Analysis<3>::throw_ill_conditioned(const std::string &, const double) const;
 } // namespace thinlayer

@@ -96,7 +96,7 @@ namespace thinlayer
      * makes of them: @p image = K r and @p scale = |K| |r| on this rank's
      * rows, zero on the constrained ones.
      */
-    std::string
+    FreeMotion
     free_motion(const Point<3>    &centre,
                 const double       size,
                 const unsigned int dimension,
@@ -133,8 +133,9 @@ namespace thinlayer
             image[k] /= r(k, k);
         }
       r.compute_svd();
-      if (!(r.singular_value(n_motions - 1) < 1e-9))
-        return "";
+      const double resistance = r.singular_value(n_motions - 1);
+      if (!(resistance < 1e-9))
+        return {"", resistance};
 
       // The free motion, in the motions' own units: a translation t and a
       // rotation w (about z in the plane), u(x) = t + w x (x - centre) /
@@ -174,11 +175,12 @@ namespace thinlayer
           for (unsigned int d = 0; d < dimension; ++d)
             point += (d == 0 ? "(" : ", ") + coordinate(through[d]);
           point += ")";
-          return dimension == 2 ? "a rotation about " + point
-                                : "a rotation about the axis " + direction(w) +
-                                    " through " + point;
+          return {dimension == 2 ? "a rotation about " + point
+                                 : "a rotation about the axis " + direction(w) +
+                                     " through " + point,
+                  resistance};
         }
-      return "a translation in the direction " + direction(t);
+      return {"a translation in the direction " + direction(t), resistance};
     }
 
 
@@ -188,7 +190,7 @@ namespace thinlayer
      * columns are @p columns.
      */
     template <typename EntryWalk>
-    std::string
+    FreeMotion
     check_rows(const OwnedDofPlaces            &places,
                const AffineConstraints<double> &constraints,
                const IndexSet                  &columns,
@@ -272,7 +274,7 @@ namespace thinlayer
   }
 
 
-  std::string
+  FreeMotion
   free_rigid_body_motion(const OwnedDofPlaces            &places,
                          const AffineConstraints<double> &constraints,
                          const SparseMatrix<double>      &condensed_stiffness)
@@ -289,7 +291,7 @@ namespace thinlayer
   }
 
 
-  std::string
+  FreeMotion
   free_rigid_body_motion(
     const OwnedDofPlaces                   &places,
     const AffineConstraints<double>        &constraints,

@@ -218,11 +218,19 @@ namespace thinlayer
   DisplacementMeasure
   Monitors<dim>::displacement() const
   {
+    return displacement_of(analysis.displacements());
+  }
+
+
+  template <int dim>
+  DisplacementMeasure
+  Monitors<dim>::displacement_of(const ModeVectors &modes) const
+  {
     const double      s          = parameters.displacement_scale;
     const double      theta      = parameters.displacement_angle;
     const Kinematics &kinematics = analysis.get_kinematics();
     const auto       &fe         = analysis.get_dof_handler().get_fe();
-    const ModeVector  u          = analysis.displacement_at(theta);
+    const ModeVector  u          = analysis.displacement_at(theta, modes);
     // The monitored Cartesian component from the nodal components: for
     // Fourier x = u_r cos(theta) - u_theta sin(theta), y = u_z.
     // In 3D the third is u_z.

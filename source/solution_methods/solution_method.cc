@@ -28,6 +28,14 @@ namespace thinlayer
 
 
   template <int dim>
+  bool
+  SolutionMethod<dim>::returns_stresses_to_surface() const
+  {
+    return true;
+  }
+
+
+  template <int dim>
   void
   SolutionMethod<dim>::report_acceptance_to(SolutionMethod<dim> &composite)
   {

@@ -137,6 +137,14 @@ namespace thinlayer
   }
 
 
+  template <int dim>
+  bool
+  ViscoplasticMethod<dim>::returns_stresses_to_surface() const
+  {
+    return false;
+  }
+
+
   template class ViscoplasticMethod<2>;
   template class ViscoplasticMethod<3>;
 } // namespace thinlayer

@@ -6,6 +6,9 @@
 #include <thinlayer/stepping/phases.h>
 #include <thinlayer/stepping/programme.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace thinlayer
 {
   template <int dim>
@@ -98,6 +101,28 @@ namespace thinlayer
 
 
   template <int dim>
+  double
+  Phases<dim>::elastic_displacement_of_carried_loads()
+  {
+    // The accepted state's internal forces balance what it carries (its
+    // reactions vanish as the constraints are condensed).
+    ModeVectors u = analysis.new_mode_vectors();
+    for (unsigned int m = 0; m < analysis.n_modes(); ++m)
+      {
+        u[m] = analysis.internal_forces()[m];
+        analysis.mode_system(m).condense(u[m]);
+      }
+    analysis.elastic_solve(u);
+    for (unsigned int m = 0; m < analysis.n_modes(); ++m)
+      {
+        analysis.mode_system(m).distribute(u[m]);
+        u[m].update_ghost_values();
+      }
+    return monitors.displacement_of(u).mean;
+  }
+
+
+  template <int dim>
   ProgrammeResult
   Phases<dim>::run(OutputWriter &writer, RunSummary &summary)
   {
@@ -183,6 +208,9 @@ namespace thinlayer
     if (p.strength_reduction.active())
       {
         out << "  strength reduction" << std::endl;
+        const double scale =
+          std::max(std::abs(elastic_displacement_of_carried_loads()),
+                   std::abs(monitors.displacement().mean));
         analysis.begin_phase(Loads::none, true);
         solver.begin_phase();
         summary.phase                = "strength reduction";
@@ -192,7 +220,8 @@ namespace thinlayer
                                                   {p.strength_reduction.factor_increments,
                                                    p.loading.collapse_resolution},
                                                   steps,
-                                                  true});
+                                                  true,
+                                                  scale});
         judge(result, true, summary);
       }
     return result;

@@ -51,6 +51,12 @@ namespace thinlayer
         out << "  probe beyond the failed step: converged (not accepted)";
       else if (result.converged)
         out << "  converged against its load: not accepted";
+      else if (result.outside_surface)
+        out << "  met the test with stresses outside the yield surface "
+               "(round-off): "
+            << (next == LoadStepping::Next::retry
+                  ? "cut back (its state is in history.csv)"
+                  : "FAILED");
       else if (next == LoadStepping::Next::retry)
         out << "  failed: cut back (its state is in history.csv)";
       else if (result.non_finite)
@@ -68,6 +74,11 @@ namespace thinlayer
   ProgrammeResult
   Programme<dim>::run()
   {
+    result.displacement_offset = phase.displacement_offset;
+    // A strength reduction starts from the state of the phase before it,
+    // converged at F = 1: the lower end of its bracket.
+    if (phase.strength_reduction)
+      result.last_converged_load = 1;
     // An easy step: at most a quarter of the constant-stiffness
     // iteration limit (Newton's steps take a few iterations each).
     LoadStepping stepping(loading,
@@ -134,14 +145,9 @@ namespace thinlayer
         result.against_load       = a.against_load;
         result.non_finite         = a.result.non_finite;
         result.failed_load_factor = a.load_factor;
-        result.bracket_resolved =
-          stepping.automatic() &&
-          std::abs(a.load_factor - result.last_converged_load_factor) <=
-            (1 + 1e-9) * loading.collapse_resolution *
-              std::max(std::abs(a.load_factor),
-                       std::abs(loading.load_increments.front()));
-        result.stiffness_ratio = a.stiffness_ratio;
-        result.growth_ratio    = a.result.growth_ratio;
+        result.bracket_resolved   = stepping.automatic() && bracket_resolved(a);
+        result.stiffness_ratio    = a.stiffness_ratio;
+        result.growth_ratio       = a.result.growth_ratio;
         if (stepping.automatic() && !a.result.non_finite && !a.against_load &&
             under_load() &&
             !shows_mechanism(a.stiffness_ratio, a.result.growth_ratio))
@@ -149,6 +155,52 @@ namespace thinlayer
         break;
       }
     return result;
+  }
+
+
+  template <int dim>
+  bool
+  Programme<dim>::bracket_resolved(const Attempt &failed) const
+  {
+    const double resolution = (1 + 1e-9) * loading.collapse_resolution;
+    // The phase's load at both ends (a strength reduction's F = 1 + load
+    // factor), the bracket's width against the larger.
+    const double origin  = phase.strength_reduction ? 1 : 0;
+    const double reached = origin + result.last_converged_load_factor;
+    const double beyond  = origin + failed.load_factor;
+    if (result.any_step_converged || reached != 0)
+      return std::abs(beyond - reached) <=
+             resolution * std::max(std::abs(beyond), std::abs(reached));
+    // No state converged, and the bracket is [0, beyond]: a collapse at 0
+    // is bracketed only where the body's strength has no scale, so that a
+    // step that fails at a fraction of the programme's first step fails at
+    // every fraction of it (a cohesionless interface sliding under any
+    // load). Elsewhere the halving merely ran out before the load came
+    // down to the collapse load.
+    return strength_has_no_scale() &&
+           std::abs(beyond) <=
+             resolution * std::abs(loading.load_increments.front());
+  }
+
+
+  template <int dim>
+  bool
+  Programme<dim>::strength_has_no_scale() const
+  {
+    if (phase.steps_before > 0 ||
+        p.initial_state.procedure != InitialStateParameters::Procedure::none)
+      return false;
+    for (const auto &[id, material] : p.materials)
+      if (material.unit_weight > 0 ||
+          (material.yield_criterion != YieldCriterion::elastic &&
+           material.cohesion > 0))
+        return false;
+    for (const auto &[id, curve] : p.interface_elements)
+      if (curve.criterion != InterfaceElementParameters::Criterion::elastic &&
+          (curve.adhesion > 0 || (std::isfinite(curve.tensile_strength) &&
+                                  curve.tensile_strength > 0)))
+        return false;
+    return true;
   }
 
 
@@ -207,8 +259,9 @@ namespace thinlayer
         a.against_load     = true;
       }
     const double displacement = result.displacement.mean;
+    const double offset       = phase.displacement_offset;
     if (a.result.converged)
-      a.rise = plateau_rise(result.curve, displacement, a.load);
+      a.rise = plateau_rise(result.curve, displacement, a.load, offset);
     const bool automatic = loading.collapse_resolution > 0;
     a.on_mechanism       = a.result.converged && automatic && under_load() &&
                      a.stiffness_ratio >= 0 &&
@@ -223,9 +276,10 @@ namespace thinlayer
     if (a.result.converged && automatic && !result.curve.empty())
       {
         const CurvePoint &before = result.curve.back();
-        a.doubled =
-          before.displacement * displacement > 0 && before.load * a.load > 0 &&
-          displacement / before.displacement > 2 * a.load / before.load;
+        const double from = offset_displacement(before.displacement, offset);
+        const double to   = offset_displacement(displacement, offset);
+        a.doubled         = from * to > 0 && before.load * a.load > 0 &&
+                    to / from > 2 * a.load / before.load;
       }
     return a;
   }
@@ -304,7 +358,10 @@ namespace thinlayer
         result.plateau_displacement = result.displacement.mean;
         result.plateau_rise         = a.rise;
         result.plateau_from_displacement =
-          state_at_half(result.curve, result.displacement.mean)->displacement;
+          state_at_half(result.curve,
+                        result.displacement.mean,
+                        phase.displacement_offset)
+            ->displacement;
       }
     result.curve.push_back({result.displacement.mean, a.load});
     result.last_stiffness             = stiffness;

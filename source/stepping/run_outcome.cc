@@ -26,13 +26,22 @@ namespace thinlayer
   }
 
 
+  double
+  offset_displacement(const double displacement, const double offset)
+  {
+    return displacement < 0 ? displacement - offset : displacement + offset;
+  }
+
+
   const CurvePoint *
   state_at_half(const std::vector<CurvePoint> &states,
-                const double                   displacement)
+                const double                   displacement,
+                const double                   offset)
   {
+    const double d = offset_displacement(displacement, offset);
     for (auto state = states.rbegin(); state != states.rend(); ++state)
-      if (state->displacement * displacement > 0 &&
-          std::abs(state->displacement) <= std::abs(displacement) / 2)
+      if (const double ds = offset_displacement(state->displacement, offset);
+          ds * d > 0 && std::abs(ds) <= std::abs(d) / 2)
         return &*state;
     return nullptr;
   }
@@ -41,9 +50,10 @@ namespace thinlayer
   double
   plateau_rise(const std::vector<CurvePoint> &states,
                const double                   displacement,
-               const double                   load)
+               const double                   load,
+               const double                   offset)
   {
-    const CurvePoint *half = state_at_half(states, displacement);
+    const CurvePoint *half = state_at_half(states, displacement, offset);
     return half != nullptr && half->load * load > 0
              ? load / half->load - 1
              : std::numeric_limits<double>::quiet_NaN();
@@ -83,8 +93,18 @@ namespace thinlayer
              printf("%.6g", run.plateau_load_factor) + ": it rose " +
              printf("%+.3f", 100 * run.plateau_rise) +
              "% while the displacement grew from " +
-             printf("%.4g", run.plateau_from_displacement) + " to " +
-             printf("%.4g", run.plateau_displacement) +
+             printf("%.4g",
+                    offset_displacement(run.plateau_from_displacement,
+                                        run.displacement_offset)) +
+             " to " +
+             printf("%.4g",
+                    offset_displacement(run.plateau_displacement,
+                                        run.displacement_offset)) +
+             (run.displacement_offset != 0
+                ? " (the phase's own displacement with " +
+                    printf("%.4g", run.displacement_offset) +
+                    ", the scale of its growth, added)"
+                : std::string()) +
              ", at least doubling (at most the collapse resolution: on a "
              "curve levelling off like a hyperbola the fraction of the limit "
              "still to come equals that rise, so the limit lies between " +
@@ -157,7 +177,8 @@ namespace thinlayer
                                        ? std::numeric_limits<double>::quiet_NaN()
                                        : plateau_rise(run.curve,
                                                  run.curve.back().displacement,
-                                                 run.curve.back().load);
+                                                 run.curve.back().load,
+                                                 run.displacement_offset);
             const std::string stiffness =
               "its last step's stiffness below " +
               printf("%g", plateau_stiffness_ratio) + " of the first step's";

@@ -7,6 +7,7 @@ namespace thinlayer
                               Analysis<dim>          &analysis)
     : analysis(analysis)
     , method(create_solution_method(parameters, analysis))
+    , tolerance(parameters.tolerance)
   {
     method->initialize();
   }
@@ -28,6 +29,12 @@ namespace thinlayer
       {
         result.non_finite = true;
         result.converged  = false;
+      }
+    else if (result.converged && method->returns_stresses_to_surface() &&
+             result.max_yield_ratio > 10 * tolerance)
+      {
+        result.outside_surface = true;
+        result.converged       = false;
       }
     return result;
   }

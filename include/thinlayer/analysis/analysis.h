@@ -512,6 +512,14 @@ namespace thinlayer
     [[noreturn]] void
     throw_singular(const unsigned int m) const;
 
+    /// An InputError for a rigid-body @p motion the supports hold only
+    /// through a stiffness rounding swamps (its @p resistance, as
+    /// FreeMotion has it), naming the likely cause: the largest ratio of
+    /// bulk to shear modulus, or the range of Young's moduli.
+    [[noreturn]] void
+    throw_ill_conditioned(const std::string &motion,
+                          const double       resistance) const;
+
     /// Set the internal forces from every group's current stresses.
     void
     compute_internal_forces();

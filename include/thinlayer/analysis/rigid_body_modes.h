@@ -44,11 +44,25 @@ namespace thinlayer
                      const unsigned int    n_components);
 
 
+  /// A rigid-body motion that the supports may leave free, and how firmly
+  /// they hold it (free_rigid_body_motion()).
+  struct FreeMotion
+  {
+    /// The motion, described; empty if the supports hold every one.
+    std::string description;
+    /// The smallest singular value of the scaled K R: about 1e-15 for a
+    /// motion nothing holds, between that and 1e-9 for one held only
+    /// through a stiffness that rounding swamps (a material 1e8 times
+    /// softer than another, a nearly incompressible one).
+    double resistance = 1;
+  };
+
   /**
    * The rigid-body motion, if any, that the supports of a plane-strain or
    * solid body leave free: a description ("a rotation about (0.5, 0.5)",
    * "a rotation about the axis (0, 0, 1) through (0.5, 0.5, 0)", "a
-   * translation in the direction (1, 0)"), or an empty string.
+   * translation in the direction (1, 0)"), or an empty one, and its
+   * resistance.
    *
    * A free translation makes the stiffness exactly singular and its
    * factorisation fails; a free rotation does not: rounding leaves a pivot
@@ -75,12 +89,12 @@ namespace thinlayer
    * @param condensed_stiffness the stiffness condensed with them, its rows
    *                         those of places.owned.
    */
-  std::string
+  FreeMotion
   free_rigid_body_motion(const OwnedDofPlaces            &places,
                          const AffineConstraints<double> &constraints,
                          const SparseMatrix<double>      &condensed_stiffness);
 
-  std::string
+  FreeMotion
   free_rigid_body_motion(
     const OwnedDofPlaces                   &places,
     const AffineConstraints<double>        &constraints,

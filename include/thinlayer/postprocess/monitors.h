@@ -41,6 +41,11 @@ namespace thinlayer
     DisplacementMeasure
     displacement() const;
 
+    /// The displacement measure of the displacements @p modes (by mode,
+    /// with their ghost values), times its scale: a collective call.
+    DisplacementMeasure
+    displacement_of(const ModeVectors &modes) const;
+
   private:
     /// The integral of the load's stress component over its material id,
     /// and the area of that material id: on many ranks, summed over the

@@ -71,6 +71,16 @@ namespace thinlayer
     set_final_attempt(const bool final);
 
     /**
+     * Whether the method returns every point's stress to its yield
+     * surface (a return mapping) before it tests convergence, so that a
+     * converged state lies on or inside it to round-off (true); the
+     * paper's viscoplastic iterations leave the excess that their last
+     * increment did not relax, to TOL.
+     */
+    virtual bool
+    returns_stresses_to_surface() const;
+
+    /**
      * Tell @p composite, rather than this method, when the method accepts
      * a converged part of a step in the analysis: for a method that is part
      * of another (NewtonFallbackMethod), whose parts all keep state of the

@@ -24,6 +24,11 @@ namespace thinlayer
     /// Whether the displacements (or stresses) of the step are not finite
     /// numbers: never converged.
     bool non_finite = false;
+    /// Whether the method's iterations met their test with stresses more
+    /// than 10 TOL outside the yield surface, which a method returning
+    /// them to it leaves only where round-off has taken over: never
+    /// converged (StepSolver::solve()).
+    bool outside_surface = false;
     /// A step that ran to its iteration limit: the change of its
     /// displacement at the end against that at half the limit
     /// (GrowthMonitor; near 2 while it creeps along a mechanism); NaN

@@ -38,6 +38,11 @@ namespace thinlayer
     StepResult
     solve_step(const double new_load_factor) override;
 
+    /// false: the stresses keep the excess the last increment did not
+    /// relax, to TOL (the drift that history.csv's max_yield_ratio shows).
+    bool
+    returns_stresses_to_surface() const override;
+
   private:
     /// Every mode's step increment for the load increment @p dlambda and
     /// the current body loads.

@@ -72,6 +72,12 @@ namespace thinlayer
           bool                   under_load,
           RunSummary            &summary) const;
 
+    /// The displacement measure of the elastic response to the loads the
+    /// accepted state carries: the scale of a strength reduction's growth
+    /// (Phase::displacement_offset).
+    double
+    elastic_displacement_of_carried_loads();
+
     const Parameters                     &p;
     Analysis<dim>                        &analysis;
     StepSolver<dim>                      &solver;

@@ -36,6 +36,19 @@ namespace thinlayer
     /// 1 + load factor by which the strengths are divided
     /// (Analysis::reduce_strength()), and F is the phase's load.
     bool strength_reduction = false;
+    /**
+     * What the rules on the phase's load-displacement curve (the plateau,
+     * plateau_rise(); the doubling of the displacement) add to each of its
+     * displacements. A strength reduction measures its displacements from
+     * its start and raises no load: they start at round-off (1e-13), from
+     * which any growth "doubles", and the plateau rule would fire at first
+     * yield. It moves them away from 0 by a scale of its own, so that
+     * growth is measured against that: the larger of the displacement the
+     * body reached before it and the elastic displacement of the loads it
+     * carries (offset_displacement()). Other phases raise a load, whose
+     * displacements are their scale: 0.
+     */
+    double displacement_offset = 0;
   };
 
 
@@ -113,6 +126,23 @@ namespace thinlayer
     /// bracketed): by a load, or by the strength reduction factor.
     bool
     under_load() const;
+
+    /**
+     * Whether automatic stepping has narrowed the bracket between the last
+     * converged state and the attempt @p failed to the collapse
+     * resolution, relative to the phase's load at its ends.
+     */
+    bool
+    bracket_resolved(const Attempt &failed) const;
+
+    /**
+     * Whether the body's strength has no scale of its own: no cohesion,
+     * adhesion, tensile strength or weight, from an unstressed start. Its
+     * response to a load is then the same at every size of the load, and a
+     * step that fails at a fraction of the first step fails at any.
+     */
+    bool
+    strength_has_no_scale() const;
 
     /// Solve the step to @p load_factor and measure it; @p final: a
     /// failure would not be cut back (LoadStepping::failure_is_final()).

@@ -54,14 +54,22 @@ namespace thinlayer
   double
   plateau_rise(const std::vector<CurvePoint> &states,
                const double                   displacement,
-               const double                   load);
+               const double                   load,
+               const double                   offset = 0);
+
+  /// @p displacement moved away from 0 by @p offset (>= 0): what the rules
+  /// on a phase's curve measure (Phase::displacement_offset).
+  double
+  offset_displacement(const double displacement, const double offset);
 
   /// The latest of @p states whose displacement is at most half
   /// @p displacement and of its sign (nullptr: none): where
-  /// plateau_rise() measures from.
+  /// plateau_rise() measures from. Both measure every displacement moved
+  /// away from 0 by @p offset (offset_displacement()).
   const CurvePoint *
   state_at_half(const std::vector<CurvePoint> &states,
-                const double                   displacement);
+                const double                   displacement,
+                const double                   offset = 0);
 
 
   /**
@@ -118,6 +126,9 @@ namespace thinlayer
     double last_converged_load_factor = 0;
     /// The accepted states, in order.
     std::vector<CurvePoint> curve;
+    /// Phase::displacement_offset: what the rules on the curve add to its
+    /// displacements.
+    double displacement_offset = 0;
 
     /// The knee (mechanism_knee_ratio): the last accepted load before
     /// the curve's secant stiffness fell below it (NaN: it never did);

@@ -34,7 +34,14 @@ namespace thinlayer
      * shows the mechanism) is the analysis's current one, and stays
      * pending until accept() or reject(). A step whose displacements,
      * stresses or forces are not finite has not converged
-     * (StepResult::non_finite). @p final: a failure would end the run
+     * (StepResult::non_finite). Nor has one that a method returning its
+     * stresses to the yield surface left more than 10 TOL outside it
+     * (StepResult::outside_surface): its return lost to round-off what
+     * it returned, as it does at displacements some 1e16 times the
+     * strains the strength allows (a layer of aspect ratio 1e6 sliding
+     * on), where a step "converges" in one iteration with stresses
+     * several times the strength and a load past the collapse.
+     * @p final: a failure would end the run
      * (SolutionMethod::set_final_attempt()).
      */
     StepResult
@@ -56,6 +63,8 @@ namespace thinlayer
   private:
     Analysis<dim>                       &analysis;
     std::unique_ptr<SolutionMethod<dim>> method;
+    /// Solver/Tolerance: TOL.
+    double tolerance;
   };
 } // namespace thinlayer
 
