@@ -75,7 +75,8 @@ namespace thinlayer
             << row.result.plastic_points << ',' << row.result.cut_backs << ','
             << row.result.factorisations << ',' << number(row.stiffness_ratio)
             << ',' << number(row.result.growth_ratio) << ','
-            << (row.result.non_finite ? 1 : 0) << ',' << row.phase << '\n'
+            << (row.result.non_finite ? 1 : 0) << ','
+            << text_format::csv_field(row.phase) << '\n'
             << std::flush;
     check_written(history, "history.csv");
   }

@@ -16,6 +16,8 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <stdio.h>
+#include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace thinlayer
@@ -206,11 +208,20 @@ namespace thinlayer
     };
     if (directory.empty())
       refuse("is empty; name the directory the results go to");
+    // "out/run/", as a shell's completion writes it, names out/run.
+    std::string name = directory;
+    while (name.size() > 1 && name.back() == '/')
+      name.pop_back();
     std::error_code error;
-    final_path = fs::weakly_canonical(fs::absolute(directory, error), error);
+    final_path = fs::weakly_canonical(fs::absolute(name, error), error);
     if (error || final_path.filename().empty() || final_path == "/")
       refuse("is not a directory the results can go to" +
              (error ? " (" + error.message() + ")" : std::string()));
+    const fs::path parent = final_path.parent_path();
+    fs::create_directories(parent, error);
+    if (error)
+      refuse("cannot be created: " + error.message());
+    lock.take(final_path, parameter_file);
     if (fs::exists(fs::symlink_status(final_path, error)) &&
         !fs::is_directory(final_path, error))
       refuse("exists and is not a directory");
@@ -232,10 +243,6 @@ namespace thinlayer
                  manifest_name + " lists that run's files)");
       }
 
-    const fs::path parent = final_path.parent_path();
-    fs::create_directories(parent, error);
-    if (error)
-      refuse("cannot be created: " + error.message());
     clear_stale_staging(parent, final_path.filename().string());
 
     static std::atomic<unsigned int> counter{0};
@@ -245,6 +252,85 @@ namespace thinlayer
     fs::create_directory(staging_path, error);
     if (error)
       refuse("cannot be written: " + error.message());
+  }
+
+
+  void
+  ResultsDirectory::Lock::take(const fs::path    &directory,
+                               const std::string &parameter_file)
+  {
+    const auto refuse = [&](const std::string &why) {
+      throw InputError(parameter_file,
+                       "Output/Directory",
+                       "'" + directory.string() + "' " + why);
+    };
+    const fs::path lock_path =
+      directory.parent_path() / ("." + directory.filename().string() + ".lock");
+    const std::string ours = "thinlayer run, process ";
+    // A file of that name that is not ours is the user's: never taken.
+    {
+      std::ifstream existing(lock_path);
+      std::string   text;
+      std::getline(existing, text);
+      if (existing && !text.empty() && text.rfind(ours, 0) != 0)
+        refuse("cannot be locked: " + lock_path.string() +
+               " exists and is not a lock of thinlayer's; move it");
+    }
+    // The holder removes the file as it lets go; a lock taken on a file
+    // that was removed meanwhile guards nothing, so it is taken again.
+    for (unsigned int attempt = 0; attempt < 100; ++attempt)
+      {
+        // Not inherited by gmsh, which outlives a killed run for a while.
+        const int fd = ::open(lock_path.c_str(),
+                              O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW,
+                              0644);
+        if (fd < 0)
+          refuse("cannot be locked: " + std::string(std::strerror(errno)));
+        if (::flock(fd, LOCK_EX | LOCK_NB) != 0)
+          {
+            char      holder[64] = {};
+            const int n          = ::pread(fd, holder, sizeof(holder) - 1, 0);
+            ::close(fd);
+            std::string who(holder, std::max(n, 0));
+            while (!who.empty() && (who.back() == '\n' || who.back() == ' '))
+              who.pop_back();
+            refuse("is being written by another run (" +
+                   (who.rfind(ours, 0) == 0 ? "a " + who
+                                            : std::string("a thinlayer run")) +
+                   ", which holds " + lock_path.string() +
+                   "); expected one run at a time in a directory: wait for it "
+                   "to end, or name another directory");
+          }
+        struct stat opened, named;
+        if (::fstat(fd, &opened) == 0 &&
+            ::stat(lock_path.c_str(), &named) == 0 &&
+            opened.st_ino == named.st_ino && opened.st_dev == named.st_dev)
+          {
+            // The holder's process id, for the message a second run gets;
+            // the lock holds without it.
+            const std::string text    = ours + std::to_string(getpid()) + "\n";
+            const bool        written = ::ftruncate(fd, 0) == 0 &&
+                                 ::pwrite(fd, text.data(), text.size(), 0) ==
+                                   static_cast<ssize_t>(text.size());
+            (void)written;
+            path       = lock_path;
+            descriptor = fd;
+            return;
+          }
+        ::close(fd);
+      }
+    refuse("cannot be locked: " + lock_path.string() + " keeps being replaced");
+  }
+
+
+  ResultsDirectory::Lock::~Lock()
+  {
+    if (descriptor >= 0)
+      {
+        // Removed while held: no other run can have taken it.
+        ::unlink(path.c_str());
+        ::close(descriptor);
+      }
   }
 
 

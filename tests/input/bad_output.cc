@@ -9,6 +9,7 @@
 // output that cannot be written exits 1. The program runs in-process
 // through run_command_line().
 #include <thinlayer/app/command_line.h>
+#include <thinlayer/output/results_directory.h>
 
 #include <chrono>
 #include <csignal>
@@ -63,7 +64,8 @@ namespace
   {
     for (const auto &[from, to] :
          {std::pair<std::string, std::string>{fs::current_path().string(), "."},
-          {"new-" + std::to_string(getpid()), "new-PID"}})
+          {"new-" + std::to_string(getpid()), "new-PID"},
+          {"process " + std::to_string(getpid()), "process PID"}})
       for (auto at = message.find(from); at != std::string::npos;
            at      = message.find(from, at + to.size()))
         message.replace(at, from.size(), to);
@@ -309,6 +311,9 @@ namespace
   {
     {
       restore("results");
+      // The limit holds for this test's own output too, which is longer
+      // than it: nothing of it may wait in a buffer meanwhile.
+      std::cout.flush();
       rlimit saved;
       getrlimit(RLIMIT_FSIZE, &saved);
       rlimit limit   = saved;
@@ -550,6 +555,109 @@ namespace
       std::cout << "* standard output cannot be written\n  exit status "
                 << status << "\n  " << err.str() << '\n';
     }
+    {
+      // mpirun, sent SIGTERM, passes it on to the ranks and stops
+      // forwarding their standard output: the signal is what ended the run.
+      restore("results");
+      std::thread        sender(signal_after_rows, SIGTERM, 2);
+      std::ostream       broken(nullptr);
+      std::ostringstream err;
+      const int          status =
+        thinlayer::run_command_line({"good.prm",
+                                     "-s",
+                                     "Loading/Load increments=100000*0.00001",
+                                     "-s",
+                                     "Output/Write VTU=false"},
+                                    broken,
+                                    err);
+      sender.join();
+      std::cout << "* SIGTERM during a run whose standard output cannot be "
+                   "written (as under mpirun)\n  exit status "
+                << status << ", outcome " << summary_entry("results", "outcome")
+                << "\n  " << err.str() << '\n';
+    }
+  }
+
+
+  /// A second run into a directory that a run is writing: refused while
+  /// the first holds its lock, the first's results then put in place.
+  void
+  check_concurrent_runs()
+  {
+    restore("results");
+    Result second;
+    bool   kept;
+    {
+      const thinlayer::ResultsDirectory first("results", "good.prm");
+      second = run({"good.prm"});
+      kept   = contents("results") == previous_run;
+    }
+    // Reported once the first run (here: its directory) has ended, so
+    // that its staging directory is gone.
+    second.error = portable(second.error);
+    report("a second run into a directory that a run is writing", second, kept);
+    std::cout << "  lock left behind: "
+              << (fs::exists(".results.lock") ? "YES" : "no") << "\n\n";
+    const Result after = run({"good.prm"});
+    std::cout << "* (the same run once the first has ended: run as "
+                 "designed)\n  exit status "
+              << after.status << "\n\n";
+  }
+
+
+  /// Output/Directory as a shell's completion writes it.
+  void
+  check_trailing_slash()
+  {
+    fs::remove_all("slashed");
+    const Result r = run({"good.prm", "-s", "Output/Directory=slashed/run/"});
+    std::cout << "* (Output/Directory with a trailing slash: run as "
+                 "designed)\n  exit status "
+              << r.status << ", results in slashed/run: "
+              << (fs::exists("slashed/run/summary.json") ? "yes" : "NO")
+              << "\n\n";
+  }
+
+
+  /// history.csv's phase names with commas, quotes and line breaks, quoted
+  /// as a CSV library reads them: every row keeps its 18 fields.
+  void
+  check_csv_fields()
+  {
+    fs::remove_all("quoted");
+    const Result  r = run({"good.prm",
+                           "-s",
+                           "Output/Directory=quoted",
+                           "-s",
+                           "Loading/Load increments=0.1",
+                           "-s",
+                           "Phase 2/Name=unload, \"gently\"",
+                           "-s",
+                           "Phase 2/Boundary 2/Traction=0; 0.1"});
+    std::ifstream history("quoted/history.csv");
+    std::string   text((std::istreambuf_iterator<char>(history)),
+                     std::istreambuf_iterator<char>());
+    // Fields of each record, a quoted field read whole.
+    std::vector<unsigned int> fields(1, 1);
+    bool                      quoted = false;
+    for (const char c : text)
+      if (c == '"')
+        quoted = !quoted;
+      else if (c == ',' && !quoted)
+        ++fields.back();
+      else if (c == '\n' && !quoted)
+        fields.push_back(1);
+    fields.pop_back();
+    std::cout << "* (a phase name with a comma and quotes: written as "
+                 "designed)\n  exit status "
+              << r.status << ", rows " << fields.size() << ", fields per row:";
+    for (const unsigned int n : fields)
+      std::cout << ' ' << n;
+    std::cout << ", the name quoted: "
+              << (text.find(",\"unload, \"\"gently\"\"\"") != std::string::npos
+                    ? "yes"
+                    : "NO")
+              << "\n\n";
   }
 } // namespace
 
@@ -569,4 +677,7 @@ main()
   check_gmsh();
   check_sweep_interrupted();
   check_standard_output();
+  check_concurrent_runs();
+  check_trailing_slash();
+  check_csv_fields();
 }

@@ -42,6 +42,13 @@ namespace thinlayer
    * older version wrote without a manifest) is refused with their names,
    * and so is one that contains the parameter file. Files that appear
    * during the run leave the directory as it is and the run beside it.
+   *
+   * Two runs into one directory at once would each take the other's
+   * results, manifest and all, for an earlier run of its own and replace
+   * them. So a run holds a lock on its directory (an advisory lock on
+   * `.NAME.lock` beside it, which the kernel releases if the run is
+   * killed) from this check to the end, and a second run into it is
+   * refused while the first holds it.
    */
   class ResultsDirectory
   {
@@ -73,6 +80,29 @@ namespace thinlayer
     commit();
 
   private:
+    /// The lock on a results directory, let go (its file removed) when
+    /// destroyed, also when the constructor of its owner throws.
+    class Lock
+    {
+    public:
+      Lock() = default;
+      ~Lock();
+      Lock(const Lock &) = delete;
+      Lock &
+      operator=(const Lock &) = delete;
+      /// Take the lock on @p directory, or refuse (InputError naming
+      /// Output/Directory of @p parameter_file) while another run holds it.
+      void
+      take(const std::filesystem::path &directory,
+           const std::string           &parameter_file);
+
+    private:
+      std::filesystem::path path;
+      /// The open lock file (-1: none).
+      int descriptor = -1;
+    };
+
+    Lock                  lock;
     std::filesystem::path final_path;
     std::filesystem::path staging_path;
     bool                  committed = false;
