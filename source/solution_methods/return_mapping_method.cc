@@ -1,7 +1,7 @@
 #include <thinlayer/base/interruption.h>
 #include <thinlayer/solution_methods/return_mapping_method.h>
-#include <thinlayer/stepping/step_progress.h>
-#include <thinlayer/stepping/sub_stepping.h>
+#include <thinlayer/solution_methods/step_progress.h>
+#include <thinlayer/solution_methods/sub_stepping.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #include <thinlayer/base/interruption.h>
+#include <thinlayer/solution_methods/step_progress.h>
 #include <thinlayer/solution_methods/viscoplastic.h>
-#include <thinlayer/stepping/step_progress.h>
 
 #include <algorithm>
 

@@ -3,8 +3,8 @@
 #include <thinlayer/output/output_writer.h>
 #include <thinlayer/postprocess/layer_profile.h>
 #include <thinlayer/postprocess/monitors.h>
+#include <thinlayer/solution_methods/step_progress.h>
 #include <thinlayer/stepping/programme.h>
-#include <thinlayer/stepping/step_progress.h>
 
 #include <cmath>
 #include <limits>

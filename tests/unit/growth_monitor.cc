@@ -6,7 +6,7 @@
 // (1 - rho^(N-1))/(1 - rho^(N/2-1)), about 1 + rho^(N/2); a step that stops
 // before half its limit gives NaN; and the largest change over several
 // modes is the one measured.
-#include <thinlayer/stepping/growth_monitor.h>
+#include <thinlayer/solution_methods/growth_monitor.h>
 
 #include <cmath>
 #include <cstdio>

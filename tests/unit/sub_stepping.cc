@@ -7,7 +7,7 @@
 // 3. Step 0 -> 0.3 in parts up to 0.1: the last part's target is exactly
 //    0.3, not a sum of parts that rounds near it.
 // 4. A step that converges at once is attempted once, at its end.
-#include <thinlayer/stepping/sub_stepping.h>
+#include <thinlayer/solution_methods/sub_stepping.h>
 
 #include <cstdio>
 #include <iostream>

@@ -5,8 +5,8 @@
 
 #include <thinlayer/analysis/analysis.h>
 #include <thinlayer/solution_methods/convergence_watch.h>
+#include <thinlayer/solution_methods/growth_monitor.h>
 #include <thinlayer/solution_methods/solution_method.h>
-#include <thinlayer/stepping/growth_monitor.h>
 
 #include <vector>
 

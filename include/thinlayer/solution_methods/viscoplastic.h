@@ -2,8 +2,8 @@
 #define thinlayer_solution_methods_viscoplastic_h
 
 #include <thinlayer/analysis/analysis.h>
+#include <thinlayer/solution_methods/growth_monitor.h>
 #include <thinlayer/solution_methods/solution_method.h>
-#include <thinlayer/stepping/growth_monitor.h>
 
 #include <vector>
 

@@ -1,5 +1,5 @@
-#ifndef thinlayer_stepping_sub_stepping_h
-#define thinlayer_stepping_sub_stepping_h
+#ifndef thinlayer_solution_methods_sub_stepping_h
+#define thinlayer_solution_methods_sub_stepping_h
 
 namespace thinlayer
 {

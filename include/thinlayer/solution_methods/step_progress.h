@@ -1,5 +1,5 @@
-#ifndef thinlayer_stepping_step_progress_h
-#define thinlayer_stepping_step_progress_h
+#ifndef thinlayer_solution_methods_step_progress_h
+#define thinlayer_solution_methods_step_progress_h
 
 #include <chrono>
 #include <ostream>

@@ -1,4 +1,4 @@
-#include <thinlayer/stepping/sub_stepping.h>
+#include <thinlayer/solution_methods/sub_stepping.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
-#ifndef thinlayer_stepping_growth_monitor_h
-#define thinlayer_stepping_growth_monitor_h
+#ifndef thinlayer_solution_methods_growth_monitor_h
+#define thinlayer_solution_methods_growth_monitor_h
 
 #include <deal.II/lac/vector.h>
 

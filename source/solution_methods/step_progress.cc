@@ -1,5 +1,5 @@
 #include <thinlayer/base/text_format.h>
-#include <thinlayer/stepping/step_progress.h>
+#include <thinlayer/solution_methods/step_progress.h>
 
 namespace thinlayer
 {

@@ -1,4 +1,4 @@
-#include <thinlayer/stepping/growth_monitor.h>
+#include <thinlayer/solution_methods/growth_monitor.h>
 
 #include <algorithm>
 #include <limits>
