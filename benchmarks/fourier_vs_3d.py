@@ -62,13 +62,13 @@ def displacement_at(rows, load_factor):
 
 def mean_slip(directory, step):
     """The row's slip along x averaged over the footing's disc (r < R = 1)
-    at load step STEP, from the run's interface-2-NNNN.csv. Fourier: the
+    at load step STEP, from the run's layer-2-NNNN.csv. Fourier: the
     slip at each station's samples (x = cos(theta) slip_r - sin(theta)
     slip_theta), weighted by r dr (2-point Gauss pairs: the cell's width is
     sqrt(3) times their distance) and the trapezoidal rule in theta over the
     circle. 3D: each cell's 2x2 samples weighted by a quarter of the cell's
     area (three times that of the quadrilateral through them)."""
-    path = os.path.join(directory, "interface-2-%04d.csv" % step)
+    path = os.path.join(directory, "layer-2-%04d.csv" % step)
     with open(path, newline="") as f:
         rows = list(csv.DictReader(f))
     total = area = 0.0

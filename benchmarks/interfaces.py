@@ -197,7 +197,7 @@ def main():
             summary = run(thin, geometry.format(ar=ratio), "default", directory,
                           ["Layers/Material ids=%d" % material] + common)
             rows.append(measure(case, "thin layer", ratio, summary, directory,
-                                "interface-%d-%%04d.csv" % material))
+                                "layer-%d-%%04d.csv" % material))
             print(format_row(rows[-1]), flush=True)
         for factor in factors:
             directory = os.path.join(OUT, "%s-zero-%g" % (case, factor))

@@ -79,13 +79,15 @@ def measure(sizes, repeat, skip):
                                                       directory, repeat, entries)
             if paper_time is None:
                 paper_time = median
-            failed = summary["first_failed_load"]
+            # The bracket as the run states it (load factors); the load of
+            # a failed state is no equilibrium and bounds nothing.
+            bracket = summary.get("collapse_load_factor_bracket") or {}
             reference = summary["reference_load"]
             rows.append({
                 "cells": summary["cells"], "equations": summary["equations"], "way": label,
                 "method": summary["method"], "outcome": summary["outcome"],
-                "bracket_low": summary["last_converged_load"] / reference,
-                "bracket_high": failed / reference if failed is not None else None,
+                "last_converged": summary["last_converged_load"] / reference,
+                "bracket_low": bracket.get("low"), "bracket_high": bracket.get("high"),
                 "relative_error": results.collapse_error(summary),
                 "total_iterations": summary["total_iterations"],
                 "factorisations": summary["factorisations"],
@@ -101,21 +103,23 @@ def measure(sizes, repeat, skip):
 
 
 def table(rows):
-    header = ("| cells | equations | way | outcome | last converged - failed load / (2+pi)c "
+    header = ("| cells | equations | way | outcome | last converged load / (2+pi)c "
+              "| collapse load factor bracket "
               "| iterations | factorisations | substitutions | sweeps | wall s (median) "
               "| time / paper's fixed | ms per iteration | ms per substitution "
               "| ms per factorisation | peak MB |")
 
     def bracket(r):
-        if r["bracket_high"] is None:
-            return "%.4f, none failed" % r["bracket_low"]
+        if r["bracket_low"] is None or r["bracket_high"] is None:
+            return "-"
         return "%.4f - %.4f" % (r["bracket_low"], r["bracket_high"])
 
     common.write_results(
         rows, "performance", header,
-        lambda r: "| %d | %d | %s | %s | %s | %d | %d | %d | %d | %.2f | %.2f | %.1f | %.2f | %s "
-                  "| %.0f |" % (
-                      r["cells"], r["equations"], r["way"], r["outcome"], bracket(r),
+        lambda r: "| %d | %d | %s | %s | %.4f | %s | %d | %d | %d | %d | %.2f | %.2f | %.1f "
+                  "| %.2f | %s | %.0f |" % (
+                      r["cells"], r["equations"], r["way"], r["outcome"], r["last_converged"],
+                      bracket(r),
                       r["total_iterations"], r["factorisations"], r["substitutions"],
                       r["sweeps"], r["wall_median_s"], r["against_paper_fixed"],
                       r["ms_per_iteration"], r["ms_per_substitution"],

@@ -118,6 +118,13 @@ namespace thinlayer
             << printf("%.5g", run.last_converged_load);
       else
         out << "  no load step converged";
+      // The figure the error belongs to, where it is not the last
+      // converged load (a plateau).
+      if (std::isfinite(summary.collapse_load) &&
+          summary.collapse_load != run.last_converged_load)
+        out << ", collapse load " << printf("%.5g", summary.collapse_load);
+      if (std::isfinite(summary.safety_factor))
+        out << ", safety factor " << printf("%.5g", summary.safety_factor);
       if (std::isfinite(p.reference.analytic_load))
         {
           out << ", analytic " << printf("%.5g", p.reference.analytic_load);
@@ -239,9 +246,11 @@ namespace thinlayer
                                 : std::numeric_limits<double>::quiet_NaN();
       summary.relative_error =
         (compared - summary.reference_load) / summary.reference_load;
-      summary.final_displacement     = run.displacement.mean;
-      summary.final_displacement_min = run.displacement.min;
-      summary.final_displacement_max = run.displacement.max;
+      const double none = std::numeric_limits<double>::quiet_NaN();
+      const DisplacementMeasure &last = run.converged_displacement;
+      summary.final_displacement = run.any_step_converged ? last.mean : none;
+      summary.final_displacement_min = run.any_step_converged ? last.min : none;
+      summary.final_displacement_max = run.any_step_converged ? last.max : none;
       summary.load_steps             = run.steps_run;
       summary.attempts               = run.attempts;
       summary.steps_with_drift       = run.steps_with_drift;

@@ -86,6 +86,7 @@ namespace thinlayer
   void
   OutputWriter::write_fields(const unsigned int                    step,
                              const double                          load_factor,
+                             const bool                            on_curve,
                              const Analysis<dim>                  &analysis,
                              const double                          theta,
                              const std::vector<LayerProfile<dim>> &interfaces)
@@ -185,10 +186,11 @@ namespace thinlayer
                               const std::vector<std::string> &piece_names) {
                             data_out.write_pvtu_record(pvtu, piece_names);
                           });
-    pvd_records.emplace_back(load_factor, record);
+    auto &records = on_curve ? pvd_records : attempt_records;
+    records.emplace_back(load_factor, record);
     std::ostringstream pvd;
-    DataOutBase::write_pvd_record(pvd, pvd_records);
-    write_file("fields.pvd", pvd.str());
+    DataOutBase::write_pvd_record(pvd, records);
+    write_file(on_curve ? "fields.pvd" : "attempts.pvd", pvd.str());
   }
 
 
@@ -205,7 +207,7 @@ namespace thinlayer
     std::vector<NamedProfile> profiles;
     for (const LayerProfile<dim> &interface : interfaces)
       profiles.push_back(
-        {"interface-" + std::to_string(interface.get_material_id()),
+        {"layer-" + std::to_string(interface.get_material_id()),
          interface.profile(analysis)});
     for (NamedProfile &profile : analysis.profiles())
       profiles.push_back(std::move(profile));
@@ -235,6 +237,7 @@ namespace thinlayer
   void
   OutputWriter::write_revolved_view(const unsigned int step,
                                     const double       load_factor,
+                                    const bool         on_curve,
                                     const Analysis<2> &analysis,
                                     const unsigned int slices)
   {
@@ -268,10 +271,11 @@ namespace thinlayer
         DataOutBase::write_pvtu_record(
           pvtu, piece_names, view.names, vectors, DataOutBase::VtkFlags());
       });
-    revolved_records.emplace_back(load_factor, record);
+    auto &records = on_curve ? revolved_records : revolved_attempt_records;
+    records.emplace_back(load_factor, record);
     std::ostringstream pvd;
-    DataOutBase::write_pvd_record(pvd, revolved_records);
-    write_file("revolved.pvd", pvd.str());
+    DataOutBase::write_pvd_record(pvd, records);
+    write_file(on_curve ? "revolved.pvd" : "revolved-attempts.pvd", pvd.str());
   }
 
 
@@ -433,6 +437,7 @@ namespace thinlayer
   template void OutputWriter::write_fields(                              \
     const unsigned int,                                                  \
     const double,                                                        \
+    const bool,                                                          \
     const Analysis<dim> &,                                               \
     const double,                                                        \
     const std::vector<LayerProfile<dim>> &);                             \

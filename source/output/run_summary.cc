@@ -137,6 +137,7 @@ namespace thinlayer
 
   RunSummary::RunSummary()
     : collapse_load(std::numeric_limits<double>::quiet_NaN())
+    , safety_factor(std::numeric_limits<double>::quiet_NaN())
     , knee_load(std::numeric_limits<double>::quiet_NaN())
     , last_converged_load(std::numeric_limits<double>::quiet_NaN())
     , first_failed_load(std::numeric_limits<double>::quiet_NaN())

@@ -24,7 +24,8 @@ namespace thinlayer
       Patterns::List(Patterns::Integer(0, 2147483647)),
       "Thin layers (material ids of layers one cell thick) whose profile "
       "is written at every step: slip, opening, shear and normal traction "
-      "and plasticity against arc length, as interface-<id>-NNNN.csv and as "
+      "and plasticity against arc length, as layer-<id>-NNNN.csv (and .vtu), "
+      "and as "
       "cell fields in the VTU. Empty for none.");
     prm.leave_subsection();
   }

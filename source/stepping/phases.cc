@@ -95,7 +95,9 @@ namespace thinlayer
     phase.load_steps          = result.steps_run;
     phase.collapse_load       = summary.collapse_load;
     phase.last_converged_load = result.last_converged_load;
-    phase.final_displacement  = monitors.displacement().mean;
+    phase.final_displacement  = result.any_step_converged
+                                  ? result.converged_displacement.mean
+                                  : std::numeric_limits<double>::quiet_NaN();
     summary.phases.push_back(phase);
   }
 
@@ -223,6 +225,7 @@ namespace thinlayer
                                                   true,
                                                   scale});
         judge(result, true, summary);
+        summary.safety_factor = summary.collapse_load;
       }
     return result;
   }

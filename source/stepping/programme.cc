@@ -78,7 +78,10 @@ namespace thinlayer
     // A strength reduction starts from the state of the phase before it,
     // converged at F = 1: the lower end of its bracket.
     if (phase.strength_reduction)
-      result.last_converged_load = 1;
+      {
+        result.last_converged_load = 1;
+        result.load_factor_origin  = 1;
+      }
     // An easy step: at most a quarter of the constant-stiffness
     // iteration limit (Newton's steps take a few iterations each).
     LoadStepping stepping(loading,
@@ -305,9 +308,14 @@ namespace thinlayer
                                 phase.name});
       if (next != LoadStepping::Next::retry)
         {
+          // A state of the load-displacement curve: converged and
+          // accepted (not a failure, nor a probe beyond one).
+          const bool on_curve =
+            next == LoadStepping::Next::accept && a.result.converged && !probe;
           if (p.output.write_vtu)
             writer.write_fields(a.step,
                                 a.load_factor,
+                                on_curve,
                                 analysis,
                                 p.monitors.displacement_angle,
                                 layers);
@@ -316,6 +324,7 @@ namespace thinlayer
             if (p.output.write_vtu && p.output.view_slices > 0)
               writer.write_revolved_view(a.step,
                                          a.load_factor,
+                                         on_curve,
                                          analysis,
                                          p.output.view_slices);
           writer.write_displacements(analysis, p.monitors.displacement_angle);

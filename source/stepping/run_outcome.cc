@@ -89,9 +89,12 @@ namespace thinlayer
     std::string
     plateau(const ProgrammeResult &run)
     {
-      return "the load reached its plateau at load factor " +
-             printf("%.6g", run.plateau_load_factor) + ": it rose " +
-             printf("%+.3f", 100 * run.plateau_rise) +
+      return "the load reached its plateau at " +
+             std::string(run.load_factor_origin != 0
+                           ? "strength reduction factor F "
+                           : "load factor ") +
+             printf("%.6g", run.load_factor_origin + run.plateau_load_factor) +
+             ": it rose " + printf("%+.3f", 100 * run.plateau_rise) +
              "% while the displacement grew from " +
              printf("%.4g",
                     offset_displacement(run.plateau_from_displacement,
@@ -139,12 +142,18 @@ namespace thinlayer
                 const ProgrammeResult &run,
                 RunSummary            &s)
   {
-    const auto at = [](const double load_factor) {
-      return " at load factor " + printf("%.6g", load_factor);
+    // A strength reduction's steps are stated by their factor F.
+    const bool        reduction = run.load_factor_origin != 0;
+    const std::string factor =
+      reduction ? "strength reduction factor F" : "load factor";
+    const auto at = [&](const double load_factor) {
+      return " at " + factor + " " +
+             printf("%.6g", run.load_factor_origin + load_factor);
     };
     // The figures are this phase's: none is kept from a phase before it.
     s.collapse_load = std::numeric_limits<double>::quiet_NaN();
     s.knee_load     = std::numeric_limits<double>::quiet_NaN();
+    s.collapse_load_factor_bracket.clear();
     if (run.interrupted_by != 0)
       {
         s.outcome = "interrupted";
@@ -244,10 +253,18 @@ namespace thinlayer
           (probed ? " beyond the failed step" + at(run.failed_load_factor) +
                       ", shown by a probe" + at(run.probe_load_factor)
                   : at(run.failed_load_factor)) +
-          ": " + evidence(run) + "; the collapse load factor lies between " +
-          printf("%.6g", run.last_converged_load_factor) + " and " +
-          printf("%.6g",
-                 probed ? run.probe_load_factor : run.failed_load_factor);
+          ": " + evidence(run);
+        s.collapse_load_factor_bracket = {
+          {"low", run.load_factor_origin + run.last_converged_load_factor},
+          {"high",
+           run.load_factor_origin +
+             (probed ? run.probe_load_factor : run.failed_load_factor)}};
+        s.reason +=
+          "; the " +
+          std::string(reduction ? "safety factor" : "collapse load factor") +
+          " lies between " +
+          printf("%.6g", s.collapse_load_factor_bracket.at("low")) + " and " +
+          printf("%.6g", s.collapse_load_factor_bracket.at("high"));
       }
     else
       s.reason = "the step failed" + at(run.failed_load_factor) +

@@ -10,6 +10,9 @@
 // 4. The pieces carry the fields a one-rank file carries, by name.
 // 5. Nothing half-written is left (no .partial file), and history.csv and
 //    summary.json are there once.
+// 6. fields.pvd lists the states of the load-displacement curve only: the
+//    third step (to 1.1 of the collapse load, the programme as given)
+//    fails, and its fields are listed in attempts.pvd instead.
 // Rank 0 reads the files and prints whether each truth held.
 #include <deal.II/base/mpi.h>
 
@@ -56,7 +59,8 @@ namespace
     "  set Constrained components = x\n"
     "end\n"
     "subsection Loading\n"
-    "  set Load increments = 0.5, 0.3\n"
+    "  set Load increments = 0.5, 0.3, 0.3\n"
+    "  set Collapse resolution = 0\n"
     "end\n"
     "subsection Monitors\n"
     "  set Load measure = reaction\n"
@@ -131,7 +135,10 @@ main(int argc, char **argv)
   for (const auto &entry : std::filesystem::directory_iterator(dir))
     no_whole_vtu &= !std::regex_match(entry.path().filename().string(),
                                       std::regex("fields-\\d{4}\\.vtu"));
-  std::cout << "written steps: " << records.size() << '\n';
+  const std::vector<std::string> attempts =
+    all_matches(read(dir / "attempts.pvd"), "file=\"([^\"]+)\"");
+  std::cout << "written steps: " << records.size() << " in fields.pvd, "
+            << attempts.size() << " in attempts.pvd\n";
   truths::expect(records_are_pvtu && no_whole_vtu,
                  "1. fields.pvd lists a .pvtu per step, no whole .vtu");
 
@@ -176,5 +183,9 @@ main(int argc, char **argv)
   truths::expect(!partial && std::filesystem::exists(dir / "history.csv") &&
                    std::filesystem::exists(dir / "summary.json"),
                  "5. no .partial file; history.csv and summary.json written");
+  truths::expect(records.size() == 2 && attempts.size() == 1 &&
+                   attempts[0] == "fields-0003.pvtu",
+                 "6. fields.pvd lists the two converged steps, attempts.pvd "
+                 "the failed third");
   return truths::conclude();
 }

@@ -183,7 +183,7 @@ main()
           "case1-inclined-adhesive.prm",
           "case1-3d.prm",
           mesh,
-          "interface-2",
+          "layer-2",
           2);
   compare("Zero-thickness Tresca interface elements (3 Gauss points per "
           "side, 3x3 per face in 3D)",

@@ -136,7 +136,7 @@ main()
           (zero_thickness ? 1.02 : 1.);
         const double from_profile = zero_thickness
                                       ? profile_load("interface-curve-4-", 3)
-                                      : profile_load("interface-2-", 2);
+                                      : profile_load("layer-2-", 2);
         std::printf("%s, alpha = %g: exact %.3f; errors %+.2f%% on 6, %+.2f%% "
                     "on 12 cells per quarter\n",
                     zero_thickness ? "interface elements" : "thin layer",

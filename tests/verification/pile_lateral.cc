@@ -118,8 +118,8 @@ main()
 
   // The layer's tractions at the last step, by station.
   std::map<double, run_results::Table> stations;
-  for (const auto &row : run_results::read_csv(
-         run_results::newest_csv("results", "interface-2-")))
+  for (const auto &row :
+       run_results::read_csv(run_results::newest_csv("results", "layer-2-")))
     stations[row.at("angle")].push_back(row);
   expect(stations.size() == 5, "the layer's profile at five stations");
 

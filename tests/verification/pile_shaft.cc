@@ -74,7 +74,7 @@ namespace
     expect(outcome == "completed" && std::isfinite(load),
            "the pile's load levels off");
 
-    const run_results::Table profile = last_profile("interface-2-");
+    const run_results::Table profile = last_profile("layer-2-");
     expect(profile.size() % 2 == 0, "two Gauss points per cell side");
     double       shear = 0, beyond = 0, largest = 0, low = 1, high = 0;
     unsigned int elastic = 0;

@@ -18,6 +18,8 @@
 //    its tractions are admissible, so by statics F cannot exceed
 //    tan(phi) / tan(beta); it lies below it, within 1%.
 
+#include <thinlayer/base/text_format.h>
+
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -113,5 +115,21 @@ main()
               100 * (interface / exact - 1));
   expect(interface <= exact && interface / exact - 1 > -0.01,
          "the interface slides just below tan(phi) / tan(beta)");
+  // One figure, one meaning: the summary names the safety factor, and the
+  // bracket the reason states is in F (not in F - 1).
+  const double safety = run_results::summary_number("results", "safety_factor");
+  const double low    = run_results::summary_number("results", "low");
+  const double high   = run_results::summary_number("results", "high");
+  const std::string reason = run_results::summary_text("results", "reason");
+  std::printf("  its summary: safety_factor %.4f, the bracket %.6g - %.6g\n",
+              safety,
+              low,
+              high);
+  expect(safety == interface, "safety_factor is the phase's collapse load F");
+  expect(low <= safety && safety < high && low > 1,
+         "the bracket holds F and is stated in F");
+  expect(reason.find("the safety factor lies between " +
+                     thinlayer::text_format::printf("%.6g", low)) != std::string::npos,
+         "the reason states the same bracket");
   return truths::conclude();
 }

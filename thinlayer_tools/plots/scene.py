@@ -25,8 +25,12 @@ from thinlayer_tools import results  # noqa: E402
 from thinlayer_tools.report import figures  # noqa: E402
 
 
-def main(directory, reference_label="analytic", load_label="load (the scene's Load measure)",
-         displacement_label="displacement (the scene's Displacement measure)", length_unit="L"):
+def main(directory, reference_label="analytic", load_label=None, displacement_label=None,
+         length_unit="L"):
+    # Axes the caller does not name are named from the run's Monitors.
+    default_load, default_displacement = results.axis_labels(directory)
+    load_label = load_label or default_load
+    displacement_label = displacement_label or default_displacement
     rows = results.history(directory)
     with open(os.path.join(directory, "summary.json")) as f:
         summary = json.load(f)
@@ -73,11 +77,12 @@ if __name__ == "__main__":
     parser.add_argument("directory", help="a run's results directory")
     parser.add_argument("reference_label", nargs="?", default="analytic",
                         help="the name of the analytic reference in the legend")
-    parser.add_argument("--load-label", default="load (the scene's Load measure)",
-                        help="the load axis, with its normalisation")
+    parser.add_argument("--load-label",
+                        help="the load axis, with its normalisation (default: what the "
+                             "run's Monitors section measures)")
     parser.add_argument("--displacement-label",
-                        default="displacement (the scene's Displacement measure)",
-                        help="the displacement axis, with its normalisation")
+                        help="the displacement axis, with its normalisation (default: what "
+                             "the run's Monitors section measures)")
     parser.add_argument("--length-unit", default="L", help="the unit of the vector plots' axes")
     arguments = parser.parse_args()
     main(arguments.directory, arguments.reference_label, arguments.load_label,

@@ -43,7 +43,7 @@ def layer_integrals(directory):
     that do not yield, the largest excess over Coulomb's line of the layer
     (tau - sigma_n tan(phi_s), relative to the largest traction), and the
     range of tau / sigma_n."""
-    last = sorted(glob.glob(os.path.join(directory, "interface-2-*.csv")))[-1]
+    last = sorted(glob.glob(os.path.join(directory, "layer-2-*.csv")))[-1]
     rows = sorted(results.read_csv(last), key=lambda r: float(r["y"]))
     shear, elastic, beyond, largest, ratios = 0.0, 0, 0.0, 0.0, []
     for k in range(0, len(rows) - 1, 2):

@@ -80,7 +80,7 @@ def layer_statics(directory):
     lateral load they make (over Broms'), and the largest excess over
     Coulomb's line relative to the largest normal traction. The
     out-of-plane shear is written along n x s = -e_theta."""
-    last = sorted(glob.glob(os.path.join(directory, "interface-2-*.csv")))[-1]
+    last = sorted(glob.glob(os.path.join(directory, "layer-2-*.csv")))[-1]
     by_angle = {}
     with open(last) as f:
         for row in csv.DictReader(f):

@@ -67,25 +67,30 @@ namespace thinlayer
 
     /**
      * The fields of load step @p step as fields-NNNN.vtu (on several ranks
-     * fields-NNNN.pvtu and its pieces; every rank calls it), and fields.pvd
-     * listing every step so far. For Fourier kinematics the displacement
-     * is the one in the cut at angle @p theta. The profiles of
-     * @p interfaces add their cell fields (zero off the layers).
+     * fields-NNNN.pvtu and its pieces; every rank calls it). fields.pvd
+     * lists the states of the load-displacement curve, @p on_curve: the
+     * converged, accepted ones. A step that ended the run without such a
+     * state (a failed step, a probe beyond it) is listed in attempts.pvd
+     * instead, so that ParaView's time steps are equilibrium states. For
+     * Fourier kinematics the displacement is the one in the cut at angle
+     * @p theta. The profiles of @p interfaces add their cell fields (zero
+     * off the layers).
      */
     template <int dim>
     void
     write_fields(const unsigned int                    step,
                  const double                          load_factor,
+                 const bool                            on_curve,
                  const Analysis<dim>                  &analysis,
                  const double                          theta,
                  const std::vector<LayerProfile<dim>> &interfaces);
 
     /**
      * The profile of every one of @p interfaces at load step @p step
-     * (load factor @p load_factor), as interface-<id>-NNNN.csv, and of
-     * every curve of zero-thickness elements as interface-curve-<id>-NNNN.csv;
-     * @p with_vtu, also each as a VTU polyline, listed in
-     * interface-<id>.pvd and interface-curve-<id>.pvd.
+     * (load factor @p load_factor), as `layer-<id>-NNNN.csv`, and of
+     * every curve of zero-thickness elements as
+     * `interface-curve-<id>-NNNN.csv`; @p with_vtu, also each as a VTU
+     * polyline, listed in `layer-<id>.pvd` and `interface-curve-<id>.pvd`.
      */
     template <int dim>
     void
@@ -104,6 +109,7 @@ namespace thinlayer
     void
     write_revolved_view(const unsigned int step,
                         const double       load_factor,
+                        const bool         on_curve,
                         const Analysis<2> &analysis,
                         const unsigned int slices);
 
@@ -150,10 +156,14 @@ namespace thinlayer
     std::string  directory;
     unsigned int vtu_subdivisions;
     /// Whether this rank writes (rank 0).
-    bool                                        writes;
-    std::ofstream                               history;
+    bool          writes;
+    std::ofstream history;
+    /// The records of fields.pvd and revolved.pvd (the curve's states),
+    /// and of attempts.pvd and revolved-attempts.pvd (the others).
     std::vector<std::pair<double, std::string>> pvd_records;
+    std::vector<std::pair<double, std::string>> attempt_records;
     std::vector<std::pair<double, std::string>> revolved_records;
+    std::vector<std::pair<double, std::string>> revolved_attempt_records;
     std::map<std::string, std::vector<std::pair<double, std::string>>>
       profile_records;
   };

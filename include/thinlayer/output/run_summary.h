@@ -23,7 +23,8 @@ namespace thinlayer
     /// The phase's collapse load (or plateau), NaN where it has none.
     double collapse_load       = std::numeric_limits<double>::quiet_NaN();
     double last_converged_load = std::numeric_limits<double>::quiet_NaN();
-    /// The monitored displacement at the phase's end (mean).
+    /// The monitored displacement at the phase's last converged state
+    /// (mean).
     double final_displacement = std::numeric_limits<double>::quiet_NaN();
   };
 
@@ -83,6 +84,15 @@ namespace thinlayer
     /// collapse; under prescribed displacement, the load's plateau if the
     /// last step reached one; NaN otherwise.
     double collapse_load;
+    /// A strength reduction's safety factor: the factor F at its collapse
+    /// (its collapse_load, F being that phase's load); NaN for every other
+    /// run.
+    double safety_factor;
+    /// The bracket a collapse by mechanism lies in, as its reason states
+    /// it: "low" the last converged load factor, "high" the failed one (or
+    /// the probe's), both as the history's load column counts a strength
+    /// reduction's F. Empty for every other outcome.
+    std::map<std::string, double> collapse_load_factor_bracket;
     /// The knee of the load-displacement curve (mechanism_knee_ratio),
     /// a serviceability figure beside the collapse load; NaN where the
     /// curve's secant stiffness never fell below it on an accepted step.
@@ -93,7 +103,9 @@ namespace thinlayer
     double first_failed_load;
     double reference_load;
     double relative_error;
-    /// The displacement measure after the last step run.
+    /// The displacement measure at the last converged state, where the
+    /// collapse load is read (not at a failed step or a probe beyond it,
+    /// whose displacements run away); NaN where no state converged.
     double       final_displacement;
     double       final_displacement_min;
     double       final_displacement_max;
@@ -186,6 +198,8 @@ namespace thinlayer
       visitor("initial_load", initial_load);
       visitor("initial_displacement", initial_displacement);
       visitor("collapse_load", collapse_load);
+      visitor("safety_factor", safety_factor);
+      visitor("collapse_load_factor_bracket", collapse_load_factor_bracket);
       visitor("knee_load", knee_load);
       visitor("converged", converged);
       visitor("last_converged_load", last_converged_load);

@@ -124,6 +124,10 @@ namespace thinlayer
     double first_stiffness = std::numeric_limits<double>::quiet_NaN();
     double last_stiffness  = std::numeric_limits<double>::quiet_NaN();
     double last_converged_load_factor = 0;
+    /// What the phase's load factors count from: 0, or 1 for a strength
+    /// reduction, whose factor is F = 1 + load factor. The reason states
+    /// F, as the history's load column does.
+    double load_factor_origin = 0;
     /// The accepted states, in order.
     std::vector<CurvePoint> curve;
     /// Phase::displacement_offset: what the rules on the curve add to its

@@ -1,10 +1,11 @@
 #!/usr/bin/python3
-"""Profiles along a thin-layer interface of one thinlayer run.
+"""Profiles along the interfaces of one thinlayer run: its layers and its
+interface elements.
 
-Reads OUTPUT_DIR/interface-<id>-NNNN.csv (a thin layer the scene names in
+Reads OUTPUT_DIR/layer-<id>-NNNN.csv (a thin layer the scene names in
 Layers/Material ids) or interface-curve-<id>-NNNN.csv (zero-thickness
-elements on an Interface curve), and history.csv, and writes one chart per
-interface, interface-<id>.png or interface-curve-<id>.png: slip, opening,
+interface elements on an Interface curve), and history.csv, and writes one
+chart per interface, layer-<id>.png or interface-curve-<id>.png: slip, opening,
 shear and normal traction
 against arc length along the layer, at a few load steps. Converged,
 accepted steps are solid lines, plastic points filled. A step that ended
@@ -27,7 +28,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 from thinlayer_tools import results  # noqa: E402
 
 
-SERIES = re.compile(r"(interface-(?:curve-)?\d+)-(\d+)\.csv$")
+SERIES = re.compile(r"((?:layer|interface-curve)-\d+)-(\d+)\.csv$")
 
 
 def profile_files(directory, series):
@@ -41,9 +42,9 @@ def profile_files(directory, series):
 
 
 def all_series(directory):
-    """The interfaces written: interface-<id> and interface-curve-<id>."""
+    """The interfaces written: layer-<id> and interface-curve-<id>."""
     names = set()
-    for path in glob.glob(os.path.join(directory, "interface-*.csv")):
+    for path in glob.glob(os.path.join(directory, "*.csv")):
         match = SERIES.search(path)
         if match:
             names.add(match.group(1))
@@ -157,7 +158,7 @@ def main():
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("directory", help="a run's results directory")
     parser.add_argument("--series", action="append",
-                        help="interface-<id> (a thin layer) or interface-curve-<id> "
+                        help="layer-<id> (a thin layer) or interface-curve-<id> "
                              "(zero-thickness elements); default: every one written")
     parser.add_argument("--steps", type=int, nargs="+",
                         help="load steps to draw (default: a few accepted steps "
@@ -171,8 +172,8 @@ def main():
         raise SystemExit("%s is not a results directory" % arguments.directory)
     names = arguments.series or all_series(arguments.directory)
     if not names:
-        raise SystemExit("no interface-*-NNNN.csv in %s: name a thin layer in "
-                         "Interfaces/Material ids, or add an Interface curve "
+        raise SystemExit("no layer-*-NNNN.csv or interface-curve-*-NNNN.csv in %s: name a "
+                         "thin layer in Layers/Material ids, or add an Interface curve "
                          "section" % arguments.directory)
     for series in names:
         plot(arguments.directory, series, arguments.steps, arguments.angle,
