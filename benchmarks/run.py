@@ -87,7 +87,7 @@ BENCHMARK_LEVELS = {"prandtl": (1,), "case1-adhesive": (1, 2), "case2": (1, 2),
                     "seam-safety": (1,), "bearing-nq": (1,), "slope-safety": (1,),
                     "n-gamma": (1,), "active-wall": (1,), "passive-wall": (1,)}
 # The cases the ladder climbs and the method each climbs with: the
-# recommended one (see README, "Choosing a solution method").
+# recommended one (the manual's page on running a scene: solution methods).
 LADDER_METHOD = {"prandtl": ("viscoplastic", "body loads"),
                  "case1-adhesive": ("accelerated initial stress", "residual"),
                  "case2": ("accelerated initial stress", "residual"),

@@ -2,15 +2,18 @@
 # Set up thinlayer on Debian 12 and either run the main job or the tests.
 #
 #   scripts/setup.sh run    install what is missing, build (Release), run the
-#                           default scene and say where its results are
+#                           paper's Case 1 to its collapse, compare it with
+#                           the closed form, draw it, say where it all is
 #   scripts/setup.sh build  install what is missing and build (Release) only
 #                           (scripts/reproduce.sh starts with it)
 #   scripts/setup.sh test   install what is missing, build (Release), run ctest;
 #                           then build in Debug against deal.II's debug
 #                           library and run ctest there (its assertions on),
 #                           run five scenes under valgrind (memory errors
-#                           fail the test), and reproduce the paper into its
-#                           report (--quick) and open it in headless Chromium
+#                           fail the test), build the manual and the API
+#                           reference (warnings fail), and reproduce the
+#                           paper into its report (--quick) and open it in
+#                           headless Chromium
 #
 # Re-running when nothing changed takes seconds: packages are installed only
 # when missing, and the build is incremental. Needs root or sudo for apt.
@@ -33,8 +36,11 @@ build="$top/build"
 # it: a failed (non-converged) step's state depends on rounding.
 packages=(g++ make cmake perl libdeal.ii-dev gmsh numdiff python3 python3-matplotlib ccache libopenblas0-serial
           nlohmann-json3-dev valgrind procps openmpi-bin)
-# The tests also open the reproduction report in a real browser.
-if [ "$mode" = test ]; then packages+=(chromium); fi
+# The tests also read the fields with VTK's own readers, build the manual
+# and the API reference, and open the reproduction report in a real browser.
+if [ "$mode" = test ]; then
+  packages+=(python3-vtk9 python3-sphinx python3-myst-parser doxygen chromium)
+fi
 
 missing=()
 for p in "${packages[@]}"; do
@@ -70,19 +76,37 @@ build_in "$build" Release
 if [ "$mode" = build ]; then
   echo "thinlayer setup: built $build/thinlayer"
 elif [ "$mode" = run ]; then
+  # The paper's Case 1 at 45 degrees: a column cut by an inclined Tresca
+  # layer, loaded to collapse by the paper's method; its closed form is
+  # P / (C_w B) = 1 / (sin(alpha) cos(alpha)) = 2.
   cd "$top"
-  "$build/thinlayer" prm/case1-elastic.prm
-  echo "thinlayer setup: open $top/output/case1-elastic/fields.pvd in ParaView;"
-  echo "  history.csv and summary.json are beside it."
+  scene=case1-inclined-adhesive
+  "$build/thinlayer" "prm/$scene.prm"
+  labels=(--load-label "axial load P / (C_w B)" --displacement-label "settlement of the top / B")
+  /usr/bin/python3 -m thinlayer_tools.plots.scene "output/$scene" "closed form 1 / (sin a cos a)" \
+    "${labels[@]}"
+  /usr/bin/python3 -m thinlayer_tools.first_run "output/$scene" "${labels[@]}" \
+    --reference-label "closed form 1 / (sin a cos a)" --length-unit B
 else
+  # Each stage says how long it took: the whole is to stay within CI's
+  # half hour.
+  stage() { echo "thinlayer setup: $1 done at ${SECONDS} s"; }
+  stage "the Release build"
   (cd "$build" && ctest --output-on-failure -j"$(nproc)")
+  stage "the Release tests"
+  echo "thinlayer setup: the manual (scripts/manual.sh)"
+  "$top/scripts/manual.sh" "$build" > "$build/manual.log" 2>&1 ||
+    { cat "$build/manual.log"; echo "thinlayer setup: the manual failed to build" >&2; exit 1; }
+  stage "the manual"
 
   # The same tests against deal.II's debug library, where its assertions
   # (index ranges, vector sizes) run: about 1.5 minutes of tests on 2 cores.
   debug="$top/build-debug"
   echo "thinlayer setup: building in Debug ($debug)"
   build_in "$debug" Debug
+  stage "the Debug build"
   (cd "$debug" && ctest --output-on-failure -j"$(nproc)")
+  stage "the Debug tests"
 
   # valgrind: a plane-strain scene (the default method, Newton included), a
   # Fourier one, one with zero-thickness interface elements (the mesh
@@ -110,6 +134,7 @@ else
   wait "$lane_a" || valgrind_failed=1
   wait "$lane_b" || valgrind_failed=1
   [ "$valgrind_failed" -eq 0 ] || exit 1
+  stage "valgrind"
   # The paper reproduced into its report (--quick: smaller sweeps, the
   # benchmark run once), and the page checked in headless Chromium.
   echo "thinlayer setup: scripts/reproduce.sh --quick"
@@ -119,5 +144,6 @@ else
     { echo "thinlayer setup: the reproduction failed; the log is $build/reproduce-quick.log" >&2
       exit 1; }
   PYTHONPATH="$top" /usr/bin/python3 -m thinlayer_tools.report.check "$report/report.html"
-  echo "thinlayer setup: all tests passed (Release, Debug, valgrind, the report in Chromium)"
+  stage "the reproduction"
+  echo "thinlayer setup: all tests passed (Release, the manual, Debug, valgrind, the report in Chromium)"
 fi

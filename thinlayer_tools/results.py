@@ -115,3 +115,65 @@ def swept_names(rows):
     """The swept names of a sweep.csv: the columns between run and the figures."""
     columns = list(rows[0].keys())
     return columns[1:columns.index("parameter_file")]
+
+
+def parameters(directory, section):
+    """{entry: value} of one top-level @p section of the parameters.prm a
+    run wrote (every entry, defaults included); {} where it has none."""
+    path = os.path.join(directory, "parameters.prm")
+    entries, depth, inside = {}, 0, False
+    if not os.path.exists(path):
+        return entries
+    with open(path) as f:
+        for line in f:
+            text = line.split("#", 1)[0].strip()
+            if text.startswith("subsection "):
+                depth += 1
+                inside = depth == 1 and text[len("subsection "):].strip() == section
+            elif text == "end":
+                depth -= 1
+                inside = inside and depth >= 1
+            elif inside and depth == 1 and text.startswith("set "):
+                name, _, value = text[4:].partition("=")
+                entries[name.strip()] = value.strip()
+    return entries
+
+
+def axis_labels(directory):
+    """(load, displacement): what a run's load and displacement columns
+    measure, from its Monitors section, for the axes of a chart; a strength
+    reduction's load is its factor F."""
+    path = os.path.join(directory, "summary.json")
+    phase = "loading"
+    if os.path.exists(path):
+        with open(path) as f:
+            phase = json.load(f).get("phase", "loading")
+    m = parameters(directory, "Monitors")
+
+    def scaled(text, scale):
+        return text if scale in ("", "1") else "%s x %s" % (text, scale)
+
+    def boundary(key):
+        id = m.get(key, "?")
+        name = parameters(directory, "Boundary " + id).get("Name", "")
+        return "boundary %s%s" % (id, " (%s)" % name if name else "")
+
+    measure = m.get("Load measure", "load factor")
+    if phase == "strength reduction":
+        load = "strength reduction factor F"
+    elif measure == "reaction":
+        load = scaled("reaction on %s, %s" % (boundary("Load boundary id"),
+                                                m.get("Load component", "?")),
+                      m.get("Load scale", "1"))
+    elif measure == "load factor":
+        load = scaled("load factor", m.get("Load scale", "1"))
+    else:
+        load = scaled("mean stress %s over material %s" % (m.get("Load stress component", "?"),
+                                                            m.get("Load material id", "?")),
+                      m.get("Load scale", "1"))
+    where = ("at (%s)" % m.get("Displacement point", "?")
+             if m.get("Displacement measure") == "point"
+             else "on " + boundary("Displacement boundary id"))
+    displacement = scaled("displacement %s %s" % (m.get("Displacement component", "?"), where),
+                          m.get("Displacement scale", "1"))
+    return load, displacement

@@ -112,7 +112,8 @@ namespace thinlayer
                       "algebraic multigrid, GAMG, with the rigid-body "
                       "motions), for a scene whose factors do not fit in "
                       "memory: every solve then iterates, slowly where a "
-                      "thin layer is much stiffer than the soil (README). "
+                      "thin layer is much stiffer than the soil (the manual's "
+                      "page on running a scene). "
                       "Newton's tangent is factorised whatever this says.");
     prm.declare_entry("Linear solver tolerance",
                       "1e-10",

@@ -12,8 +12,8 @@ namespace thinlayer
      * in 5 to 70 iterations away from collapse (benchmarks/outcomes.py);
      * beyond that a few Newton iterations are cheaper. The cap trades the
      * cheap method's long creep near collapse against Newton's costlier
-     * iterations; it leaves the collapse loads unchanged, and the README's
-     * benchmark section gives the times that chose it.
+     * iterations; it leaves the collapse loads unchanged, and
+     * benchmarks/outcomes.py measures the times that chose it.
      */
     constexpr unsigned int accelerated_budget = 100;
   } // namespace

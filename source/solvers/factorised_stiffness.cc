@@ -22,10 +22,9 @@ namespace thinlayer
      * when it was compiled (4), which neither OMP_NUM_THREADS nor any
      * CHOLMOD setting lowers. On a machine with fewer cores, or under
      * mpirun with a rank per core, those threads contend for the cores at
-     * every supernode: on the project's 2-core machine a Newton iteration
-     * of Prandtl's footing with 8192 cells spent a third of its time in
-     * the kernel's scheduler (500 000 context switches in 11.9 s), and took
-     * 6.9 s without them. The work itself is BLAS's (serial here) and
+     * every supernode, and a factorisation spends much of its time in the
+     * kernel's scheduler (benchmarks/linear_solvers.py shows the cost of
+     * a factorisation). The work itself is BLAS's (serial here) and
      * thinlayer's; so OpenMP regions are made inactive (one thread each)
      * for the whole process, by the runtime's maximum of active levels,
      * which bounds the thread count of every region whatever its clause.

@@ -98,8 +98,8 @@ def figure12(runs, quick):
         "By the paper's method the rough wall carries %+.0f%% over the smooth (the paper: "
         "around +30%%, read as +- 5 points), and every K_pc lies %s CP2's, from %+.1f%% to "
         "%+.1f%%: conservative, as the paper expects. The default method's values stand beside "
-        "them in the table. Zero-thickness elements with a stiff wall give %.3f on this mesh (issue 15 measured "
-        "2.773 and 2.719 on two finer ones, not rerun here): there the concentrated force at "
+        "them in the table. Zero-thickness elements with a stiff wall give %.3f on this mesh: there the "
+        "concentrated force at "
         "the wall's toe counts in the load." % (
             100 * rise, "within 7% below" if conservative else "outside 7% below",
             min(100 * (k / CP2[r] - 1) for r, k in computed.items()),

@@ -1,6 +1,6 @@
 """Chart helpers every section of the report shares.
 
-The rules they keep (issue 16): a load-displacement curve joins converged,
+The rules they keep: a load-displacement curve joins converged,
 accepted states only, and the attempts that ended a run are marked apart
 (an 'x'), never joined to it; axes name their normalisation; meshes are
 drawn from the mesh.msh a run wrote (the mesh as meshed, interface layers

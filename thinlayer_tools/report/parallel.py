@@ -109,7 +109,7 @@ def sections(runs, quick):
            "tolerance's share, 1e-6 of the load. %s The section asks for "
            "at most %.0e relative, and the same outcome. Time and memory against ranks and mesh "
            "size are in benchmarks/ranks.py, the solvers against each other in "
-           "benchmarks/linear_solvers.py, both in the README." % (
+           "benchmarks/linear_solvers.py (the manual's benchmark page)." % (
                "Every run agrees with its one-rank run." if agree else
                "Some runs DIFFER from their one-rank run (marked).", LOAD_AGREEMENT))
     return [Section(

@@ -184,7 +184,7 @@ def sections(runs, quick):
 
     why = (
         "Measured on this machine (the report's footer names it), one run each. At %d cells "
-        "two ranks take %.2f of one rank's time per iteration (the issue's target: at most "
+        "two ranks take %.2f of one rank's time per iteration (the project's target: at most "
         "1.2) and %.2f of its peak memory per rank (target: at most 0.6); above the %.0f MB "
         "every rank spends on the loaded program itself (libraries and MPI, measured before "
         "the mesh is read) the ratio is %.2f. The model fitted to these runs (N unknowns, P "

@@ -28,8 +28,11 @@ namespace thinlayer
    * at the end (ResultsDirectory); a signal ends the sweep after the run
    * it interrupted.
    *
+   * @param file      the parameter file, named in errors and in each run's
+   *                  record.
    * @param overrides the command line's overrides, applied to every run.
    * @param base      the parameters as read without the sweep.
+   * @param out       where the progress of the runs goes.
    * @return how many runs ended in an error (not in non-convergence, which
    * is a result) and how many missed what the Reference section expects:
    * the program then exits non-zero.

@@ -167,7 +167,7 @@ namespace thinlayer
     /// The section's name: "Boundary <id>".
     static std::string
     section(const unsigned int id);
-    /// With @p in_phase, as a subsection of a loading phase (Phase <n>).
+    /// With @p in_phase, as a subsection of a loading phase (`Phase <n>`).
     static void
     declare(ParameterHandler  &prm,
             const unsigned int id,

@@ -22,8 +22,8 @@ namespace thinlayer
    * do not fit. Every solve costs a few dozen to hundreds of CG
    * iterations, where a substitution with the factors costs one pass, and
    * the count grows with a thin layer's stiffness contrast times its aspect
-   * ratio (README): the direct solvers are the choice wherever their
-   * factors fit.
+   * ratio (benchmarks/linear_solvers.py): the direct solvers are the choice
+   * wherever their factors fit.
    *
    * As with DistributedFactorisation, the matrix is distributed by rows
    * (each rank its contiguous DoFs), and right-hand sides and solutions
