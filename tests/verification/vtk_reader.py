@@ -192,6 +192,23 @@ def datasets(directory):
             for d in root.iter("DataSet")]
 
 
+def open_file(directory, name, load, ranks, totals):
+    """Read @p name with VTK's reader for its kind, report that it read
+    without error, its pieces (a .pvtu: one per rank) and its sizes, and
+    append (load, points, cells) to @p totals; the grid read."""
+    print(" %s (load factor %s):" % (name, number(load)))
+    grid, reader, ok = read(os.path.join(directory, name))
+    report("read by %s without error" % reader.GetClassName(), ok)
+    if name.endswith(".pvtu"):
+        report("pieces", reader.GetNumberOfPieces() == ranks,
+               reader.GetNumberOfPieces(), ranks)
+    n_points, n_cells = grid.GetNumberOfPoints(), grid.GetNumberOfCells()
+    report("points, cells", n_points > 0 and n_cells > 0,
+           "%d, %d" % (n_points, n_cells), "above 0")
+    totals.append((load, n_points, n_cells))
+    return grid
+
+
 def check_run(label, directory, exact):
     """Every check of one run; returns what the runs are compared on."""
     print("%s:" % label)
@@ -209,16 +226,7 @@ def check_run(label, directory, exact):
     c, s = exact["cos"], exact["sin"]
     tol = 1e-6  # Float32 in the fields' VTU
     for load, name in steps:
-        print(" %s (load factor %s):" % (name, number(load)))
-        grid, reader, ok = read(os.path.join(directory, name))
-        report("read by %s without error" % reader.GetClassName(), ok)
-        if name.endswith(".pvtu"):
-            report("pieces", reader.GetNumberOfPieces() == exact["ranks"],
-                   reader.GetNumberOfPieces(), exact["ranks"])
-        n_points, n_cells = grid.GetNumberOfPoints(), grid.GetNumberOfCells()
-        report("points, cells", n_points > 0 and n_cells > 0,
-               "%d, %d" % (n_points, n_cells), "above 0")
-        totals["fields"].append((load, n_points, n_cells))
+        grid = open_file(directory, name, load, exact["ranks"], totals["fields"])
         if not check_arrays("fields", grid, fields):
             continue
         data = grid.GetPointData()
@@ -234,7 +242,7 @@ def check_run(label, directory, exact):
         worst_ux, worst_uy = Worst(u_scale, tol), Worst(u_scale, tol)
         worst = {k: Worst(load * p, tol) for k in stress}
         worst_layer = Worst(load * p, tol)
-        for i in range(n_points):
+        for i in range(grid.GetNumberOfPoints()):
             x, y, _ = grid.GetPoint(i)
             worst_ux.add(u.GetComponent(i, 0), load * a * x)
             worst_uy.add(u.GetComponent(i, 1), -load * b * y)
@@ -269,13 +277,7 @@ def check_run(label, directory, exact):
     tol = 1e-8  # ASCII with 10 significant digits in the layer's VTU
     for name in layer_files:
         load = load_of_step.get(int(name[-8:-4]), math.nan)
-        print(" %s (load factor %s):" % (name, number(load)))
-        grid, reader, ok = read(os.path.join(directory, name))
-        report("read by %s without error" % reader.GetClassName(), ok)
-        n_points, n_cells = grid.GetNumberOfPoints(), grid.GetNumberOfCells()
-        report("points, cells", n_points > 0 and n_cells > 0,
-               "%d, %d" % (n_points, n_cells), "above 0")
-        totals["layer"].append((load, n_points, n_cells))
+        grid = open_file(directory, name, load, exact["ranks"], totals["layer"])
         if not check_arrays("layer", grid, profile):
             continue
         data = grid.GetPointData()
@@ -287,7 +289,7 @@ def check_run(label, directory, exact):
                 ("opening", -load * b * tv * c, "-L b tv cos")):
             worst = Worst(abs(exact_value), tol)
             values = data.GetArray(array)
-            for i in range(n_points):
+            for i in range(grid.GetNumberOfPoints()):
                 worst.add(values.GetComponent(i, 0), exact_value)
             worst.report_value(array, text)
     return totals
