@@ -43,7 +43,7 @@ import statistics
 import subprocess
 import time
 
-from thinlayer_tools import THINLAYER, TOP, cases, results, run_module
+from thinlayer_tools import THINLAYER, TOP, cases, overrides, results, run_module
 OUT = os.path.join(TOP, "output", "benchmarks")
 
 # case: (parameter file, {mesh level: geometry parameters}), the levels of
@@ -124,16 +124,13 @@ def points(pts):
 
 
 def run_once(prm, geometry, solver, tol, directory, extra=()):
-    command = ["/usr/bin/time", "-f", "%M", THINLAYER, os.path.join(TOP, prm),
-               "-s", "Solver/Linear solver=" + solver,
-               "-s", "Solver/Tolerance=" + tol,
-               "-s", "Output/Directory=" + directory,
-               "-s", "Output/Write VTU=false",
-               "-s", "Output/Print timing=false"]
+    entries = ["Solver/Linear solver=" + solver, "Solver/Tolerance=" + tol,
+               "Output/Directory=" + directory, "Output/Write VTU=false",
+               "Output/Print timing=false"]
     if geometry:
-        command += ["-s", "Mesh/Geometry parameters=" + geometry]
-    for entry in extra:
-        command += ["-s", entry]
+        entries.append("Mesh/Geometry parameters=" + geometry)
+    command = ["/usr/bin/time", "-f", "%M", THINLAYER, os.path.join(TOP, prm)] + \
+        overrides(list(entries) + list(extra))
     done = subprocess.run(command, capture_output=True, text=True, check=True)
     peak_kb = int(done.stderr.strip().splitlines()[-1])
     with open(os.path.join(directory, "summary.json")) as f:
@@ -440,9 +437,8 @@ def stability():
     for material, prm in maps:
         for method, criterion in METHODS:
             directory = os.path.join(OUT, "stability", "%s-%s" % (material, method.replace(" ", "_")))
-            command = [THINLAYER, os.path.join(TOP, prm), "-s", "Output/Directory=" + directory]
-            for entry in method_entries(method, criterion):
-                command += ["-s", entry]
+            command = [THINLAYER, os.path.join(TOP, prm)] + overrides(
+                ["Output/Directory=" + directory] + list(method_entries(method, criterion)))
             start = time.time()
             subprocess.run(command, capture_output=True, text=True, check=True)
             seconds = time.time() - start

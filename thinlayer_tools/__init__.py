@@ -60,3 +60,14 @@ def run_for_summary(command, directory):
     subprocess.run(command, capture_output=True, text=True, check=True)
     with open(os.path.join(directory, "summary.json")) as f:
         return json.load(f)
+
+
+def overrides(entries):
+    """The command line's ["-s", entry, ...] for @p entries
+    ("Section/Entry=value"), a later entry replacing an earlier one for the
+    same Section/Entry where it stood: the program refuses an entry given
+    twice, as a user's mistake."""
+    chosen = {}
+    for entry in entries:
+        chosen[entry.split("=", 1)[0].strip()] = entry
+    return [word for entry in chosen.values() for word in ("-s", entry)]

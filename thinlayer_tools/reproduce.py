@@ -23,6 +23,7 @@ import sys
 import time
 
 from thinlayer_tools import THINLAYER, TOP, mpirun, run_module
+from thinlayer_tools import overrides as command_line_overrides
 from thinlayer_tools.report import (bearing_capacity, case1, case4, curved, earth_pressure,
                                     footings, limits, methods, page, parallel, phases, pile,
                                     pile_lateral, scaling, solid, speed, strength_reduction,
@@ -123,12 +124,9 @@ def run_list(quick):
 def run_one(directory, name, scene, overrides, ranks=1):
     """One run into DIR/runs/NAME, its output into DIR/logs/NAME.log: its
     exit status and wall time."""
-    command = mpirun(ranks) + [
-        THINLAYER, os.path.join(TOP, "prm", scene + ".prm"),
-        "-s", "Output/Directory=" + os.path.join(directory, "runs", name),
-        "-s", "Output/Print timing=false"]
-    for entry in overrides:
-        command += ["-s", entry]
+    command = mpirun(ranks) + [THINLAYER, os.path.join(TOP, "prm", scene + ".prm")] + \
+        command_line_overrides(["Output/Directory=" + os.path.join(directory, "runs", name),
+                                "Output/Print timing=false"] + list(overrides))
     begun = time.time()
     done = subprocess.run(command, capture_output=True, text=True)
     with open(os.path.join(directory, "logs", name + ".log"), "w") as f:
