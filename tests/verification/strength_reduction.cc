@@ -129,7 +129,8 @@ main()
   expect(low <= safety && safety < high && low > 1,
          "the bracket holds F and is stated in F");
   expect(reason.find("the safety factor lies between " +
-                     thinlayer::text_format::printf("%.6g", low)) != std::string::npos,
+                     thinlayer::text_format::printf("%.6g", low)) !=
+           std::string::npos,
          "the reason states the same bracket");
   return truths::conclude();
 }
