@@ -28,10 +28,10 @@ namespace thinlayer
 
 
   RevolvedView
-  revolved_view(const Analysis<2> &analysis,
-                const CellFields  &fields,
-                const ModeVectors &modes,
-                const unsigned int slices)
+  revolved_view(const AnalysisView<2> &analysis,
+                const CellFields      &fields,
+                const ModeVectors     &modes,
+                const unsigned int     slices)
   {
     const Kinematics &kinematics  = analysis.get_kinematics();
     const auto       &dof_handler = analysis.get_dof_handler();

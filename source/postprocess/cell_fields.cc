@@ -7,7 +7,7 @@
 namespace thinlayer
 {
   template <int dim>
-  CellFields::CellFields(const Analysis<dim> &analysis)
+  CellFields::CellFields(const AnalysisView<dim> &analysis)
   {
     const auto        &tria    = analysis.get_dof_handler().get_triangulation();
     const unsigned int n_q     = analysis.n_quadrature_points();
@@ -26,9 +26,9 @@ namespace thinlayer
         const unsigned int c = cell->active_cell_index();
         material[c]          = cell->material_id();
         // Another rank's points: it writes their cell.
-        if (!analysis.cells().owns(c))
+        if (!analysis.get_cells().owns(c))
           continue;
-        const MaterialLaw &law = analysis.material_law(c);
+        const MaterialLaw &law = analysis.get_material_law(c);
         for (unsigned int s = 0; s < n_s; ++s)
           {
             yield_ratio[s][c] = law.can_yield()
@@ -36,7 +36,7 @@ namespace thinlayer
                                   : std::numeric_limits<double>::quiet_NaN();
             for (unsigned int q = 0; q < n_q; ++q)
               {
-                const PointState &state = analysis.point_state(c, q, s);
+                const PointState &state = analysis.get_point_state(c, q, s);
                 for (unsigned int k = 0; k < n_components; ++k)
                   stress[s][k][c] +=
                     state.stress[components[k][0]][components[k][1]] / n_q;
@@ -55,6 +55,6 @@ namespace thinlayer
   }
 
 
-  template CellFields::CellFields(const Analysis<2> &);
-  template CellFields::CellFields(const Analysis<3> &);
+  template CellFields::CellFields(const AnalysisView<2> &);
+  template CellFields::CellFields(const AnalysisView<3> &);
 } // namespace thinlayer

@@ -50,14 +50,14 @@ namespace thinlayer
     "interface_normal_traction"};
 
 
-  LayerProfile<2>::LayerProfile(const Analysis<2>       &analysis,
+  LayerProfile<2>::LayerProfile(const AnalysisView<2>   &analysis,
                                 const types::material_id material_id,
                                 const std::string       &parameter_file)
     : LayerReading<2>(material_id)
   {
     // The layer is chained on the whole mesh (its runs may cross ranks);
     // each rank then evaluates the samples of its own cells.
-    const Triangulation<2> &tria = analysis.whole_mesh();
+    const Triangulation<2> &tria = analysis.get_whole_mesh();
     const DoFHandler<2>     dof_handler(tria);
     const double            tolerance = 1e-9 * GridTools::diameter(tria);
     const std::string       entry     = "Layers/Material ids";
@@ -152,12 +152,12 @@ namespace thinlayer
 
 
   double
-  LayerProfile<2>::add_cell_samples(const Analysis<2>  &analysis,
-                                    const CellIterator &cell,
-                                    const unsigned int  long_direction,
-                                    const unsigned int  entry_face,
-                                    const unsigned int  run,
-                                    const double        start)
+  LayerProfile<2>::add_cell_samples(const AnalysisView<2> &analysis,
+                                    const CellIterator    &cell,
+                                    const unsigned int     long_direction,
+                                    const unsigned int     entry_face,
+                                    const unsigned int     run,
+                                    const double           start)
   {
     const Mapping<2> &mapping = analysis.get_mapping();
     const auto        mid     = [&](const double along) {
@@ -218,7 +218,7 @@ namespace thinlayer
 
 
   Profile
-  LayerProfile<2>::profile(const Analysis<2> &analysis) const
+  LayerProfile<2>::profile(const AnalysisView<2> &analysis) const
   {
     Profile result;
     result.samples = places;
@@ -231,8 +231,8 @@ namespace thinlayer
 
 
   std::vector<Vector<double>>
-  LayerProfile<2>::cell_fields(const Analysis<2> &analysis,
-                               const unsigned int station) const
+  LayerProfile<2>::cell_fields(const AnalysisView<2> &analysis,
+                               const unsigned int     station) const
   {
     return layer_cell_averages(analysis,
                                samples,

@@ -46,14 +46,14 @@ namespace thinlayer
     "interface_normal_traction"};
 
 
-  LayerProfile<3>::LayerProfile(const Analysis<3>       &analysis,
+  LayerProfile<3>::LayerProfile(const AnalysisView<3>   &analysis,
                                 const types::material_id material_id,
                                 const std::string       &parameter_file)
     : LayerReading<3>(material_id)
   {
     // The layer is found on the whole mesh, in the order of its cells;
     // each rank then evaluates the samples of its own cells.
-    const Triangulation<3> &tria = analysis.whole_mesh();
+    const Triangulation<3> &tria = analysis.get_whole_mesh();
     const DoFHandler<3>     dof_handler(tria);
     const std::string       entry = "Layers/Material ids";
     const std::string       name = "material id " + std::to_string(material_id);
@@ -98,9 +98,9 @@ namespace thinlayer
 
 
   void
-  LayerProfile<3>::add_cell_samples(const Analysis<3>  &analysis,
-                                    const CellIterator &cell,
-                                    const unsigned int  thickness)
+  LayerProfile<3>::add_cell_samples(const AnalysisView<3> &analysis,
+                                    const CellIterator    &cell,
+                                    const unsigned int     thickness)
   {
     const Mapping<3> &mapping = analysis.get_mapping();
     const auto at = [&](const double a, const double b, const double across) {
@@ -162,7 +162,7 @@ namespace thinlayer
 
 
   Profile
-  LayerProfile<3>::profile(const Analysis<3> &analysis) const
+  LayerProfile<3>::profile(const AnalysisView<3> &analysis) const
   {
     Profile result;
     result.surface_samples = places;
@@ -172,8 +172,8 @@ namespace thinlayer
 
 
   std::vector<Vector<double>>
-  LayerProfile<3>::cell_fields(const Analysis<3> &analysis,
-                               const unsigned int station) const
+  LayerProfile<3>::cell_fields(const AnalysisView<3> &analysis,
+                               const unsigned int     station) const
   {
     return layer_cell_averages(analysis,
                                samples,

@@ -16,7 +16,7 @@ namespace thinlayer
 {
   template <int dim>
   Monitors<dim>::Monitors(const MonitorParameters &parameters,
-                          const Analysis<dim>     &analysis,
+                          const AnalysisView<dim> &analysis,
                           const std::string       &parameter_file)
     : parameters(parameters)
     , analysis(analysis)
@@ -120,17 +120,17 @@ namespace thinlayer
   {
     const auto [i, j]           = parameters.load_stress_component;
     const unsigned int n_q      = analysis.n_quadrature_points();
-    const auto        &B        = analysis.cells().get_strain_operator();
+    const auto        &B        = analysis.get_cells().get_strain_operator();
     double             integral = 0, area = 0;
     for (const auto &cell :
          analysis.get_dof_handler().get_triangulation().active_cell_iterators())
       if (cell->material_id() == parameters.load_material_id &&
-          analysis.cells().owns(cell->active_cell_index()))
+          analysis.get_cells().owns(cell->active_cell_index()))
         for (unsigned int q = 0; q < n_q; ++q)
           {
             const unsigned int c = cell->active_cell_index();
             const double       w = B.point_weight(c * n_q + q);
-            integral += analysis.point_state(c, q).stress[i][j] * w;
+            integral += analysis.get_point_state(c, q).stress[i][j] * w;
             area += w;
           }
     // Each rank's cells' share.
@@ -176,9 +176,9 @@ namespace thinlayer
     unsigned int m = 0;
     while (kinematics.harmonic(m) != harmonic)
       ++m;
-    ModeVector f(analysis.internal_forces()[m]);
-    f.add(-analysis.load_factor(), analysis.mode_system(m).unit_load);
-    f -= analysis.mode_system(m).held_load;
+    ModeVector f(analysis.get_internal_forces()[m]);
+    f.add(-analysis.load_factor(), analysis.get_mode_system(m).unit_load);
+    f -= analysis.get_mode_system(m).held_load;
     condense(analysis.get_element_constraints(), f);
 
     // Components: 0 x or r, 1 y or z, 2 theta or z; coordinates likewise.

@@ -6,7 +6,7 @@ namespace thinlayer
   template <int dim>
   AcceleratedInitialStressMethod<dim>::AcceleratedInitialStressMethod(
     const SolverParameters &parameters,
-    Analysis<dim>          &analysis)
+    IterationAccess<dim>   &analysis)
     : ReturnMappingMethod<dim>(parameters, analysis)
     , anderson(parameters.anderson_depth)
   {}
@@ -65,22 +65,23 @@ namespace thinlayer
                                                ResidualNorms &norms,
                                                StepResult & /*result*/)
   {
-    Analysis<dim> &analysis = this->analysis;
+    IterationAccess<dim> &analysis = this->analysis;
     this->elastic_corrections();
     this->remember_increments();
-    const unsigned int n = analysis.step_increment()[0].locally_owned_size();
+    const unsigned int n =
+      analysis.get_step_increment()[0].locally_owned_size();
     for (unsigned int m = 0; m < analysis.n_modes(); ++m)
       for (unsigned int k = 0; k < n; ++k)
         {
           stacked_increment.local_element(m * n + k) =
-            analysis.step_increment()[m].local_element(k);
+            analysis.get_step_increment()[m].local_element(k);
           stacked_correction.local_element(m * n + k) =
             this->correction[m].local_element(k);
         }
     anderson.update(stacked_increment, stacked_correction);
     for (unsigned int m = 0; m < analysis.n_modes(); ++m)
       for (unsigned int k = 0; k < n; ++k)
-        analysis.step_increment()[m].local_element(k) =
+        analysis.get_step_increment()[m].local_element(k) =
           stacked_increment.local_element(m * n + k);
     norms = this->evaluate_residual(target);
     return true;

@@ -11,7 +11,7 @@ namespace thinlayer
     this->elastic_corrections();
     this->remember_increments();
     for (unsigned int m = 0; m < this->analysis.n_modes(); ++m)
-      this->analysis.step_increment()[m] += this->correction[m];
+      this->analysis.get_step_increment()[m] += this->correction[m];
     norms = this->evaluate_residual(target);
     return true;
   }

@@ -8,11 +8,11 @@ namespace thinlayer
   NewtonMethod<dim>::initialize()
   {
     ReturnMappingMethod<dim>::initialize();
-    Analysis<dim> &analysis = this->analysis;
+    IterationAccess<dim> &analysis = this->analysis;
 
     std::vector<const AffineConstraints<double> *> mode_constraints;
     for (unsigned int m = 0; m < analysis.n_modes(); ++m)
-      mode_constraints.push_back(&analysis.mode_system(m).constraints);
+      mode_constraints.push_back(&analysis.get_mode_system(m).constraints);
     // A non-associated flow rule makes the tangent unsymmetric. The
     // tangent is factorised with amg cg too (by CHOLMOD where symmetric).
     system = std::make_unique<CoupledSystem>(
@@ -66,8 +66,8 @@ namespace thinlayer
                              ResidualNorms &norms,
                              StepResult    &result)
   {
-    Analysis<dim>     &analysis = this->analysis;
-    const unsigned int n_modes  = analysis.n_modes();
+    IterationAccess<dim> &analysis = this->analysis;
+    const unsigned int    n_modes  = analysis.n_modes();
 
     ++result.factorisations;
     if (!factorise_tangent())
@@ -79,7 +79,7 @@ namespace thinlayer
         this->remember_increments();
         this->elastic_corrections();
         for (unsigned int m = 0; m < n_modes; ++m)
-          analysis.step_increment()[m] += this->correction[m];
+          analysis.get_step_increment()[m] += this->correction[m];
         norms = this->evaluate_residual(target, /*tangents=*/true);
         return true;
       }
@@ -96,7 +96,7 @@ namespace thinlayer
       {
         for (unsigned int m = 0; m < n_modes; ++m)
           {
-            ModeVector &increment = analysis.step_increment()[m];
+            ModeVector &increment = analysis.get_step_increment()[m];
             increment             = this->previous_increment[m];
             increment.add(scale, this->correction[m]);
           }
@@ -113,7 +113,7 @@ namespace thinlayer
   bool
   NewtonMethod<dim>::factorise_tangent()
   {
-    Analysis<dim> &analysis = this->analysis;
+    IterationAccess<dim> &analysis = this->analysis;
     return system->factorise([&analysis](const CellMatrixSink &add) {
       analysis.add_coupled_tangent(add);
     });

@@ -21,7 +21,7 @@ namespace thinlayer
   template <int dim>
   NewtonFallbackMethod<dim>::NewtonFallbackMethod(
     const SolverParameters &parameters,
-    Analysis<dim>          &analysis)
+    IterationAccess<dim>   &analysis)
     : accelerated_parameters(parameters)
     , accelerated(accelerated_parameters, analysis)
     , newton(parameters, analysis)

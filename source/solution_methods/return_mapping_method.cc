@@ -11,7 +11,7 @@ namespace thinlayer
   template <int dim>
   ReturnMappingMethod<dim>::ReturnMappingMethod(
     const SolverParameters &parameters,
-    Analysis<dim>          &analysis)
+    IterationAccess<dim>   &analysis)
     : parameters(parameters)
     , analysis(analysis)
   {}
@@ -37,7 +37,7 @@ namespace thinlayer
   void
   ReturnMappingMethod<dim>::state_accepted()
   {
-    accepted_increment = analysis.step_increment();
+    accepted_increment = analysis.get_step_increment();
     accepted_step      = analysis.accepted_load_factor() - accepted_load_factor;
     accepted_load_factor = analysis.accepted_load_factor();
   }
@@ -64,15 +64,16 @@ namespace thinlayer
                         analysis.accepted_force_scale()};
     for (unsigned int m = 0; m < analysis.n_modes(); ++m)
       {
-        const ModeSystem &mode = analysis.mode_system(m);
+        const ModeSystem &mode = analysis.get_mode_system(m);
         ModeVector       &r    = residual[m];
         r                      = mode.unit_load;
         r *= target;
         r += mode.held_load;
-        norms.forces = std::max({norms.forces,
-                                 r.linfty_norm(),
-                                 analysis.internal_forces()[m].linfty_norm()});
-        r -= analysis.internal_forces()[m];
+        norms.forces =
+          std::max({norms.forces,
+                    r.linfty_norm(),
+                    analysis.get_internal_forces()[m].linfty_norm()});
+        r -= analysis.get_internal_forces()[m];
         mode.condense(r);
         norms.max = std::max(norms.max, r.linfty_norm());
         norms.l2 += r.norm_sqr();
@@ -95,7 +96,7 @@ namespace thinlayer
       {
         for (unsigned int m = 0; m < analysis.n_modes(); ++m)
           {
-            ModeVector &increment = analysis.step_increment()[m];
+            ModeVector &increment = analysis.get_step_increment()[m];
             increment             = accepted_increment[m];
             increment *= scale;
           }
@@ -110,18 +111,18 @@ namespace thinlayer
     // u / t, far beyond yield even where the step is elastic, and the
     // iterations have to bring it back from there (on a layer that follows
     // a circle, and so can slide round it, they often could not).
-    ModeVectors &increments = analysis.step_increment();
+    ModeVectors &increments = analysis.get_step_increment();
     double       prescribed = 0;
     for (unsigned int m = 0; m < analysis.n_modes(); ++m)
       {
-        const ModeSystem &mode = analysis.mode_system(m);
+        const ModeSystem &mode = analysis.get_mode_system(m);
         prescribed =
           std::max(prescribed, mode.unit_prescribed_displacement.linfty_norm());
       }
     const bool lift = prescribed > 0 && dlambda != 0;
     for (unsigned int m = 0; m < analysis.n_modes(); ++m)
       {
-        const ModeSystem &mode = analysis.mode_system(m);
+        const ModeSystem &mode = analysis.get_mode_system(m);
         if (lift)
           {
             // -K u_p: the right-hand side f - K u_p less f.
@@ -137,7 +138,7 @@ namespace thinlayer
       analysis.elastic_solve(increments);
     for (unsigned int m = 0; m < analysis.n_modes(); ++m)
       {
-        const ModeSystem &mode = analysis.mode_system(m);
+        const ModeSystem &mode = analysis.get_mode_system(m);
         if (lift)
           mode.distribute(increments[m]);
         increments[m].add(dlambda, mode.unit_prescribed_displacement);
@@ -229,12 +230,12 @@ namespace thinlayer
         report_iteration(k + 1, "residual", norms.max / norms.forces);
         growth.iteration_done(k + 1,
                               max_iterations(),
-                              analysis.step_increment());
+                              analysis.get_step_increment());
         watch.add(norms.max / norms.forces);
         if (!this->final_attempt && gives_up(watch))
           return false;
       }
-    result.growth_ratio = growth.growth_ratio(analysis.step_increment());
+    result.growth_ratio = growth.growth_ratio(analysis.get_step_increment());
     return false;
   }
 
@@ -259,7 +260,7 @@ namespace thinlayer
             double change = 0, size = 0;
             for (unsigned int m = 0; m < analysis.n_modes(); ++m)
               {
-                const ModeVector &increment = analysis.step_increment()[m];
+                const ModeVector &increment = analysis.get_step_increment()[m];
                 previous_increment[m] -= increment;
                 change = std::max(change, previous_increment[m].linfty_norm());
                 size   = std::max(size, increment.linfty_norm());
@@ -279,7 +280,7 @@ namespace thinlayer
       correction[m] = residual[m];
     analysis.elastic_solve(correction);
     for (unsigned int m = 0; m < analysis.n_modes(); ++m)
-      analysis.mode_system(m).distribute(correction[m]);
+      analysis.get_mode_system(m).distribute(correction[m]);
   }
 
 
@@ -287,7 +288,7 @@ namespace thinlayer
   void
   ReturnMappingMethod<dim>::remember_increments()
   {
-    previous_increment = analysis.step_increment();
+    previous_increment = analysis.get_step_increment();
   }
 
 

@@ -46,7 +46,7 @@ namespace thinlayer
   template <int dim>
   std::unique_ptr<SolutionMethod<dim>>
   create_solution_method(const SolverParameters &parameters,
-                         Analysis<dim>          &analysis)
+                         IterationAccess<dim>   &analysis)
   {
     using Method = SolverParameters::Method;
     switch (parameters.method)
@@ -74,8 +74,8 @@ namespace thinlayer
   template class SolutionMethod<2>;
   template class SolutionMethod<3>;
   template std::unique_ptr<SolutionMethod<3>>
-  create_solution_method(const SolverParameters &, Analysis<3> &);
+  create_solution_method(const SolverParameters &, IterationAccess<3> &);
 
   template std::unique_ptr<SolutionMethod<2>>
-  create_solution_method(const SolverParameters &, Analysis<2> &);
+  create_solution_method(const SolverParameters &, IterationAccess<2> &);
 } // namespace thinlayer

@@ -25,7 +25,7 @@ namespace thinlayer
   template <int dim>
   ViscoplasticMethod<dim>::ViscoplasticMethod(
     const SolverParameters &parameters,
-    Analysis<dim>          &analysis)
+    IterationAccess<dim>   &analysis)
     : parameters(parameters)
     , analysis(analysis)
   {}
@@ -45,17 +45,17 @@ namespace thinlayer
   void
   ViscoplasticMethod<dim>::solve_increments(const double dlambda)
   {
-    ModeVectors &increments = analysis.step_increment();
+    ModeVectors &increments = analysis.get_step_increment();
     for (unsigned int m = 0; m < analysis.n_modes(); ++m)
       {
         increments[m] = body_loads[m];
-        increments[m].add(dlambda, analysis.mode_system(m).unit_rhs);
-        analysis.mode_system(m).condense(increments[m]);
+        increments[m].add(dlambda, analysis.get_mode_system(m).unit_rhs);
+        analysis.get_mode_system(m).condense(increments[m]);
       }
     analysis.elastic_solve(increments);
     for (unsigned int m = 0; m < analysis.n_modes(); ++m)
       {
-        const ModeSystem &mode = analysis.mode_system(m);
+        const ModeSystem &mode = analysis.get_mode_system(m);
         mode.distribute(increments[m]);
         increments[m].add(dlambda, mode.unit_prescribed_displacement);
         if (parameters.single_precision)
@@ -72,9 +72,9 @@ namespace thinlayer
     const unsigned int n_modes = analysis.n_modes();
     for (unsigned int m = 0; m < n_modes; ++m)
       {
-        body_loads[m]                = 0;
-        analysis.step_increment()[m] = 0;
-        previous_increment[m]        = 0;
+        body_loads[m]                    = 0;
+        analysis.get_step_increment()[m] = 0;
+        previous_increment[m]            = 0;
       }
 
     const bool body_load_criterion =
@@ -87,7 +87,7 @@ namespace thinlayer
         ++result.iterations;
         for (unsigned int m = 0; m < n_modes; ++m)
           {
-            previous_increment[m] = analysis.step_increment()[m];
+            previous_increment[m] = analysis.get_step_increment()[m];
             body_load_change[m]   = 0;
           }
         solve_increments(dlambda);
@@ -98,11 +98,11 @@ namespace thinlayer
         double change = 0, size = 0;
         for (unsigned int m = 0; m < n_modes; ++m)
           {
-            const ModeVector &increment = analysis.step_increment()[m];
+            const ModeVector &increment = analysis.get_step_increment()[m];
             // The body loads are kept condensed (condensing is linear, and
             // idempotent, so solve_increments() may condense them again):
             // the criterion reads them with no copy.
-            analysis.mode_system(m).condense(body_load_change[m]);
+            analysis.get_mode_system(m).condense(body_load_change[m]);
             body_loads[m] += body_load_change[m];
             if (parameters.single_precision)
               round_to_single(body_loads[m]);
@@ -124,14 +124,14 @@ namespace thinlayer
           result.converged = (change <= parameters.tolerance * size);
         growth.iteration_done(result.iterations,
                               parameters.max_iterations,
-                              analysis.step_increment());
+                              analysis.get_step_increment());
         report_iteration(result.iterations,
                          body_load_criterion ? "body-load change"
                                              : "displacement change",
                          size > 0 ? change / size : 0.);
       }
     if (!result.converged)
-      result.growth_ratio = growth.growth_ratio(analysis.step_increment());
+      result.growth_ratio = growth.growth_ratio(analysis.get_step_increment());
 
     return result;
   }

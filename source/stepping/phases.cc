@@ -13,7 +13,7 @@ namespace thinlayer
 {
   template <int dim>
   Phases<dim>::Phases(const Parameters                     &p,
-                      Analysis<dim>                        &analysis,
+                      StepAccess<dim>                      &analysis,
                       StepSolver<dim>                      &solver,
                       const Monitors<dim>                  &monitors,
                       const std::vector<LayerProfile<dim>> &layers,
@@ -35,7 +35,7 @@ namespace thinlayer
   {
     return p.initial_state.procedure ==
              InitialStateParameters::Procedure::none ||
-           analysis.applies_anything(Analysis<dim>::PhaseLoads::boundaries);
+           analysis.applies_anything(PhaseLoads::boundaries);
   }
 
 
@@ -55,8 +55,7 @@ namespace thinlayer
                        "is 0 (the weight is the initial state's); expected "
                        "at least one that is not, or a Strength reduction");
     for (unsigned int k = 0; k < p.loading_phases.size(); ++k)
-      if (!analysis.applies_anything(Analysis<dim>::PhaseLoads::boundaries,
-                                     k + 1))
+      if (!analysis.applies_anything(PhaseLoads::boundaries, k + 1))
         throw InputError(p.parameter_file,
                          LoadingPhaseParameters::section(k + 2) +
                            "/Boundary <id>",
@@ -111,13 +110,13 @@ namespace thinlayer
     ModeVectors u = analysis.new_mode_vectors();
     for (unsigned int m = 0; m < analysis.n_modes(); ++m)
       {
-        u[m] = analysis.internal_forces()[m];
-        analysis.mode_system(m).condense(u[m]);
+        u[m] = analysis.get_internal_forces()[m];
+        analysis.get_mode_system(m).condense(u[m]);
       }
     analysis.elastic_solve(u);
     for (unsigned int m = 0; m < analysis.n_modes(); ++m)
       {
-        analysis.mode_system(m).distribute(u[m]);
+        analysis.get_mode_system(m).distribute(u[m]);
         u[m].update_ghost_values();
       }
     return monitors.displacement_of(u).mean;
@@ -129,7 +128,7 @@ namespace thinlayer
   Phases<dim>::run(OutputWriter &writer, RunSummary &summary)
   {
     using Procedure      = InitialStateParameters::Procedure;
-    using Loads          = typename Analysis<dim>::PhaseLoads;
+    using Loads          = PhaseLoads;
     const auto procedure = p.initial_state.procedure;
     const auto run_phase = [&](const Phase &phase) {
       return Programme<dim>(

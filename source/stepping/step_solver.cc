@@ -4,7 +4,7 @@ namespace thinlayer
 {
   template <int dim>
   StepSolver<dim>::StepSolver(const SolverParameters &parameters,
-                              Analysis<dim>          &analysis)
+                              StepAccess<dim>        &analysis)
     : analysis(analysis)
     , method(create_solution_method(parameters, analysis))
     , tolerance(parameters.tolerance)

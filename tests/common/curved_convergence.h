@@ -29,7 +29,7 @@ namespace thinlayer_tests
     dealii::Vector<double> errors(tria.n_active_cells());
     dealii::VectorTools::integrate_difference(analysis.get_mapping(),
                                               analysis.get_dof_handler(),
-                                              analysis.get_solution(0),
+                                              analysis.whole_solution(0),
                                               exact,
                                               errors,
                                               dealii::QGauss<2>(5),

@@ -156,7 +156,7 @@ namespace
         double                      field_error     = 0;
         for (unsigned int k = 0; k < 4; ++k)
           for (unsigned int c = 0; c < fields.stress[0][k].size(); ++c)
-            if (analysis.cells().owns(c))
+            if (analysis.get_cells().owns(c))
               field_error =
                 std::max(field_error,
                          std::abs(fields.stress[0][k][c] - exact_stress[k]));
@@ -168,9 +168,9 @@ namespace
         bool holds_band = false;
         for (const auto &cell :
              analysis.get_dof_handler().active_cell_iterators())
-          holds_band =
-            holds_band || (cell->material_id() == 2 &&
-                           analysis.cells().owns(cell->active_cell_index()));
+          holds_band = holds_band ||
+                       (cell->material_id() == 2 &&
+                        analysis.get_cells().owns(cell->active_cell_index()));
         if (thinlayer::mpi::n_ranks() > 1)
           std::printf("  the band's cells on %u ranks\n",
                       thinlayer::mpi::sum(holds_band ? 1u : 0u));

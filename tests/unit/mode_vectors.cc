@@ -179,7 +179,7 @@ main(int argc, char **argv)
     for (unsigned int m = 0; m < analysis.n_modes(); ++m)
       {
         const AffineConstraints<double> &constraints =
-          analysis.mode_system(m).constraints;
+          analysis.get_mode_system(m).constraints;
         const AffineConstraints<double> whole_constraints =
           every_ranks_lines(constraints, analysis.get_dof_handler());
         ModeVector &v = vectors[m];
@@ -213,7 +213,7 @@ main(int argc, char **argv)
     bool small = true;
     for (unsigned int m = 0; m < analysis.n_modes(); ++m)
       {
-        const ModeSystem &mode = analysis.mode_system(m);
+        const ModeSystem &mode = analysis.get_mode_system(m);
         ModeVector        u(mode.unit_rhs);
         condense(mode.constraints, u);
         const Vector<double> f = analysis.whole(u);
@@ -228,7 +228,7 @@ main(int argc, char **argv)
         SparsityPattern pattern;
         pattern.copy_from(dsp);
         SparseMatrix<double> K(pattern);
-        analysis.cells().assemble_elastic(
+        analysis.get_cells().assemble_elastic(
           m, [&](const auto &dofs, const FullMatrix<double> &matrix) {
             mode.constraints.distribute_local_to_global(matrix, dofs, K);
           });

@@ -190,7 +190,7 @@ main()
           "case1-inclined-adhesive-zero-thickness.prm",
           "case1-3d-zero-thickness.prm",
           mesh + ", zero_thickness=1",
-          "interface-curve-3",
+          "interface-3",
           3);
   return truths::conclude();
 }

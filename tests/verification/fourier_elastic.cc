@@ -74,7 +74,7 @@ namespace
                                          analysis.get_dof_handler(),
                                          support);
     const auto          &fe    = analysis.get_dof_handler().get_fe();
-    const Vector<double> u     = analysis.get_solution(0);
+    const Vector<double> u     = analysis.whole_solution(0);
     double               error = 0;
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     for (const auto &cell : analysis.get_dof_handler().active_cell_iterators())
@@ -156,7 +156,7 @@ namespace
           {
             VectorTools::integrate_difference(analysis.get_mapping(),
                                               analysis.get_dof_handler(),
-                                              analysis.get_solution(0),
+                                              analysis.whole_solution(0),
                                               LameCylinder(),
                                               errors,
                                               quadrature,
@@ -288,7 +288,7 @@ namespace
         std::printf("  uniform horizontal traction, harmonic %u: largest "
                     "displacement amplitude %s\n",
                     m,
-                    a->get_solution(m).linfty_norm() < 1e-12
+                    a->whole_solution(m).linfty_norm() < 1e-12
                       ? "zero (below 1e-12)"
                       : "non-zero");
     }

@@ -135,7 +135,7 @@ main()
 
   // The profile of the last step, three Gauss points per cell side, from
   // the bottom up.
-  const run_results::Table profile = last_profile("interface-curve-6-");
+  const run_results::Table profile = last_profile("interface-6-");
   expect(profile.size() % 3 == 0, "three Gauss points per cell side");
 
   double shaft = 0, below = 0, normal = 0, at_rest = 0, worst_slip = 0,

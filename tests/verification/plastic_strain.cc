@@ -52,9 +52,9 @@ namespace
             strain[0][0] = gradients[q][0][0];
             strain[1][1] = gradients[q][1][1];
             strain[0][1] = 0.5 * (gradients[q][0][1] + gradients[q][1][0]);
-            const thinlayer::PointState &state = analysis.point_state(c, q);
+            const thinlayer::PointState &state = analysis.get_point_state(c, q);
             const SymmetricTensor<2, 3>  from_stress =
-              strain - analysis.material_law(c).compliance() * state.stress;
+              strain - analysis.get_material_law(c).compliance() * state.stress;
             worst =
               std::max(worst, (state.plastic_strain - from_stress).norm());
             largest = std::max(largest, strain.norm());

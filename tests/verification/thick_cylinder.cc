@@ -130,7 +130,7 @@ convergence(const std::string &element, const std::string &gauss)
         {
           VectorTools::integrate_difference(analysis.get_mapping(),
                                             analysis.get_dof_handler(),
-                                            analysis.get_solution(),
+                                            analysis.whole_solution(),
                                             exact,
                                             errors,
                                             quadrature,

@@ -13,6 +13,7 @@
 
 #include <thinlayer/analysis/mode_system.h>
 #include <thinlayer/analysis/rigid_body_modes.h>
+#include <thinlayer/analysis/step_access.h>
 #include <thinlayer/discretisation/boundary_data.h>
 #include <thinlayer/discretisation/kinematics.h>
 #include <thinlayer/discretisation/mode_vectors.h>
@@ -61,10 +62,12 @@ namespace thinlayer
    * before it is split (the facing sides of interface elements, the runs
    * of a layer's profile): whole_mesh().
    *
-   * A solution method (owned by the stepping, see StepSolver) sets the
-   * step increments and calls the point rules; the stepping then ends the
-   * attempt (end_attempt()), and accepts or rejects its state. Data flows
-   * one way: the analysis knows no method. For isotropic elasticity the
+   * Its callers see it through three interfaces, each wider than the
+   * one before: postprocessing and output read it (AnalysisView); a
+   * solution method (owned by the stepping, see StepSolver) sets the step
+   * increments and calls the point rules (IterationAccess); the stepping
+   * then ends the attempt, and accepts or rejects its state (StepAccess). Data
+   * flows one way: the analysis knows no method. For isotropic elasticity the
    * modes decouple, so a constant-stiffness iteration is one
    * forward/backward substitution per mode and one pass of the point
    * rules.
@@ -76,7 +79,7 @@ namespace thinlayer
    * triangulation has a curved manifold).
    */
   template <int dim>
-  class Analysis
+  class Analysis : public StepAccess<dim>
   {
   public:
     /**
@@ -97,346 +100,185 @@ namespace thinlayer
     void
     setup();
 
-    /// @name The state and the load factors
+    /// @name AnalysisView: what may be read (documented there)
     /// @{
 
     unsigned int
-    n_modes() const;
+    n_modes() const override;
 
-    /// The linear system of mode @p m.
     const ModeSystem &
-    mode_system(const unsigned int m) const;
+    get_mode_system(const unsigned int m) const override;
 
-    /// Solve K_m x = @p rhs in place with mode @p m's elastic factors
-    /// (@p rhs condensed with its constraints). A collective call.
-    void
-    elastic_solve(const unsigned int m, ModeVector &rhs);
-
-    /// The same for every mode m with @p rhs[m]: where the harmonics are
-    /// spread over the ranks, their substitutions run at the same time.
-    void
-    elastic_solve(ModeVectors &rhs);
-
-    /// One zero vector per mode, laid out as the state's (each rank's own
-    /// DoFs and its ghosts): what a solution method iterates with.
     ModeVectors
-    new_mode_vectors() const;
+    new_mode_vectors() const override;
 
-    /// @p v whole, its entries gathered from every rank (on one rank a
-    /// copy): for checks that compare with a whole vector (the tests); the
-    /// outputs and monitors read each rank's own cells instead. A
-    /// collective call.
     Vector<double>
-    whole(const ModeVector &v) const;
+    whole(const ModeVector &v) const override;
 
-    /// The displacements of the last accepted state, per mode.
-    const ModeVectors &
-    solution() const;
-
-    /// The displacement increment of the current step, per mode: what the
-    /// solution methods iterate on.
-    ModeVectors &
-    step_increment();
+    Vector<double>
+    whole_solution(const unsigned int mode = 0) const override;
 
     const ModeVectors &
-    step_increment() const;
+    get_solution() const override;
 
-    /// The internal forces int B^T sigma of the current stresses, per mode
-    /// (set by return_mapping_update() and end_attempt()).
     const ModeVectors &
-    internal_forces() const;
+    get_step_increment() const override;
 
-    /// The load factor of the last accepted state.
+    const ModeVectors &
+    get_internal_forces() const override;
+
     double
-    accepted_load_factor() const;
+    accepted_load_factor() const override;
 
-    /// The largest internal force (reactions included) of the last
-    /// accepted state: the force scale of a step that starts there.
     double
-    accepted_force_scale() const;
+    accepted_force_scale() const override;
 
-    /// The load factor of the current state: of the last attempt while it
-    /// is pending, else the accepted one.
     double
-    load_factor() const;
+    load_factor() const override;
 
-    /// Whether the current state is a pending step (solution plus
-    /// step_increment) rather than the accepted one.
     bool
-    is_pending() const;
+    is_pending() const override;
+
+    bool
+    all_laws_associated() const override;
+
+    double
+    secant_stiffness_ratio() const override;
+
+    bool
+    has_external_load() const override;
+
+    ModeVector
+    displacement_at(const double theta,
+                    const bool   increment = false) const override;
+
+    ModeVectors
+    displacements(const bool increment = false) const override;
+
+    ModeVector
+    displacement_at(const double       theta,
+                    const ModeVectors &modes) const override;
+
+    std::vector<NamedProfile>
+    profiles() const override;
+
+    const ContinuumCells<dim> &
+    get_cells() const override;
+
+    const PointState &
+    get_point_state(const unsigned int cell,
+                    const unsigned int q,
+                    const unsigned int station = 0) const override;
+
+    const SymmetricTensor<2, 3> &
+    stress(const unsigned int cell, const unsigned int q) const override;
+
+    const MaterialLaw &
+    get_material_law(const unsigned int cell) const override;
+
+    unsigned int
+    n_quadrature_points() const override;
+
+    const Kinematics &
+    get_kinematics() const override;
+
+    std::string
+    warnings() const override;
+
+    OwnedDofPlaces
+    owned_dof_places() const override;
+
+    const DoFHandler<dim> &
+    get_dof_handler() const override;
+
+    const Triangulation<dim> &
+    get_whole_mesh() const override;
+
+    bool
+    owns_whole_cell(const unsigned int c) const override;
+
+    const Mapping<dim> &
+    get_mapping() const override;
+
+    const CellPartition &
+    get_partition() const override;
+
+    const std::vector<IndexSet> &
+    get_owned_per_rank() const override;
+
+    const AffineConstraints<double> &
+    get_element_constraints() const override;
+
+    types::global_dof_index
+    n_dofs() const override;
+
+    types::global_dof_index
+    n_equations() const override;
+
+    double
+    substitution_seconds() const override;
+
+    double
+    linear_iterations_per_solve() const override;
 
     /// @}
-    /// @name Phases: the initial state, then the loading
+    /// @name IterationAccess: what a solution method does
     /// @{
 
-    /// The loads a phase applies in proportion to its load factor.
-    enum class PhaseLoads
-    {
-      /// The Boundary sections' values and the weight with the surcharge:
-      /// a run of one phase (gravity loading, if it has weight).
-      boundaries_and_weight,
-      /// The weight with the surcharge: the initial phase of gravity
-      /// loading (the prescribed displacements held at zero).
-      weight,
-      /// The Boundary sections' values: the loading after an initial
-      /// state.
-      boundaries,
-      /// Nothing: the loads are held while strengths are reduced.
-      none
-    };
+    ModeVectors &
+    get_step_increment() override;
 
-    /**
-     * Begin a phase that applies @p loads: the loads of the phase before
-     * it, at its accepted load factor, are held fixed from now on, and the
-     * load factor starts again from 0; so are its prescribed displacements
-     * where it left them. With @p reset_displacements the displacements
-     * start from zero; the stresses are kept. The boundary values are
-     * those of @p boundary_set: 0 the Boundary sections', k the loading
-     * phase Phase k + 1's.
-     */
+    void
+    elastic_solve(const unsigned int m, ModeVector &rhs) override;
+
+    void
+    elastic_solve(ModeVectors &rhs) override;
+
+    unsigned int
+    viscoplastic_update(ModeVectors &body_load_change) override;
+
+    unsigned int
+    return_mapping_update(const bool   with_tangents,
+                          ModeVectors &stress_excess) override;
+
+    void
+    add_coupled_sparsity(const DofSink &add) override;
+
+    void
+    add_coupled_tangent(const CellMatrixSink &add) override;
+
+    void
+    accept_step(const double load_factor) override;
+
+    /// @}
+    /// @name StepAccess: what the stepping does
+    /// @{
+
     void
     begin_phase(const PhaseLoads   loads,
                 const bool         reset_displacements,
-                const unsigned int boundary_set = 0);
+                const unsigned int boundary_set = 0) override;
 
-    /**
-     * The K0 procedure (KZeroStresses): every point of the continuum
-     * starts from the at-rest stresses of the weight and the surcharge,
-     * which are held as the body's load. Throws InputError where the
-     * ground surface is not level or a point's stress lies outside its
-     * material's yield surface. Returns the out-of-balance force of the
-     * initial stresses against that load, condensed, relative to the load
-     * (both the largest entry): zero on a level ground but for the
-     * quadrature's error on distorted cells.
-     */
     double
-    set_initial_stresses();
+    set_initial_stresses() override;
 
-    /// Divide the strengths of Strength reduction/Materials and its
-    /// Interface curves by @p factor (ElementGroup::reduce_strength()): for
-    /// the attempt that follows.
     void
-    reduce_strength(const double factor);
+    reduce_strength(const double factor) override;
 
-    /// Whether a phase of @p loads (with the boundary values of
-    /// @p boundary_set) would apply a load or prescribed displacements in
-    /// proportion to its load factor.
     bool
     applies_anything(const PhaseLoads   loads,
-                     const unsigned int boundary_set = 0) const;
+                     const unsigned int boundary_set = 0) const override;
 
-    /// @}
-    /// @name What the solution methods do to the state
-    /// @{
-
-    /**
-     * The paper's viscoplastic point rule of every group for the step
-     * increments; the body loads of the new viscoplastic strains are added
-     * to @p body_load_change. Returns the number of yielding points and
-     * stations.
-     */
-    unsigned int
-    viscoplastic_update(ModeVectors &body_load_change);
-
-    /**
-     * Stresses at every point and station by the return mapping of the
-     * trial stresses of the step increments: sets the internal forces, and
-     * @p stress_excess to the nodal forces of trial less returned stress.
-     * With @p with_tangents, every group keeps its consistent tangents
-     * for add_coupled_tangent(). Returns the number of yielding points
-     * and stations.
-     */
-    unsigned int
-    return_mapping_update(const bool with_tangents, ModeVectors &stress_excess);
-
-    /// Whether every flow rule is associated (a symmetric consistent
-    /// tangent).
-    bool
-    all_laws_associated() const;
-
-    /// Hand the DoFs of all modes (DoF m * n_dofs + i of mode m) of every
-    /// cell and element this rank owns to @p add, every group's: the
-    /// couplings of Newton's tangent.
-    void
-    add_coupled_sparsity(const DofSink &add);
-
-    /// Hand every group's tangent matrices of the last return mapping with
-    /// tangents, of the cells and elements this rank owns, to @p add.
-    void
-    add_coupled_tangent(const CellMatrixSink &add);
-
-    /// @}
-    /// @name The end of an attempt, and its state accepted or rejected
-    /// @{
-
-    /**
-     * The solution method has left its state of the step to
-     * @p load_factor: it is the current one, pending until accept_step() or
-     * reject_step(). Computes its internal forces, and checks whether it
-     * is finite (increments, stresses, yield ratios) and how far it is
-     * from yield.
-     */
     StateCheck
-    end_attempt(const double load_factor);
+    end_attempt(const double load_factor) override;
 
-    /// Make the pending state the accepted one.
     void
-    accept_step();
+    accept_step() override;
 
-    /**
-     * Make the current stresses the converged ones, add the step's
-     * increment to the solution and its plastic strain to the total, and
-     * take @p load_factor as the accepted load factor: for a method that
-     * accepts a converged part of a step (cut-back).
-     */
     void
-    accept_step(const double load_factor);
-
-    /// Return to the accepted state: the pending state is dropped.
-    void
-    reject_step();
+    reject_step() override;
 
     /// @}
-    /// @name Questions about the state
-    /// @{
-
-    /**
-     * The secant stiffness along the pending step's increment against the
-     * elastic one: (f . du_elastic) / (f . du), with f the step's load
-     * increment and du_elastic = K^-1 f its elastic response, summed over
-     * the modes. Near 1 while the body is elastic, it falls towards 0 as a
-     * mechanism lets the displacement grow at constant load. NaN where the
-     * step has no load increment (prescribed displacements only).
-     */
-    double
-    secant_stiffness_ratio() const;
-
-    /// Whether the scene applies tractions or pressures; without, it is
-    /// driven by prescribed displacements alone.
-    bool
-    has_external_load() const;
-
-    /**
-     * The displacement at angle @p theta, summed over the modes, as a DoF
-     * vector: components (x, y) in plane strain, (r, z, theta) for Fourier.
-     * With @p increment, the last load step's increment instead (at a
-     * failed step, the incipient mechanism). Each rank has the DoFs of its
-     * own cells, ghosts included. A collective call.
-     */
-    ModeVector
-    displacement_at(const double theta, const bool increment = false) const;
-
-    /// The displacements of every mode, ghosts imported: the current
-    /// state's (a pending step's includes its increment), or with
-    /// @p increment the last load step's increment. A collective call.
-    ModeVectors
-    displacements(const bool increment = false) const;
-
-    /// displacement_at() of the modes @p modes of displacements(): for
-    /// many angles of one state, without communication.
-    ModeVector
-    displacement_at(const double theta, const ModeVectors &modes) const;
-
-    /// The profiles every element group writes, of the current state.
-    std::vector<NamedProfile>
-    profiles() const;
-
-    /// The continuum cells: the point states and laws of the body.
-    const ContinuumCells<dim> &
-    cells() const;
-
-    /// The state at Gauss point @p q of active cell @p cell and station
-    /// @p station.
-    const PointState &
-    point_state(const unsigned int cell,
-                const unsigned int q,
-                const unsigned int station = 0) const;
-
-    /// Stress (3D, tension positive) at point @p q of active cell @p cell,
-    /// station 0.
-    const SymmetricTensor<2, 3> &
-    stress(const unsigned int cell, const unsigned int q) const;
-
-    /// The material law of active cell @p cell.
-    const MaterialLaw &
-    material_law(const unsigned int cell) const;
-
-    unsigned int
-    n_quadrature_points() const;
-
-    /// @}
-
-    const Kinematics &
-    get_kinematics() const;
-
-    /// Warnings about the scene found while setting it up (boundary
-    /// conditions that disagree at a node), one per line, from every rank.
-    /// A collective call.
-    std::string
-    warnings() const;
-
-    /// The support points and components of this rank's DoFs: for the
-    /// rigid-body motions and the reactions' moments.
-    OwnedDofPlaces
-    owned_dof_places() const;
-
-    /// The DoFs, on this rank's part of the mesh (on one rank, the whole
-    /// mesh).
-    const DoFHandler<dim> &
-    get_dof_handler() const;
-
-    /// The mesh as read, every cell on every rank: for setting up what
-    /// spans the ranks (the runs of a layer's profile). Its cells are found
-    /// in get_dof_handler()'s mesh by CellId (cell_of()).
-    const Triangulation<dim> &
-    whole_mesh() const;
-
-    /// Whether this rank owns active cell @p c of whole_mesh().
-    bool
-    owns_whole_cell(const unsigned int c) const;
-
-    const Mapping<dim> &
-    get_mapping() const;
-
-    /// Which rank owns each active cell (on one rank an empty owner list:
-    /// every cell is rank 0's).
-    const CellPartition &
-    get_partition() const;
-
-    /// The DoFs each rank owns, contiguous and in rank order (empty on one
-    /// rank).
-    const std::vector<IndexSet> &
-    get_owned_per_rank() const;
-
-    /// The serendipity lines only (to condense residuals for reactions).
-    const AffineConstraints<double> &
-    get_element_constraints() const;
-
-    /// The displacement amplitudes of mode @p mode, whole (see whole()).
-    Vector<double>
-    get_solution(const unsigned int mode = 0) const;
-
-    /// Displacement DoFs of the element's nodes per mode (for Q8 the
-    /// eliminated centre nodes are not counted; prescribed DoFs are).
-    types::global_dof_index
-    n_dofs() const;
-
-    /// Unknowns of the factorised systems, summed over the modes.
-    types::global_dof_index
-    n_equations() const;
-
-    /**
-     * Wall time of one forward/backward substitution with the stored
-     * elastic factors of all modes (the median of ten, measured in
-     * setup()): the floor of a constant-stiffness iteration's cost.
-     */
-    double
-    substitution_seconds() const;
-
-    /// With Solver/Linear solver = amg cg, the mean CG iterations of a
-    /// solve so far (all modes); NaN with factors.
-    double
-    linear_iterations_per_solve() const;
 
   private:
     void

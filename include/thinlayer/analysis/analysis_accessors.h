@@ -20,7 +20,7 @@ namespace thinlayer
 
   template <int dim>
   inline const ModeSystem &
-  Analysis<dim>::mode_system(const unsigned int m) const
+  Analysis<dim>::get_mode_system(const unsigned int m) const
   {
     return *systems[m];
   }
@@ -36,7 +36,7 @@ namespace thinlayer
 
   template <int dim>
   inline const ModeVectors &
-  Analysis<dim>::solution() const
+  Analysis<dim>::get_solution() const
   {
     return solution_vectors;
   }
@@ -44,7 +44,7 @@ namespace thinlayer
 
   template <int dim>
   inline ModeVectors &
-  Analysis<dim>::step_increment()
+  Analysis<dim>::get_step_increment()
   {
     return increment_vectors;
   }
@@ -52,7 +52,7 @@ namespace thinlayer
 
   template <int dim>
   inline const ModeVectors &
-  Analysis<dim>::step_increment() const
+  Analysis<dim>::get_step_increment() const
   {
     return increment_vectors;
   }
@@ -60,7 +60,7 @@ namespace thinlayer
 
   template <int dim>
   inline const ModeVectors &
-  Analysis<dim>::internal_forces() const
+  Analysis<dim>::get_internal_forces() const
   {
     return internal_force_vectors;
   }
@@ -100,7 +100,7 @@ namespace thinlayer
 
   template <int dim>
   inline const ContinuumCells<dim> &
-  Analysis<dim>::cells() const
+  Analysis<dim>::get_cells() const
   {
     return *continuum;
   }
@@ -108,9 +108,9 @@ namespace thinlayer
 
   template <int dim>
   inline const PointState &
-  Analysis<dim>::point_state(const unsigned int cell,
-                             const unsigned int q,
-                             const unsigned int station) const
+  Analysis<dim>::get_point_state(const unsigned int cell,
+                                 const unsigned int q,
+                                 const unsigned int station) const
   {
     return continuum->point_state(cell, q, station);
   }
@@ -120,13 +120,13 @@ namespace thinlayer
   inline const SymmetricTensor<2, 3> &
   Analysis<dim>::stress(const unsigned int cell, const unsigned int q) const
   {
-    return point_state(cell, q).stress;
+    return get_point_state(cell, q).stress;
   }
 
 
   template <int dim>
   inline const MaterialLaw &
-  Analysis<dim>::material_law(const unsigned int cell) const
+  Analysis<dim>::get_material_law(const unsigned int cell) const
   {
     return continuum->material_law(cell);
   }
@@ -158,7 +158,7 @@ namespace thinlayer
 
   template <int dim>
   inline const Triangulation<dim> &
-  Analysis<dim>::whole_mesh() const
+  Analysis<dim>::get_whole_mesh() const
   {
     return tria;
   }
@@ -207,7 +207,7 @@ namespace thinlayer
 
   template <int dim>
   inline Vector<double>
-  Analysis<dim>::get_solution(const unsigned int mode) const
+  Analysis<dim>::whole_solution(const unsigned int mode) const
   {
     return whole(solution_vectors[mode]);
   }

@@ -71,7 +71,7 @@ namespace thinlayer
       ModeVector rhs;
     };
     /// The parts the phases combine into the above
-    /// (Analysis::begin_phase()): the Boundary sections' values (set 0)
+    /// (StepAccess::begin_phase()): the Boundary sections' values (set 0)
     /// and each further loading phase's (set k: Phase k + 1), and the
     /// body's weight with the surcharge.
     std::vector<BoundaryValues> boundary_values;
@@ -126,7 +126,7 @@ namespace thinlayer
     solve(ModeVector &rhs);
 
     /// The first part of solve() for a spread mode: @p rhs whole on its
-    /// owner, in whole_rhs. Collective; see Analysis::elastic_solve(),
+    /// owner, in whole_rhs. Collective; see IterationAccess::elastic_solve(),
     /// which lets the owners substitute at once.
     void
     gather_on_owner(const ModeVector &rhs);

@@ -3,7 +3,7 @@
 
 #include <deal.II/base/data_out_base.h>
 
-#include <thinlayer/analysis/analysis.h>
+#include <thinlayer/analysis/analysis_view.h>
 #include <thinlayer/postprocess/cell_fields.h>
 
 #include <string>
@@ -28,7 +28,7 @@ namespace thinlayer
    * with theta change sign there, for the antisymmetric one the others
    * do). A view, not an analysis: nothing is computed between stations.
    * The cell averages are @p fields, those of @p analysis, and the
-   * displacements its @p modes (Analysis::displacements()), ghosts
+   * displacements its @p modes (AnalysisView::displacements()), ghosts
    * imported: each rank has both on its own cells.
    */
   struct RevolvedView
@@ -41,10 +41,10 @@ namespace thinlayer
   };
 
   RevolvedView
-  revolved_view(const Analysis<2> &analysis,
-                const CellFields  &fields,
-                const ModeVectors &modes,
-                const unsigned int slices);
+  revolved_view(const AnalysisView<2> &analysis,
+                const CellFields      &fields,
+                const ModeVectors     &modes,
+                const unsigned int     slices);
 } // namespace thinlayer
 
 #endif

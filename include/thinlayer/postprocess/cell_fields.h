@@ -3,7 +3,7 @@
 
 #include <deal.II/lac/vector.h>
 
-#include <thinlayer/analysis/analysis.h>
+#include <thinlayer/analysis/analysis_view.h>
 
 #include <vector>
 
@@ -26,7 +26,7 @@ namespace thinlayer
   struct CellFields
   {
     template <int dim>
-    explicit CellFields(const Analysis<dim> &analysis);
+    explicit CellFields(const AnalysisView<dim> &analysis);
 
     /// (i, j) of the stress components written: plane strain the first
     /// four (xx, yy, zz, xy), Fourier and 3D all six (rr, zz, tt, rz, rt,

@@ -6,7 +6,7 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/vector.h>
 
-#include <thinlayer/analysis/analysis.h>
+#include <thinlayer/analysis/analysis_view.h>
 #include <thinlayer/elements/interface_values.h>
 #include <thinlayer/postprocess/layer_sampling.h>
 
@@ -56,13 +56,13 @@ namespace thinlayer
      * Layers/Material ids) if no cell has that id or the layer is more
      * than one cell thick.
      */
-    LayerProfile(const Analysis<2>       &analysis,
+    LayerProfile(const AnalysisView<2>   &analysis,
                  const types::material_id material_id,
                  const std::string       &parameter_file);
 
     /// The values at every sample and station (every rank calls it).
     Profile
-    profile(const Analysis<2> &analysis) const;
+    profile(const AnalysisView<2> &analysis) const;
 
     /**
      * Cell averages of slip, opening, shear and normal traction at station
@@ -70,7 +70,8 @@ namespace thinlayer
      * other ranks' cells), for the VTU (every rank calls it).
      */
     std::vector<Vector<double>>
-    cell_fields(const Analysis<2> &analysis, const unsigned int station) const;
+    cell_fields(const AnalysisView<2> &analysis,
+                const unsigned int     station) const;
 
     /// The names of cell_fields()' vectors.
     static const std::vector<std::string> cell_field_names;
@@ -80,7 +81,7 @@ namespace thinlayer
     /// @p entry_face, with arc length @p start at that face; returns the
     /// arc length at the far face.
     double
-    add_cell_samples(const Analysis<2>                         &analysis,
+    add_cell_samples(const AnalysisView<2>                     &analysis,
                      const DoFHandler<2>::active_cell_iterator &cell,
                      const unsigned int                         long_direction,
                      const unsigned int                         entry_face,
@@ -119,15 +120,16 @@ namespace thinlayer
   {
   public:
     /// As LayerProfile<2>'s.
-    LayerProfile(const Analysis<3>       &analysis,
+    LayerProfile(const AnalysisView<3>   &analysis,
                  const types::material_id material_id,
                  const std::string       &parameter_file);
 
     Profile
-    profile(const Analysis<3> &analysis) const;
+    profile(const AnalysisView<3> &analysis) const;
 
     std::vector<Vector<double>>
-    cell_fields(const Analysis<3> &analysis, const unsigned int station) const;
+    cell_fields(const AnalysisView<3> &analysis,
+                const unsigned int     station) const;
 
     static const std::vector<std::string> cell_field_names;
 
@@ -135,7 +137,7 @@ namespace thinlayer
     /// The samples of one cell whose thickness direction is
     /// @p thickness.
     void
-    add_cell_samples(const Analysis<3>                         &analysis,
+    add_cell_samples(const AnalysisView<3>                     &analysis,
                      const DoFHandler<3>::active_cell_iterator &cell,
                      const unsigned int                         thickness);
 

@@ -6,7 +6,7 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/vector.h>
 
-#include <thinlayer/analysis/analysis.h>
+#include <thinlayer/analysis/analysis_view.h>
 #include <thinlayer/elements/interface_values.h>
 
 #include <vector>
@@ -47,7 +47,7 @@ namespace thinlayer
    */
   template <int dim>
   std::vector<InterfaceValues>
-  evaluate_layer(const Analysis<dim>                 &analysis,
+  evaluate_layer(const AnalysisView<dim>             &analysis,
                  const std::vector<LayerSample<dim>> &samples,
                  const unsigned int                   station);
 
@@ -76,7 +76,8 @@ namespace thinlayer
     /// every rank calls it, and receives the values of the samples in
     /// other ranks' cells from them.
     std::vector<InterfaceValues>
-    evaluate(const Analysis<dim> &analysis, const unsigned int station) const
+    evaluate(const AnalysisView<dim> &analysis,
+             const unsigned int       station) const
     {
       return evaluate_layer(analysis, samples, station);
     }
@@ -99,7 +100,7 @@ namespace thinlayer
     /// @p analysis holds them, where this rank's (@p own), so that each
     /// rank evaluates its own.
     void
-    place_on_ranks(const Analysis<dim> &analysis);
+    place_on_ranks(const AnalysisView<dim> &analysis);
 
     types::material_id            material_id;
     std::vector<LayerSample<dim>> samples;
@@ -113,7 +114,7 @@ namespace thinlayer
    */
   template <int dim>
   std::vector<Vector<double>>
-  layer_cell_averages(const Analysis<dim>                          &analysis,
+  layer_cell_averages(const AnalysisView<dim>                      &analysis,
                       const std::vector<LayerSample<dim>>          &samples,
                       const std::vector<InterfaceValues>           &values,
                       const std::vector<double InterfaceValues::*> &fields);

@@ -3,7 +3,7 @@
 
 #include <deal.II/base/index_set.h>
 
-#include <thinlayer/analysis/analysis.h>
+#include <thinlayer/analysis/analysis_view.h>
 #include <thinlayer/parameters/parameters.h>
 #include <thinlayer/postprocess/displacement_measure.h>
 
@@ -30,7 +30,7 @@ namespace thinlayer
      * @p parameter_file.
      */
     Monitors(const MonitorParameters &parameters,
-             const Analysis<dim>     &analysis,
+             const AnalysisView<dim> &analysis,
              const std::string       &parameter_file);
 
     /// The load measure, times its scale.
@@ -79,7 +79,7 @@ namespace thinlayer
                  const int          weight_by = -1) const;
 
     const MonitorParameters &parameters;
-    const Analysis<dim>     &analysis;
+    const AnalysisView<dim> &analysis;
     /// The cell holding the displacement point and the point in it, on
     /// the rank that evaluates it (the lowest that owns such a cell); an
     /// invalid cell on the others.

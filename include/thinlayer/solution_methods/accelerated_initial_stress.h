@@ -21,7 +21,7 @@ namespace thinlayer
   {
   public:
     AcceleratedInitialStressMethod(const SolverParameters &parameters,
-                                   Analysis<dim>          &analysis);
+                                   IterationAccess<dim>   &analysis);
 
     void
     initialize() override;

@@ -33,7 +33,7 @@ namespace thinlayer
   {
   public:
     NewtonFallbackMethod(const SolverParameters &parameters,
-                         Analysis<dim>          &analysis);
+                         IterationAccess<dim>   &analysis);
 
     void
     initialize() override;

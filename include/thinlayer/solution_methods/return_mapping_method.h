@@ -3,7 +3,7 @@
 
 #include <deal.II/lac/vector.h>
 
-#include <thinlayer/analysis/analysis.h>
+#include <thinlayer/analysis/iteration_access.h>
 #include <thinlayer/solution_methods/convergence_watch.h>
 #include <thinlayer/solution_methods/growth_monitor.h>
 #include <thinlayer/solution_methods/solution_method.h>
@@ -27,7 +27,7 @@ namespace thinlayer
     double body_loads;
     double forces;
     /// max |f| of the internal forces of the accepted state, where the
-    /// step starts (Analysis::accepted_force_scale()): the scale of
+    /// step starts (AnalysisView::accepted_force_scale()): the scale of
     /// round-off in a step that unloads the body to nothing (where every
     /// force of the target state vanishes).
     double start_forces;
@@ -56,7 +56,7 @@ namespace thinlayer
   {
   public:
     ReturnMappingMethod(const SolverParameters &parameters,
-                        Analysis<dim>          &analysis);
+                        IterationAccess<dim>   &analysis);
 
     /// Allocates the work vectors; a derived class that overrides this
     /// calls it first.
@@ -132,7 +132,7 @@ namespace thinlayer
     remember_increments();
 
     const SolverParameters &parameters;
-    Analysis<dim>          &analysis;
+    IterationAccess<dim>   &analysis;
     /// Per mode: the correction of the step increment, and the step
     /// increment before it.
     ModeVectors correction;

@@ -9,14 +9,14 @@
 namespace thinlayer
 {
   template <int dim>
-  class Analysis;
+  class IterationAccess;
 
   /**
    * A way of solving the elasto-plastic equations of one load step on the
-   * body of an Analysis: the paper's viscoplastic iterations, initial
-   * stress (plain or Anderson-accelerated) or Newton. Each method is a
-   * class of its own in source/solution_methods/, owns the state it needs
-   * (work vectors, acceleration history, tangent system), and works on
+   * body of an analysis, seen through IterationAccess: the paper's viscoplastic
+   * iterations, initial stress (plain or Anderson-accelerated) or Newton. Each
+   * method is a class of its own in source/solution_methods/, owns the state it
+   * needs (work vectors, acceleration history, tangent system), and works on
    * the analysis it is given: it sets the step's displacement increments
    * and calls the analysis's point rules. The stepping owns the method
    * (StepSolver), ends each attempt in the analysis and tells the method
@@ -39,7 +39,7 @@ namespace thinlayer
 
     /**
      * Iterate from the body's accepted state (at
-     * Analysis::accepted_load_factor()) to the load factor
+     * AnalysisView::accepted_load_factor()) to the load factor
      * @p new_load_factor. The step's state, converged or not, is left in
      * the analysis (step increments and point states) for the stepping to
      * accept or reject. StepResult::max_yield_ratio and
@@ -103,7 +103,7 @@ namespace thinlayer
   template <int dim>
   std::unique_ptr<SolutionMethod<dim>>
   create_solution_method(const SolverParameters &parameters,
-                         Analysis<dim>          &analysis);
+                         IterationAccess<dim>   &analysis);
 } // namespace thinlayer
 
 #endif

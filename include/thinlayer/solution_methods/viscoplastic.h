@@ -1,7 +1,7 @@
 #ifndef thinlayer_solution_methods_viscoplastic_h
 #define thinlayer_solution_methods_viscoplastic_h
 
-#include <thinlayer/analysis/analysis.h>
+#include <thinlayer/analysis/iteration_access.h>
 #include <thinlayer/solution_methods/growth_monitor.h>
 #include <thinlayer/solution_methods/solution_method.h>
 
@@ -30,7 +30,7 @@ namespace thinlayer
   {
   public:
     ViscoplasticMethod(const SolverParameters &parameters,
-                       Analysis<dim>          &analysis);
+                       IterationAccess<dim>   &analysis);
 
     void
     initialize() override;
@@ -50,7 +50,7 @@ namespace thinlayer
     solve_increments(const double dlambda);
 
     const SolverParameters &parameters;
-    Analysis<dim>          &analysis;
+    IterationAccess<dim>   &analysis;
     /// Per mode: the step increment of the previous iteration.
     ModeVectors previous_increment;
     /// Per mode: the step's accumulated body loads (kept condensed), and

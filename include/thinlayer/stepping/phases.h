@@ -3,7 +3,7 @@
 
 #include <deal.II/base/timer.h>
 
-#include <thinlayer/analysis/analysis.h>
+#include <thinlayer/analysis/step_access.h>
 #include <thinlayer/output/run_summary.h>
 #include <thinlayer/parameters/parameters.h>
 #include <thinlayer/stepping/run_outcome.h>
@@ -27,7 +27,7 @@ namespace thinlayer
    * further loadings (Phase 2, 3, ...: each its programme of its own
    * boundary values), and strength reduction (Strength reduction: a programme
    * of the factor by which strengths are divided). Each phase holds the loads
-   * of the ones before it (Analysis::begin_phase()); each programme is a
+   * of the ones before it (StepAccess::begin_phase()); each programme is a
    * Programme, judged by judge_outcome(); a phase that does not complete
    * ends the run, and the summary's phase says which one its figures are
    * of.
@@ -37,7 +37,7 @@ namespace thinlayer
   {
   public:
     Phases(const Parameters                     &p,
-           Analysis<dim>                        &analysis,
+           StepAccess<dim>                      &analysis,
            StepSolver<dim>                      &solver,
            const Monitors<dim>                  &monitors,
            const std::vector<LayerProfile<dim>> &layers,
@@ -79,7 +79,7 @@ namespace thinlayer
     elastic_displacement_of_carried_loads();
 
     const Parameters                     &p;
-    Analysis<dim>                        &analysis;
+    StepAccess<dim>                      &analysis;
     StepSolver<dim>                      &solver;
     const Monitors<dim>                  &monitors;
     const std::vector<LayerProfile<dim>> &layers;

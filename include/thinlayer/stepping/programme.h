@@ -3,7 +3,7 @@
 
 #include <deal.II/base/timer.h>
 
-#include <thinlayer/analysis/analysis.h>
+#include <thinlayer/analysis/step_access.h>
 #include <thinlayer/parameters/parameters.h>
 #include <thinlayer/stepping/load_stepping.h>
 #include <thinlayer/stepping/run_outcome.h>
@@ -34,7 +34,7 @@ namespace thinlayer
     unsigned int      steps_before = 0;
     /// A strength reduction phase: the load factor raises the factor F =
     /// 1 + load factor by which the strengths are divided
-    /// (Analysis::reduce_strength()), and F is the phase's load.
+    /// (StepAccess::reduce_strength()), and F is the phase's load.
     bool strength_reduction = false;
     /**
      * What the rules on the phase's load-displacement curve (the plateau,
@@ -77,7 +77,7 @@ namespace thinlayer
   public:
     Programme(const Parameters                     &p,
               const Phase                          &phase,
-              Analysis<dim>                        &analysis,
+              StepAccess<dim>                      &analysis,
               StepSolver<dim>                      &solver,
               const Monitors<dim>                  &monitors,
               const std::vector<LayerProfile<dim>> &layers,
@@ -106,7 +106,7 @@ namespace thinlayer
       double       load_factor;
       StepResult   result;
       double       load;
-      /// Analysis::secant_stiffness_ratio() of the attempt's state.
+      /// AnalysisView::secant_stiffness_ratio() of the attempt's state.
       double stiffness_ratio;
       /// A converged attempt below the knee (mechanism_knee_ratio): the
       /// evidence of a mechanism where it is a probe beyond a failed step.
@@ -175,7 +175,7 @@ namespace thinlayer
     const Parameters                     &p;
     const Phase                          &phase;
     const LoadingParameters              &loading;
-    Analysis<dim>                        &analysis;
+    StepAccess<dim>                      &analysis;
     StepSolver<dim>                      &solver;
     const Monitors<dim>                  &monitors;
     const std::vector<LayerProfile<dim>> &layers;

@@ -185,7 +185,7 @@ namespace thinlayer
   /**
    * How the run @p run ended (RunSummary::outcome), the reason, and the
    * collapse load where there is one; @p under_load: whether the scene
-   * applies tractions or pressures (Analysis::has_external_load()), else
+   * applies tractions or pressures (AnalysisView::has_external_load()), else
    * it is driven by prescribed displacements, where a failed step is no
    * collapse and the load may reach a plateau. There a run with accepted
    * steps that drifted outside the yield surface (ProgrammeResult::

@@ -1,7 +1,7 @@
 #ifndef thinlayer_stepping_step_solver_h
 #define thinlayer_stepping_step_solver_h
 
-#include <thinlayer/analysis/analysis.h>
+#include <thinlayer/analysis/step_access.h>
 #include <thinlayer/parameters/run_sections.h>
 #include <thinlayer/solution_methods/solution_method.h>
 #include <thinlayer/solution_methods/step_result.h>
@@ -24,7 +24,7 @@ namespace thinlayer
   {
   public:
     /// The method of @p parameters on @p analysis, which must be set up.
-    StepSolver(const SolverParameters &parameters, Analysis<dim> &analysis);
+    StepSolver(const SolverParameters &parameters, StepAccess<dim> &analysis);
 
     ~StepSolver();
 
@@ -47,7 +47,7 @@ namespace thinlayer
     StepResult
     solve(const double load_factor, const bool final = true);
 
-    /// A new phase has begun (Analysis::begin_phase()): the method starts
+    /// A new phase has begun (StepAccess::begin_phase()): the method starts
     /// afresh, keeping nothing of the last phase's steps (its predictor).
     void
     begin_phase();
@@ -61,7 +61,7 @@ namespace thinlayer
     reject();
 
   private:
-    Analysis<dim>                       &analysis;
+    StepAccess<dim>                     &analysis;
     std::unique_ptr<SolutionMethod<dim>> method;
     /// Solver/Tolerance: TOL.
     double tolerance;
