@@ -36,6 +36,8 @@ import subprocess
 from thinlayer_tools import THINLAYER, TOP
 from thinlayer_tools.results import collapse_load, history, number, states
 
+from benchmarks import page
+
 OUT = os.path.join(TOP, "output", "benchmarks")
 SERIES = [("1", "0, 45, 90, 135, 180"),
           ("1, 3", "0, 45, 90, 135, 180"),
@@ -137,7 +139,9 @@ def main():
     parser.add_argument("--output", default=OUT, help="the directory of the tables and runs")
     parser.add_argument("--tables-only", action="store_true",
                         help="measure the runs already in DIR/runs, run nothing")
+    page.add_argument(parser)
     args = parser.parse_args()
+    page.configure(args)
     out = os.path.abspath(args.output)
     rows = []
     for harmonics, stations in SERIES:
@@ -177,9 +181,7 @@ def main():
             1e5 * r["mean_slip"], 100 * (r["mean_slip"] / reference["mean_slip"] - 1),
             r["wall_seconds"], r["peak_memory_mb"], 1e3 * r["seconds_per_iteration"],
             1e3 * r["seconds_per_substitution"]))
-    with open(os.path.join(out, "fourier-vs-3d.md"), "w") as f:
-        f.write("\n".join(lines) + "\n")
-    print("\n".join(lines))
+    page.write(out, "fourier-vs-3d", "Fourier harmonics against a 3D body", lines)
 
 
 if __name__ == "__main__":

@@ -23,6 +23,8 @@ import statistics
 
 from thinlayer_tools import THINLAYER, TOP, mpirun, run_for_summary
 
+from benchmarks import page
+
 OUT = os.path.join(TOP, "output", "benchmarks")
 GEOMETRY = ("half_width=1, width=5, depth=3, aspect_ratio=10, n_footing=32, "
             "n_side=48, n_depth=40, interface_beyond_footing=1")
@@ -48,7 +50,9 @@ def run(ranks, spread, directory):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeat", type=int, default=3)
+    page.add_argument(parser)
     args = parser.parse_args()
+    page.configure(args)
     layouts = [("one rank, both harmonics", 1, True),
                ("two ranks, each harmonic split (MUMPS)", 2, False),
                ("two ranks, one harmonic each (spread)", 2, True)]
@@ -69,10 +73,7 @@ def main():
             1e3 * statistics.median(r["seconds_per_iteration"] for r in rows),
             statistics.median(r["peak_memory_mb_per_rank"] for r in rows),
             abs(rows[0]["final_displacement"] - one) / abs(one)))
-    os.makedirs(OUT, exist_ok=True)
-    with open(os.path.join(OUT, "harmonics.md"), "w") as f:
-        f.write("\n".join(lines) + "\n")
-    print("\n".join(lines))
+    page.write(OUT, "harmonics", "Fourier harmonics over the ranks", lines)
 
 
 if __name__ == "__main__":

@@ -31,6 +31,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 from benchmarks.outcomes import run  # noqa: E402 (a run by the default method)
 from benchmarks.run import write_results  # noqa: E402
+from benchmarks import page  # noqa: E402
 from thinlayer_tools import TOP, cases, results  # noqa: E402
 
 OUT = os.path.join(TOP, "output", "benchmarks", "interfaces")
@@ -173,7 +174,9 @@ def main():
                         help="redraw the chart from the last interfaces.csv, running nothing")
     parser.add_argument("--cases", default=",".join(CASES),
                         help="comma-separated subset of " + ", ".join(CASES))
+    page.add_argument(parser)
     arguments = parser.parse_args()
+    page.configure(arguments)
     if arguments.replot:
         rows = results.read_csv(os.path.join(OUT, "interfaces.csv"))
         for r in rows:
@@ -203,11 +206,11 @@ def main():
             directory = os.path.join(OUT, "%s-zero-%g" % (case, factor))
             entries = []
             for curve in curves:
-                entries += ["Interface curve %d/Normal stiffness=%g" % (curve, factor * E_OVER_L),
-                            "Interface curve %d/Shear stiffness=%g" % (curve, factor * E_OVER_L)]
+                entries += ["Interface %d/Normal stiffness=%g" % (curve, factor * E_OVER_L),
+                            "Interface %d/Shear stiffness=%g" % (curve, factor * E_OVER_L)]
             summary = run(zero, zero_geometry, "default", directory, entries + common)
             rows.append(measure(case, "zero thickness", factor, summary, directory,
-                                "interface-curve-%d-%%04d.csv" % profiled))
+                                "interface-%d-%%04d.csv" % profiled))
             print(format_row(rows[-1]), flush=True)
     write_results(rows, "interfaces", HEADER, format_row, OUT)
     chart(rows, os.path.join(OUT, "interfaces.png"))

@@ -33,6 +33,8 @@ import subprocess
 from thinlayer_tools import THINLAYER, TOP, mpirun
 from thinlayer_tools.cases import PARAMETER_FILES, PRANDTL_SIZES, geometry
 
+from benchmarks import page
+
 OUT = os.path.join(TOP, "output", "benchmarks")
 SOLVERS = (("direct", "cholmod"), ("AMG-CG", "amg cg"))
 
@@ -79,7 +81,9 @@ def main():
     parser.add_argument("--ranks", default="1")
     parser.add_argument("--large", action="store_true")
     parser.add_argument("--only", default="", help="run the scenes whose label contains this")
+    page.add_argument(parser)
     args = parser.parse_args()
+    page.configure(args)
     os.makedirs(OUT, exist_ok=True)
     rows = []
     for label, parameter_file, entries in scenes(args.large):
@@ -127,9 +131,7 @@ def main():
             number(r["setup_s"], "%.2f"), number(r["solve_s"], "%.4f"),
             number(r["cg_iterations"], "%.0f"), number(r["peak_mb_per_rank"], "%.0f"),
             r["note"]))
-    with open(os.path.join(OUT, "linear_solvers.md"), "w") as f:
-        f.write("\n".join(lines) + "\n")
-    print("\n".join(lines))
+    page.write(OUT, "linear_solvers", "Linear solvers", lines)
 
 
 if __name__ == "__main__":

@@ -36,6 +36,7 @@ import statistics
 import subprocess
 
 from benchmarks.run import write_results
+from benchmarks import page
 from thinlayer_tools import THINLAYER, TOP, cases, closed_form, results
 
 OUT = os.path.join(TOP, "output", "benchmarks", "outcomes")
@@ -213,7 +214,9 @@ def main():
                         help="Case 4's K_pc table instead (default method)")
     parser.add_argument("--table1", action="store_true",
                         help="Table 1 (Case 1, alpha x aspect ratio) by the default method instead")
+    page.add_argument(parser)
     args = parser.parse_args()
+    page.configure(args)
     os.makedirs(OUT, exist_ok=True)
     if args.kpc:
         kpc_table(args.quick)

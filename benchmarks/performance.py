@@ -39,6 +39,7 @@ from thinlayer_tools import cases, results
 from thinlayer_tools.report.runs import DEFAULT as DEFAULT_METHOD, PAPER
 from thinlayer_tools.report.speed import fit_exponent
 
+from benchmarks import page
 from benchmarks import run as common
 
 # The paper's way: seven coarse fixed steps to 1.04 (2 + pi)c at TOL 1e-3
@@ -132,9 +133,7 @@ def table(rows):
         exponent = fit_exponent(points)
         lines.append("| %s | %s | %d |" % (label, "%.2f" % exponent if exponent else "-",
                                            len(points)))
-    print("\n".join(lines))
-    with open(os.path.join(common.OUT, "performance.md"), "a") as f:
-        f.write("\n".join(lines) + "\n")
+    page.write(common.OUT, "performance", common.TITLES["performance"], lines, mode="a")
 
 
 def chart(rows):
@@ -245,7 +244,9 @@ def main():
                         help="also the thin-layer scenes (Case 2 and Case 3, level 2)")
     parser.add_argument("--output", default=common.OUT,
                         help="the results directory (default %(default)s)")
+    page.add_argument(parser)
     arguments = parser.parse_args()
+    page.configure(arguments)
     try:
         sizes = [int(c) for c in arguments.cells.split(",")]
     except ValueError:

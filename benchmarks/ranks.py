@@ -23,6 +23,8 @@ from thinlayer_tools import THINLAYER, TOP, mpirun, run_for_summary
 from thinlayer_tools.cases import PAPER_FIXED_STEPS, PRANDTL_SIZES
 from thinlayer_tools.report.runs import DEFAULT, PAPER
 
+from benchmarks import page
+
 OUT = os.path.join(TOP, "output", "benchmarks")
 MESHES = PRANDTL_SIZES
 METHODS = [
@@ -51,7 +53,9 @@ def main():
     parser.add_argument("--ranks", default="1,2")
     parser.add_argument("--methods", default="paper,default",
                         help="which of the two: paper, default")
+    page.add_argument(parser)
     args = parser.parse_args()
+    page.configure(args)
     os.makedirs(OUT, exist_ok=True)
     rows = []
     for cells in (int(c) for c in args.cells.split(",")):
@@ -94,13 +98,11 @@ def main():
             "yes" if r["same_outcome"] else "NO", r["load"] / (2 + 3.141592653589793),
             r["last_converged_difference"], r["iterations"], r["wall_median_s"],
             r["ms_per_iteration"], r["peak_mb_per_rank"], r["program_mb_per_rank"]))
-    with open(os.path.join(OUT, "ranks.md"), "w") as f:
-        f.write("\n".join(lines) + "\n")
     with open(os.path.join(OUT, "ranks.csv"), "w") as f:
         f.write(",".join(rows[0].keys()) + "\n")
         for r in rows:
             f.write(",".join(str(v) for v in r.values()) + "\n")
-    print("\n".join(lines))
+    page.write(OUT, "ranks", "Prandtl's footing on several ranks", lines)
 
 
 if __name__ == "__main__":

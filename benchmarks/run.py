@@ -44,6 +44,8 @@ import subprocess
 import time
 
 from thinlayer_tools import THINLAYER, TOP, cases, overrides, results, run_module
+
+from benchmarks import page
 OUT = os.path.join(TOP, "output", "benchmarks")
 
 # case: (parameter file, {mesh level: geometry parameters}), the levels of
@@ -137,18 +139,30 @@ def run_once(prm, geometry, solver, tol, directory, extra=()):
         return json.load(f), peak_kb
 
 
+# The title of each table's page.
+TITLES = {
+    "benchmarks": "Speed and accuracy of the methods",
+    "ladder": "The cost ladder",
+    "stability": "Stability maps of Case 1",
+    "outcomes": "Outcomes of every method",
+    "kpc": "Case 4: K_pc against the wall column",
+    "table1": "Table 1 by the default method",
+    "performance": "Time to answer on Prandtl's footing",
+    "performance-scenes": "Time to answer on the thin-layer scenes",
+}
+
+
 def write_results(rows, name, header, format_row, out=None):
-    """NAME.csv (every field) and NAME.md (a table, also printed) in @p out
-    (default: the output directory)."""
+    """NAME.csv (every field) and NAME.md (a table headed by what measured
+    it, also printed) in @p out (default: the output directory)."""
     out = out or OUT
+    os.makedirs(out, exist_ok=True)
     with open(os.path.join(out, name + ".csv"), "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
         writer.writeheader()
         writer.writerows(rows)
     lines = [header, "|" + "---|" * (header.count("|") - 1)] + [format_row(r) for r in rows]
-    with open(os.path.join(out, name + ".md"), "w") as f:
-        f.write("\n".join(lines) + "\n")
-    print("\n".join(lines))
+    page.write(out, name, TITLES.get(name, name), lines)
 
 
 def median_run(prm, geometry, solver, tol, directory, repeat, extra=()):
@@ -257,7 +271,9 @@ def main():
                        help="time to answer on Prandtl, 2048 to 32768 elements "
                        "(benchmarks/performance.py)")
     parser.add_argument("--output", default=OUT, help="the results directory (default %(default)s)")
+    page.add_argument(parser)
     arguments = parser.parse_args()
+    page.configure(arguments)
     OUT = os.path.abspath(arguments.output)
     repeat = arguments.repeat
     if repeat < 1:
@@ -453,9 +469,7 @@ def stability():
                 material, method, len(detected), len(runs), len(close),
                 statistics.median(int(r["total_iterations"]) for r in runs), seconds))
             print(lines[-1], flush=True)
-    with open(os.path.join(OUT, "stability", "stability.md"), "w") as f:
-        f.write("\n".join(lines) + "\n")
-    print("\n".join(lines))
+    page.write(os.path.join(OUT, "stability"), "stability", TITLES["stability"], lines)
 
 
 if __name__ == "__main__":
