@@ -12,7 +12,7 @@
 //   volume  2 "interface"  the inclined slab (none with zero_thickness)
 //   surface 3 "interface"  the inclined plane where the blocks meet
 //                          (zero_thickness only), for zero-thickness
-//                          interface elements ("Interface curve 3")
+//                          interface elements ("Interface 3")
 //   surface 1 "bottom"     base of the column (y = 0)
 //   surface 2 "top"        top of the column
 //   surface 5 "back"       the face z = 0

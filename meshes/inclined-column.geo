@@ -11,7 +11,7 @@
 //                     when the column is revolved as a hollow cylinder)
 //   zero_thickness    1: no band; the blocks meet on the inclined line,
 //                     physical curve 3, for zero-thickness interface
-//                     elements ("Interface curve 3")
+//                     elements ("Interface 3")
 //
 // Physical groups:
 //   surface 1 "block"      the column above and below the interface

@@ -17,7 +17,7 @@
 //   n_depth         elements down the soil
 //   zero_thickness  1: no layer; the block sits on the ground, and the
 //                   line between them is physical curve 4 for
-//                   zero-thickness interface elements ("Interface curve 4")
+//                   zero-thickness interface elements ("Interface 4")
 //
 // Physical groups:
 //   surfaces 1 "block", 2 "layer" (none with zero_thickness), 3 "soil"

@@ -20,7 +20,7 @@
 //   interface_beyond_footing   1: Figure 6; 0: Figure 10
 //   zero_thickness  1: no row; the footing sits on the soil, and the line
 //                   between them is physical curve 5, for zero-thickness
-//                   interface elements ("Interface curve 5")
+//                   interface elements ("Interface 5")
 //
 // Physical groups:
 //   surfaces 1 "footing", 2 "interface" (none with zero_thickness), 3 "soil"

@@ -15,7 +15,7 @@
 //   growth          ratio of neighbouring element widths away from the wall
 //   zero_thickness  1: the column is the wall's skin, and the line between
 //                   it and the backfill is physical curve 6 for
-//                   zero-thickness interface elements ("Interface curve 6")
+//                   zero-thickness interface elements ("Interface 6")
 //   depth           D >= 0, the soil's depth below the toe (0: none, the
 //                   base at the toe). A passive mechanism on a rough wall
 //                   dips below the toe, which a base there would cut off.

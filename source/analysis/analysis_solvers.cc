@@ -220,7 +220,7 @@ namespace thinlayer
                          "; expected moduli closer to each other");
     if (!parameters.interface_elements.empty())
       throw InputError(parameters.parameter_file,
-                       "Interface curve <id>/Normal stiffness",
+                       "Interface <id>/Normal stiffness",
                        held + "expected interface elements stiffer against the "
                               "cells beside them, or supports that hold the "
                               "body more firmly");

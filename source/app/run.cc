@@ -128,6 +128,12 @@ namespace thinlayer
       if (std::isfinite(p.reference.analytic_load))
         {
           out << ", analytic " << printf("%.5g", p.reference.analytic_load);
+          if (!p.reference.analytic_bracket.empty())
+            out << " (bracket "
+                << printf("%.5g", p.reference.analytic_bracket.at("low"))
+                << " - "
+                << printf("%.5g", p.reference.analytic_bracket.at("high"))
+                << ")";
           if (std::isfinite(summary.relative_error))
             out << ", relative error "
                 << printf("%+.3e", summary.relative_error);
@@ -235,6 +241,7 @@ namespace thinlayer
       summary.last_converged_load = run.last_converged_load;
       summary.first_failed_load   = run.first_failed_load;
       summary.reference_load      = p.reference.analytic_load;
+      summary.reference_bracket   = p.reference.analytic_bracket;
       // A collapse load (or a plateau) is compared with the closed form,
       // and so is the final state of a run whose every step converged
       // (an elastic reference); the last converged load of a run that

@@ -385,7 +385,7 @@ namespace thinlayer
   {
     std::vector<NamedProfile> result;
     for (const auto &[id, law] : laws)
-      result.push_back({"interface-curve-" + std::to_string(id),
+      result.push_back({"interface-" + std::to_string(id),
                         profile(id, solution, step_increment, pending)});
     return result;
   }
@@ -440,10 +440,8 @@ namespace thinlayer
             v.shear_traction              = state.traction[0];
             v.normal_traction             = state.traction[1];
             v.shear_traction_out_of_plane = state.traction[2];
-            v.yield_ratio                 = law.can_yield()
-                                              ? law.yield_ratio(state.traction)
-                                              : std::numeric_limits<double>::quiet_NaN();
-            v.plastic                     = state.yielding;
+            v.mobilised_strength = law.mobilised_strength(state.traction);
+            v.plastic            = state.yielding;
             values.push_back(v);
           }
         sum_over_ranks(values);

@@ -87,7 +87,7 @@ namespace thinlayer
     const StrengthReductionParameters &reduced,
     const double                       factor)
   {
-    for (const types::boundary_id id : reduced.interface_curves)
+    for (const types::boundary_id id : reduced.interfaces)
       {
         InterfaceElementParameters curve = curves->at(id);
         const auto r   = StrengthReductionParameters::reduce(curve.adhesion,

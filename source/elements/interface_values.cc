@@ -33,7 +33,7 @@ namespace thinlayer
                                          v.shear_traction,
                                          v.shear_traction_out_of_plane,
                                          v.normal_traction,
-                                         v.yield_ratio,
+                                         v.mobilised_strength,
                                v.plastic ? 1. : 0.};
         std::copy(row, row + n, packed.begin() + n * k);
       }
@@ -65,7 +65,7 @@ namespace thinlayer
       std::ostringstream out;
       out << "x,y,z,t1_x,t1_y,t1_z,n_x,n_y,n_z,slip_1,slip_2,opening,"
              "slip_increment_1,opening_increment,shear_traction_1,"
-             "shear_traction_2,normal_traction,yield_ratio,plastic\n";
+             "shear_traction_2,normal_traction,mobilised_strength,plastic\n";
       const auto &values = profile.stations[0];
       for (unsigned int k = 0; k < profile.surface_samples.size(); ++k)
         {
@@ -81,8 +81,9 @@ namespace thinlayer
               << number(v.opening) << ',' << number(v.slip_increment) << ','
               << number(v.opening_increment) << ',' << number(v.shear_traction)
               << ',' << number(v.shear_traction_out_of_plane) << ','
-              << number(v.normal_traction) << ',' << number(v.yield_ratio)
-              << ',' << (v.plastic ? 1 : 0) << '\n';
+              << number(v.normal_traction) << ','
+              << number(v.mobilised_strength) << ',' << (v.plastic ? 1 : 0)
+              << '\n';
         }
       return out.str();
     }
@@ -99,7 +100,7 @@ namespace thinlayer
     std::ostringstream                out;
     out << "run,arc_length,x,y,angle,slip,slip_out_of_plane,opening,"
            "slip_increment,opening_increment,shear_traction,"
-           "shear_traction_out_of_plane,normal_traction,yield_ratio,"
+           "shear_traction_out_of_plane,normal_traction,mobilised_strength,"
            "plastic\n";
     for (unsigned int station = 0; station < kinematics.n_stations(); ++station)
       {
@@ -119,8 +120,9 @@ namespace thinlayer
                 << number(v.opening_increment) << ','
                 << number(v.shear_traction) << ','
                 << number(v.shear_traction_out_of_plane) << ','
-                << number(v.normal_traction) << ',' << number(v.yield_ratio)
-                << ',' << (v.plastic ? 1 : 0) << '\n';
+                << number(v.normal_traction) << ','
+                << number(v.mobilised_strength) << ',' << (v.plastic ? 1 : 0)
+                << '\n';
           }
       }
     return out.str();
@@ -213,7 +215,7 @@ namespace thinlayer
       {surface ? "shear_traction_2" : "shear_traction_out_of_plane",
        &InterfaceValues::shear_traction_out_of_plane},
       {"normal_traction", &InterfaceValues::normal_traction},
-      {"yield_ratio", &InterfaceValues::yield_ratio}};
+      {"mobilised_strength", &InterfaceValues::mobilised_strength}};
     for (unsigned int station = 0; station < kinematics.n_stations(); ++station)
       {
         const std::string suffix =

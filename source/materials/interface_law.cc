@@ -87,6 +87,18 @@ namespace thinlayer
   }
 
 
+  double
+  InterfaceLaw::mobilised_strength(const Tensor<1, 3> &t) const
+  {
+    if (!plastic)
+      return 0;
+    const double available = adhesion - t[1] * tan_phi;
+    if (t[1] >= tensile_strength || available <= 0)
+      return 1;
+    return std::min(1., shear_magnitude(t) / available);
+  }
+
+
   Tensor<1, 3>
   InterfaceLaw::flow_direction(const Tensor<1, 3> &t) const
   {

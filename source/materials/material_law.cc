@@ -78,6 +78,13 @@ namespace thinlayer
 
 
   double
+  MaterialLaw::mobilised_strength(const SymmetricTensor<2, 3> &) const
+  {
+    return 0;
+  }
+
+
+  double
   MaterialLaw::viscoplastic_time_step() const
   {
     return std::numeric_limits<double>::infinity();

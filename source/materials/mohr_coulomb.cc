@@ -236,6 +236,20 @@ namespace thinlayer
 
 
   double
+  MohrCoulomb::mobilised_strength(const SymmetricTensor<2, 3> &stress) const
+  {
+    // Mohr's circle of the largest and smallest principal stresses
+    // (tension positive) against the strength line at its centre.
+    const std::array<double, 3> s      = eigenvalues(stress);
+    const double                radius = 0.5 * (s[0] - s[2]);
+    const double available = cohesion * cos_phi - 0.5 * (s[0] + s[2]) * sin_phi;
+    if (available <= 0)
+      return 1;
+    return std::min(1., radius / available);
+  }
+
+
+  double
   MohrCoulomb::viscoplastic_time_step() const
   {
     const double nu = poissons_ratio;

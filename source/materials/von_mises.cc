@@ -34,6 +34,13 @@ namespace thinlayer
 
 
   double
+  VonMises::mobilised_strength(const SymmetricTensor<2, 3> &stress) const
+  {
+    return std::min(1., equivalent_stress(stress) / (std::sqrt(3.) * cohesion));
+  }
+
+
+  double
   VonMises::viscoplastic_time_step() const
   {
     return 4 * (1 + poissons_ratio) / (3 * youngs_modulus);

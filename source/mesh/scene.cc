@@ -270,7 +270,7 @@ namespace thinlayer
         mesh = split_along_curves(mesh, curves);
         msh  = mesh.text();
       }
-    check_physical_faces_on_boundary(mesh, dim, "Interface curve");
+    check_physical_faces_on_boundary(mesh, dim, "Interface");
     create_triangulation(mesh, tria);
     if (tria.n_active_cells() > p.mesh.max_cells)
       throw InputError(p.parameter_file,

@@ -87,7 +87,7 @@ namespace thinlayer
   OutputWriter::write_fields(const unsigned int                    step,
                              const double                          load_factor,
                              const bool                            on_curve,
-                             const Analysis<dim>                  &analysis,
+                             const AnalysisView<dim>              &analysis,
                              const double                          theta,
                              const std::vector<LayerProfile<dim>> &interfaces)
   {
@@ -199,7 +199,8 @@ namespace thinlayer
   OutputWriter::write_interface_profiles(
     const unsigned int                    step,
     const double                          load_factor,
-    const Analysis<dim>                  &analysis,
+    const bool                            on_curve,
+    const AnalysisView<dim>              &analysis,
     const std::vector<LayerProfile<dim>> &interfaces,
     const bool                            with_vtu)
   {
@@ -215,7 +216,7 @@ namespace thinlayer
       return;
     const Kinematics &kinematics = analysis.get_kinematics();
     // Each profile as NAME-NNNN.csv, and with_vtu as NAME-NNNN.vtu listed
-    // in NAME.pvd.
+    // in NAME.pvd (a state of the curve) or NAME-attempts.pvd.
     const auto write = [&](const std::string &base, const Profile &profile) {
       std::ostringstream name;
       name << base << '-' << std::setw(4) << std::setfill('0') << step;
@@ -223,11 +224,12 @@ namespace thinlayer
       if (!with_vtu)
         return;
       write_file(name.str() + ".vtu", profile_vtu(profile, kinematics));
-      auto &records = profile_records[base];
+      const std::string list    = on_curve ? base : base + "-attempts";
+      auto             &records = profile_records[list];
       records.emplace_back(load_factor, name.str() + ".vtu");
       std::ostringstream pvd;
       DataOutBase::write_pvd_record(pvd, records);
-      write_file(base + ".pvd", pvd.str());
+      write_file(list + ".pvd", pvd.str());
     };
     for (const NamedProfile &profile : profiles)
       write(profile.name, profile.profile);
@@ -235,11 +237,11 @@ namespace thinlayer
 
 
   void
-  OutputWriter::write_revolved_view(const unsigned int step,
-                                    const double       load_factor,
-                                    const bool         on_curve,
-                                    const Analysis<2> &analysis,
-                                    const unsigned int slices)
+  OutputWriter::write_revolved_view(const unsigned int     step,
+                                    const double           load_factor,
+                                    const bool             on_curve,
+                                    const AnalysisView<2> &analysis,
+                                    const unsigned int     slices)
   {
     // On several ranks every rank writes the view of its own cells.
     const bool pieces = mpi::n_ranks() > 1;
@@ -281,8 +283,8 @@ namespace thinlayer
 
   template <int dim>
   void
-  OutputWriter::write_displacements(const Analysis<dim> &analysis,
-                                    const double         theta) const
+  OutputWriter::write_displacements(const AnalysisView<dim> &analysis,
+                                    const double             theta) const
   {
     // Every rank takes part: each writes the rows of its own cells.
     const ModeVector u           = analysis.displacement_at(theta);
@@ -431,21 +433,22 @@ namespace thinlayer
   }
 
 
-#define THINLAYER_INSTANTIATE(dim)                                       \
-  template void OutputWriter::write_displacements(const Analysis<dim> &, \
-                                                  const double) const;   \
-  template void OutputWriter::write_fields(                              \
-    const unsigned int,                                                  \
-    const double,                                                        \
-    const bool,                                                          \
-    const Analysis<dim> &,                                               \
-    const double,                                                        \
-    const std::vector<LayerProfile<dim>> &);                             \
-  template void OutputWriter::write_interface_profiles(                  \
-    const unsigned int,                                                  \
-    const double,                                                        \
-    const Analysis<dim> &,                                               \
-    const std::vector<LayerProfile<dim>> &,                              \
+#define THINLAYER_INSTANTIATE(dim)                                           \
+  template void OutputWriter::write_displacements(const AnalysisView<dim> &, \
+                                                  const double) const;       \
+  template void OutputWriter::write_fields(                                  \
+    const unsigned int,                                                      \
+    const double,                                                            \
+    const bool,                                                              \
+    const AnalysisView<dim> &,                                               \
+    const double,                                                            \
+    const std::vector<LayerProfile<dim>> &);                                 \
+  template void OutputWriter::write_interface_profiles(                      \
+    const unsigned int,                                                      \
+    const double,                                                            \
+    const bool,                                                              \
+    const AnalysisView<dim> &,                                               \
+    const std::vector<LayerProfile<dim>> &,                                  \
     const bool);
   THINLAYER_INSTANTIATE(2)
   THINLAYER_INSTANTIATE(3)

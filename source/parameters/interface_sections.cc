@@ -10,7 +10,7 @@
 
 // The sections of the two ways of modelling an interface: the thin layers a
 // run profiles ("Layers"), and the interface elements, of zero thickness,
-// along physical curves ("Interface curve N").
+// along physical curves ("Interface N").
 
 namespace thinlayer
 {
@@ -70,7 +70,7 @@ namespace thinlayer
   std::string
   InterfaceElementParameters::section(const unsigned int id)
   {
-    return "Interface curve " + std::to_string(id);
+    return "Interface " + std::to_string(id);
   }
 
 

@@ -303,8 +303,8 @@ namespace thinlayer
       "tan(phi) / F together (the dilation angle at most the reduced "
       "friction angle). The safety factor is summary.json's "
       "collapse_load. Each must have a yield criterion. Empty, with no "
-      "Interface curves: no strength reduction.");
-    prm.declare_entry("Interface curves",
+      "Interfaces: no strength reduction.");
+    prm.declare_entry("Interfaces",
                       "",
                       Patterns::Anything(),
                       "Curves of zero-thickness interface elements "
@@ -366,20 +366,20 @@ namespace thinlayer
     const std::map<types::boundary_id, bool> &can_slip)
   {
     prm.enter_subsection("Strength reduction");
-    materials        = parse_ids(prm.get("Materials"),
+    materials  = parse_ids(prm.get("Materials"),
                           can_yield,
                           file,
                           "Strength reduction/Materials",
                           "material",
                           "is elastic: it has no strength to reduce; expected "
-                                 "materials with a yield criterion");
-    interface_curves = parse_ids(prm.get("Interface curves"),
-                                 can_slip,
-                                 file,
-                                 "Strength reduction/Interface curves",
-                                 "curve",
-                                 "is elastic: it has no strength to reduce; "
-                                 "expected curves with a slip criterion");
+                           "materials with a yield criterion");
+    interfaces = parse_ids(prm.get("Interfaces"),
+                           can_slip,
+                           file,
+                           "Strength reduction/Interfaces",
+                           "curve",
+                           "is elastic: it has no strength to reduce; "
+                           "expected curves with a slip criterion");
     factor_increments =
       parse_increments(prm.get("Factor increments"),
                        file,

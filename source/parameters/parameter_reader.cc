@@ -205,10 +205,42 @@ namespace thinlayer
     const std::map<std::string, std::string> former_section_names = {
       {"Interfaces", "Layers"}};
 
+    /// Per-id sections renamed, by the former name of their kind: "Interface
+    /// curve 3" is now "Interface 3" (it names a surface in 3d).
+    const std::map<std::string, std::string> former_section_kinds = {
+      {"Interface curve", "Interface"}};
+
+    /// Entries renamed, by their section and former name.
+    const std::map<std::pair<std::string, std::string>, std::string>
+      former_entry_names = {
+        {{"Strength reduction", "Interface curves"}, "Interfaces"}};
+
 
     /**
-     * The former names of sections in @p lines and @p overrides replaced by
-     * their names; returns a warning for each.
+     * The name @p name of a top-level section has now, and whether it is a
+     * former one.
+     */
+    std::pair<std::string, bool>
+    current_section_name(const std::string &name)
+    {
+      if (const auto renamed = former_section_names.find(name);
+          renamed != former_section_names.end())
+        return {renamed->second, true};
+      // Only a former name with its id ("Interface curve 3") is renamed:
+      // any other text is reported as written.
+      for (const auto &[former, kind] : former_section_kinds)
+        if (name.size() > former.size() + 1 &&
+            name.compare(0, former.size() + 1, former + " ") == 0 &&
+            name.find_first_not_of("0123456789", former.size() + 1) ==
+              std::string::npos)
+          return {kind + name.substr(former.size()), true};
+      return {name, false};
+    }
+
+
+    /**
+     * The former names of sections and entries in @p lines and
+     * @p overrides replaced by their names; returns a warning for each.
      */
     std::vector<std::string>
     rename_former_sections(std::vector<ParameterLine> &lines,
@@ -217,37 +249,73 @@ namespace thinlayer
     {
       std::vector<std::string> warnings;
       const auto               warn = [&](const std::string &where,
+                            const std::string &what,
                             const std::string &former,
                             const std::string &name) {
-        warnings.push_back(where + ": section '" + former +
+        warnings.push_back(where + ": " + what + " '" + former +
                            "' is now called '" + name +
                            "'; the former name is accepted until the next "
                                          "release");
       };
-      unsigned int depth = 0;
+      std::vector<std::string> open;
       for (ParameterLine &line : lines)
         if (line.kind == ParameterLine::Kind::subsection)
           {
-            const auto renamed = former_section_names.find(line.name);
-            if (depth == 0 && renamed != former_section_names.end())
-              {
-                warn("'" + file + "', " + line_position(line, file),
-                     line.name,
-                     renamed->second);
-                line.text = "subsection " + renamed->second;
-                line.name = renamed->second;
-              }
-            ++depth;
+            if (open.empty())
+              if (const auto [name, renamed] = current_section_name(line.name);
+                  renamed)
+                {
+                  warn("'" + file + "', " + line_position(line, file),
+                       "section",
+                       line.name,
+                       name);
+                  line.text = "subsection " + name;
+                  line.name = name;
+                }
+            open.push_back(line.name);
           }
-        else if (line.kind == ParameterLine::Kind::end && depth > 0)
-          --depth;
-      for (std::string &o : overrides)
-        for (const auto &[former, name] : former_section_names)
-          if (o.rfind(former + "/", 0) == 0)
+        else if (line.kind == ParameterLine::Kind::end && !open.empty())
+          open.pop_back();
+        else if (line.kind == ParameterLine::Kind::set && open.size() == 1)
+          if (const auto renamed =
+                former_entry_names.find({open.back(), line.name});
+              renamed != former_entry_names.end())
             {
-              warn("command line '" + o + "'", former, name);
-              o = name + o.substr(former.size());
+              warn("'" + file + "', " + line_position(line, file),
+                   "entry",
+                   open.back() + "/" + line.name,
+                   open.back() + "/" + renamed->second);
+              line.text = "set " + renamed->second + " = " + line.value;
+              line.name = renamed->second;
             }
+      for (std::string &o : overrides)
+        {
+          const auto slash = o.find('/');
+          if (slash == std::string::npos || slash > o.find('='))
+            continue;
+          const std::string section = Utilities::trim(o.substr(0, slash));
+          if (const auto [name, renamed] = current_section_name(section);
+              renamed)
+            {
+              warn("command line '" + o + "'", "section", section, name);
+              o = name + o.substr(slash);
+            }
+          const auto        equal     = o.find('=');
+          const auto        slash_now = o.find('/');
+          const std::string owner     = Utilities::trim(o.substr(0, slash_now));
+          const std::string entry =
+            Utilities::trim(o.substr(slash_now + 1, equal - slash_now - 1));
+          if (const auto renamed = former_entry_names.find({owner, entry});
+              renamed != former_entry_names.end())
+            {
+              warn("command line '" + o + "'",
+                   "entry",
+                   owner + "/" + entry,
+                   owner + "/" + renamed->second);
+              o =
+                o.substr(0, slash_now + 1) + renamed->second + o.substr(equal);
+            }
+        }
       return warnings;
     }
 
@@ -440,8 +508,7 @@ namespace thinlayer
       ids_of_sections(lines, file, overrides, "Material");
     const auto boundary_ids =
       ids_of_sections(lines, file, overrides, "Boundary");
-    const auto curve_ids =
-      ids_of_sections(lines, file, overrides, "Interface curve");
+    const auto curve_ids = ids_of_sections(lines, file, overrides, "Interface");
     const auto phases =
       nested_section_ids(lines, file, overrides, "Phase", "Boundary");
 
@@ -528,7 +595,7 @@ namespace thinlayer
     out
       << "# thinlayer parameters. 'Material <id>' and 'Boundary <id>' may be\n"
       << "# repeated for every physical surface and curve id of the mesh,\n"
-      << "# 'Interface curve <id>' for every physical curve (a physical "
+      << "# 'Interface <id>' for every physical curve (a physical "
          "surface\n"
       << "# in 3d) of zero-thickness interface elements, 'Phase <n>' for\n"
       << "# every further loading phase (n = 2, 3, ...), with a 'Boundary "

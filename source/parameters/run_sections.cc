@@ -3,6 +3,7 @@
 
 #include <thinlayer/base/input_error.h>
 #include <thinlayer/parameters/parameter_checks.h>
+#include <thinlayer/parameters/parameter_text.h>
 #include <thinlayer/parameters/parameters.h>
 
 #include <algorithm>
@@ -432,8 +433,27 @@ namespace thinlayer
       "",
       Patterns::Anything(),
       "Closed-form value the final load is compared with, as an "
-      "expression of the geometry parameters (e.g. "
-      "'1/(sin(alpha*pi/180)*cos(alpha*pi/180))'); empty for none.");
+      "expression of the geometry parameters and the Variables (e.g. "
+      "'1/(sin(alpha*pi/180)*cos(alpha*pi/180))'); empty for none, or for "
+      "the middle of the Analytic bracket.");
+    prm.declare_entry(
+      "Variables",
+      "",
+      Patterns::Anything(),
+      "Names for the Analytic load bound to numeric entries of the run: "
+      "'name = Section/Entry; ...' (e.g. 'phi = Material 2/Friction "
+      "angle'), each the value this run has (a sweep's or the command "
+      "line's), so that a sweep over a material property compares every "
+      "run with its own closed form. Empty: none.");
+    prm.declare_entry(
+      "Analytic bracket",
+      "",
+      Patterns::Anything(),
+      "Two numbers 'low, high' known to hold the exact value where no "
+      "closed form is (e.g. the lower and upper bounds of limit analysis): "
+      "written into summary.json (reference_bracket) for the tests and the "
+      "report; without an Analytic load, its middle is the analytic "
+      "load. Empty: none.");
     prm.declare_entry(
       "Expected outcome",
       "",
@@ -461,20 +481,28 @@ namespace thinlayer
   {
     prm.enter_subsection("Reference");
     const std::string reference = prm.get("Analytic load");
-    analytic_load               = std::numeric_limits<double>::quiet_NaN();
+    const std::string bound     = prm.get("Variables");
+    const std::string bracket   = Utilities::trim(prm.get("Analytic bracket"));
+    prm.leave_subsection();
+    const std::map<std::string, double> bound_values =
+      variables(prm, bound, file);
+    prm.enter_subsection("Reference");
+
+    analytic_load = std::numeric_limits<double>::quiet_NaN();
     if (!Utilities::trim(reference).empty())
       {
+        auto constants = mesh.geometry_parameters;
+        constants.insert(bound_values.begin(), bound_values.end());
         check_expressions(reference,
                           1,
                           "x,y,unused_z",
-                          mesh.geometry_parameters,
+                          constants,
                           file,
                           "Reference/Analytic load");
         // A closed form of the geometry only: x and y are no variables of
         // it (they would silently be 0).
         FunctionParser<2> f(1);
-        auto              constants = mesh.geometry_parameters;
-        constants["pi"]             = numbers::PI;
+        constants["pi"] = numbers::PI;
         const SilencedErrorStream silence;
         try
           {
@@ -488,7 +516,8 @@ namespace thinlayer
             throw InputError(file,
                              "Reference/Analytic load",
                              "expected an expression of the geometry "
-                             "parameters and pi only (no x or y): " +
+                             "parameters, the Variables and pi only (no x "
+                             "or y): " +
                                message_of(e));
           }
         if (!std::isfinite(analytic_load) || analytic_load == 0)
@@ -496,6 +525,38 @@ namespace thinlayer
                            "Reference/Analytic load",
                            "expected a finite, non-zero value, got " +
                              std::to_string(analytic_load));
+      }
+    else if (!bound_values.empty())
+      throw InputError(file,
+                       "Reference/Variables",
+                       "names values for the Analytic load, which is "
+                       "empty; expected an Analytic load that uses them, "
+                       "or no Variables");
+
+    analytic_bracket.clear();
+    if (!bracket.empty())
+      {
+        const auto ends = Utilities::split_string_list(bracket, ',');
+        double     low = 0, high = 0;
+        if (ends.size() != 2 || !to_number(ends[0], low) ||
+            !to_number(ends[1], high) || !std::isfinite(low) ||
+            !std::isfinite(high) || !(low < high) || low * high <= 0)
+          throw InputError(file,
+                           "Reference/Analytic bracket",
+                           "expected two finite numbers 'low, high' of one "
+                           "sign with low < high, got '" +
+                             bracket + "'");
+        analytic_bracket = {{"low", low}, {"high", high}};
+        if (!std::isfinite(analytic_load))
+          analytic_load = (low + high) / 2;
+        else if (analytic_load < low || analytic_load > high)
+          throw InputError(file,
+                           "Reference/Analytic bracket",
+                           "[" + bracket +
+                             "] does not hold the Analytic "
+                             "load " +
+                             std::to_string(analytic_load) +
+                             "; expected a bracket around it");
       }
 
     expected_outcome = Utilities::trim(prm.get("Expected outcome"));
@@ -522,6 +583,66 @@ namespace thinlayer
                              range + "'");
       }
     prm.leave_subsection();
+  }
+
+
+  std::map<std::string, double>
+  ReferenceParameters::variables(ParameterHandler  &prm,
+                                 const std::string &text,
+                                 const std::string &file)
+  {
+    std::map<std::string, double> values;
+    const std::string             entry = "Reference/Variables";
+    for (const auto &item : Utilities::split_string_list(text, ';'))
+      {
+        const auto        equal = item.find('=');
+        const std::string name =
+          Utilities::trim(item.substr(0, std::min(equal, item.size())));
+        if (equal == std::string::npos || !is_identifier(name))
+          throw InputError(file,
+                           entry,
+                           "expected 'name = Section/Entry; ...' with a "
+                           "name of letters, digits and underscores, got '" +
+                             item + "'");
+        if (values.count(name) != 0 || name == "pi")
+          throw InputError(file,
+                           entry,
+                           "'" + name +
+                             "' is named twice or is pi; expected each name "
+                             "once");
+        const std::string path  = entry_path(item.substr(equal + 1));
+        const auto        parts = Utilities::split_string_list(path, '/');
+        if (parts.size() < 2)
+          throw InputError(file,
+                           entry,
+                           "expected '" + name + " = Section/Entry', got '" +
+                             item + "'");
+        std::string  value;
+        unsigned int entered = 0;
+        try
+          {
+            for (; entered + 1 < parts.size(); ++entered)
+              prm.enter_subsection(parts[entered]);
+            value = prm.get(parts.back());
+          }
+        catch (const ExceptionBase &)
+          {
+            value = "";
+          }
+        for (; entered > 0; --entered)
+          prm.leave_subsection();
+        double number = 0;
+        if (!to_number(value, number) || !std::isfinite(number))
+          throw InputError(file,
+                           entry,
+                           "'" + name + " = " + path +
+                             "': expected an entry of this run with a "
+                             "number as its value, got " +
+                             (value.empty() ? std::string("none")
+                                            : "'" + value + "'"));
+        values[name] = number;
+      }
+    return values;
   }
 
 

@@ -7,7 +7,7 @@ namespace thinlayer
 {
   template <int dim>
   void
-  LayerReading<dim>::place_on_ranks(const Analysis<dim> &analysis)
+  LayerReading<dim>::place_on_ranks(const AnalysisView<dim> &analysis)
   {
     for (LayerSample<dim> &sample : samples)
       {
@@ -21,7 +21,7 @@ namespace thinlayer
 
   template <int dim>
   std::vector<InterfaceValues>
-  evaluate_layer(const Analysis<dim>                 &analysis,
+  evaluate_layer(const AnalysisView<dim>             &analysis,
                  const std::vector<LayerSample<dim>> &samples,
                  const unsigned int                   station)
   {
@@ -59,22 +59,20 @@ namespace thinlayer
         const Tensor<1, 3> djump = difference(du, s);
 
         const unsigned int    cell_index = s.cell->active_cell_index();
-        const MaterialLaw    &law        = analysis.material_law(cell_index);
+        const MaterialLaw    &law = analysis.get_material_law(cell_index);
         SymmetricTensor<2, 3> stress;
         InterfaceValues       v;
-        v.plastic     = false;
-        v.yield_ratio = law.can_yield()
-                          ? std::numeric_limits<double>::lowest()
-                          : std::numeric_limits<double>::quiet_NaN();
+        v.plastic            = false;
+        v.mobilised_strength = 0;
         for (const unsigned int q : s.thickness_points)
           {
             const PointState &state =
-              analysis.point_state(cell_index, q, station);
+              analysis.get_point_state(cell_index, q, station);
             stress += state.stress / s.thickness_points.size();
             v.plastic = v.plastic || state.yielding;
-            if (law.can_yield())
-              v.yield_ratio =
-                std::max(v.yield_ratio, law.yield_ratio(state.stress));
+            v.mobilised_strength =
+              std::max(v.mobilised_strength,
+                       law.mobilised_strength(state.stress));
           }
         const Tensor<1, 3> traction   = stress * s.n;
         v.slip                        = jump * s.t1;
@@ -94,7 +92,7 @@ namespace thinlayer
 
   template <int dim>
   std::vector<Vector<double>>
-  layer_cell_averages(const Analysis<dim>                          &analysis,
+  layer_cell_averages(const AnalysisView<dim>                      &analysis,
                       const std::vector<LayerSample<dim>>          &samples,
                       const std::vector<InterfaceValues>           &values,
                       const std::vector<double InterfaceValues::*> &fields)
@@ -123,20 +121,20 @@ namespace thinlayer
   template class LayerReading<2>;
   template class LayerReading<3>;
   template std::vector<InterfaceValues>
-  evaluate_layer(const Analysis<2> &,
+  evaluate_layer(const AnalysisView<2> &,
                  const std::vector<LayerSample<2>> &,
                  const unsigned int);
   template std::vector<InterfaceValues>
-  evaluate_layer(const Analysis<3> &,
+  evaluate_layer(const AnalysisView<3> &,
                  const std::vector<LayerSample<3>> &,
                  const unsigned int);
   template std::vector<Vector<double>>
-  layer_cell_averages(const Analysis<2> &,
+  layer_cell_averages(const AnalysisView<2> &,
                       const std::vector<LayerSample<2>> &,
                       const std::vector<InterfaceValues> &,
                       const std::vector<double InterfaceValues::*> &);
   template std::vector<Vector<double>>
-  layer_cell_averages(const Analysis<3> &,
+  layer_cell_averages(const AnalysisView<3> &,
                       const std::vector<LayerSample<3>> &,
                       const std::vector<InterfaceValues> &,
                       const std::vector<double InterfaceValues::*> &);

@@ -328,8 +328,12 @@ namespace thinlayer
                                          analysis,
                                          p.output.view_slices);
           writer.write_displacements(analysis, p.monitors.displacement_angle);
-          writer.write_interface_profiles(
-            a.step, a.load_factor, analysis, layers, p.output.write_vtu);
+          writer.write_interface_profiles(a.step,
+                                          a.load_factor,
+                                          on_curve,
+                                          analysis,
+                                          layers,
+                                          p.output.write_vtu);
         }
     }
     print_attempt(a.step,

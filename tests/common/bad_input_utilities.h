@@ -193,7 +193,7 @@ Physical Curve("bottom", 1) = {1}; Physical Curve("top", 2) = {6};
     return "subsection Mesh\n  set File = " + meshes +
            "interface-patch.geo\nend\n"
            "subsection Material 1\nend\n"
-           "subsection Interface curve 3\n  set Shear stiffness = 1e-20\n"
+           "subsection Interface 3\n  set Shear stiffness = 1e-20\n"
            "end\n"
            "subsection Boundary 1\n  set Constrained components = x, y\nend\n"
            "subsection Boundary 2\n  set Traction = 1; -1\nend\n"

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include <mpi.h>
+#include <nlohmann/json.hpp>
 
 namespace run_results
 {
@@ -62,6 +63,14 @@ namespace run_results
                json.compare(at + key.size() + 4, 4, "null") == 0
              ? NAN
              : std::atof(json.c_str() + at + key.size() + 4);
+  }
+
+  /// The whole of @p directory/summary.json.
+  inline nlohmann::json
+  summary(const std::string &directory)
+  {
+    std::ifstream in(directory + "/summary.json");
+    return nlohmann::json::parse(in);
   }
 
   /// The string @p key of @p directory/summary.json ("" if it has none).

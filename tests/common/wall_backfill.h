@@ -38,7 +38,7 @@ namespace wall_backfill
     if (interface)
       std::snprintf(friction,
                     sizeof(friction),
-                    "Interface curve 6/Friction angle=%.17g",
+                    "Interface 6/Friction angle=%.17g",
                     delta);
     else
       std::snprintf(friction,

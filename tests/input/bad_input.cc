@@ -83,7 +83,7 @@ namespace
           "subsection Mesh\n  set File = " + std::string(SOURCE_DIR) +
             "/../../meshes/interface-patch.geo\nend\n"
             "subsection Material 1\nend\n"
-            "subsection Interface curve 3\n  set Normal stiffness = 4e12\n"
+            "subsection Interface 3\n  set Normal stiffness = 4e12\n"
             "end\n"
             "subsection Boundary 1\n  set Constrained components = x, y\nend\n"
             "subsection Boundary 2\n  set Traction = 0; -1\nend\n"

@@ -131,7 +131,7 @@ namespace
     check("a monitored point with two coordinates in 3d", {"point-3d.prm"});
 
     write("interface-3d.prm",
-          solid_scene("cube.msh", "subsection Interface curve 3\nend\n"));
+          solid_scene("cube.msh", "subsection Interface 3\nend\n"));
     check("interface elements on a surface the mesh does not have",
           {"interface-3d.prm"});
 

@@ -6,8 +6,16 @@
 // expectations of the run that cannot be met or mean nothing)
 // are refused with one clear message naming the file and the entry, a
 // non-zero exit, and the previous run and a file of the user's beside it
-// kept byte for byte.
+// kept byte for byte. And a truth: Reference/Variables binds the Analytic
+// load to this run's entries, so that every friction angle of a sweep has
+// its own closed form (to 1e-12).
+#include <thinlayer/parameters/parameter_reader.h>
+#include <thinlayer/parameters/parameters.h>
+
+#include <cmath>
+
 #include "../common/bad_input_utilities.h"
+#include "../common/truths.h"
 
 using namespace bad_input;
 
@@ -66,15 +74,15 @@ namespace
     check("an adhesion on an elastic interface curve",
           {"soft-interface.prm",
            "-s",
-           "Interface curve 3/Shear stiffness=1e5",
+           "Interface 3/Shear stiffness=1e5",
            "-s",
-           "Interface curve 3/Adhesion=1"});
+           "Interface 3/Adhesion=1"});
     check("a tensile strength on an elastic interface curve",
           {"soft-interface.prm",
            "-s",
-           "Interface curve 3/Shear stiffness=1e5",
+           "Interface 3/Shear stiffness=1e5",
            "-s",
-           "Interface curve 3/Tensile strength=0"});
+           "Interface 3/Tensile strength=0"});
   }
 
 
@@ -180,11 +188,97 @@ namespace
   }
 
 
+  /// Reference/Variables: the Analytic load of prm/case1-frictional-
+  /// stability-map.prm, read for three friction angles of its interface (from
+  /// its dilation angle, 20, up) as a sweep gives them, is each angle's closed
+  /// form 1 / (cos a (sin a - cos a tan phi)); names that bind nothing a number
+  /// are refused, and so is a bracket that does not hold the analytic load.
+  void
+  check_reference_variables()
+  {
+    const std::string file =
+      std::string(SOURCE_DIR) + "/../../prm/case1-frictional-stability-map.prm";
+    std::cout << "* Reference/Variables over a sweep of the friction angle\n";
+    for (const double phi : {20., 25., 30.})
+      {
+        const thinlayer::Parameters p =
+          thinlayer::ParameterReader().read(file,
+                                            {"Material 2/Friction angle=" +
+                                               std::to_string(phi),
+                                             "Output/Directory=variables"});
+        const double a = p.mesh.geometry_parameters.at("alpha") * M_PI / 180;
+        const double closed =
+          1 / (std::cos(a) *
+               (std::sin(a) - std::cos(a) * std::tan(phi * M_PI / 180)));
+        std::cout << "  phi " << phi << ": analytic load "
+                  << p.reference.analytic_load << ", closed form " << closed
+                  << '\n';
+        truths::expect(std::abs(p.reference.analytic_load / closed - 1) < 1e-12,
+                       "the run's own closed form");
+      }
+    std::cout << '\n';
+    check("a variable bound to an entry that does not exist",
+          {"good.prm",
+           "-s",
+           "Reference/Analytic load=2*c",
+           "-s",
+           "Reference/Variables=c = Material 1/Cohesive strength"});
+    check("a variable bound to an entry that is no number",
+          {"good.prm",
+           "-s",
+           "Reference/Analytic load=2*c",
+           "-s",
+           "Reference/Variables=c = Material 1/Yield criterion"});
+    check("variables without an analytic load",
+          {"good.prm", "-s", "Reference/Variables=c = Material 1/Cohesion"});
+    check("an analytic bracket that does not hold the analytic load",
+          {"good.prm",
+           "-s",
+           "Reference/Analytic load=1",
+           "-s",
+           "Reference/Analytic bracket=2, 3"});
+  }
+
+
   /// A section by its former name ("Interfaces", now "Layers"), in the
   /// file and on the command line: accepted, with a warning naming where.
+  /// So are "Interface curve <id>" (now "Interface <id>") and Strength
+  /// reduction's "Interface curves" (now "Interfaces"): the too soft
+  /// interface of soft_interface_scene() given by its former name is refused
+  /// by its new one, after the warnings.
   void
   check_former_names()
   {
+    std::string       curve   = soft_interface_scene(meshes);
+    const std::string section = "subsection Interface 3";
+    curve.replace(curve.find(section),
+                  section.size(),
+                  "subsection Interface curve 3");
+    write("former-curve.prm",
+          curve + "subsection Strength reduction\n  set Interface curves "
+                  "=\nend\n");
+    for (const auto &arguments :
+         {std::vector<std::string>{"former-curve.prm"},
+          std::vector<std::string>{"soft-interface.prm",
+                                   "-s",
+                                   "Interface curve 3/Shear stiffness=1e-20",
+                                   "-s",
+                                   "Strength reduction/Interface curves="}})
+      {
+        std::ostringstream out, err;
+        const int status = thinlayer::run_command_line(arguments, out, err);
+        std::cout << "* the former names Interface curve 3 and Strength "
+                     "reduction/Interface curves, from "
+                  << (arguments.size() == 1 ? "the file" : "the command line")
+                  << "\n  exit status " << status << "\n";
+        std::istringstream lines(out.str());
+        for (std::string line; std::getline(lines, line);)
+          if (line.find("warning: ") != std::string::npos)
+            std::cout << line << '\n';
+        std::cout << "  " << err.str() << '\n';
+        std::filesystem::remove_all("results");
+      }
+
     write("former.prm",
           scene() + "subsection Interfaces\n  set Material ids =\nend\n");
     for (const auto &arguments :
@@ -350,7 +444,9 @@ main()
   check_meaningless_entries();
   check_sweeps();
   check_reference_expectations();
+  check_reference_variables();
   check_former_names();
   check_silent_entries();
   check_records();
+  return truths::conclude();
 }

@@ -119,7 +119,7 @@ namespace
           "subsection Mesh\n  set File = " + meshes +
             "interface-patch.geo\nend\n"
             "subsection Material 1\nend\n"
-            "subsection Interface curve 3\n  set Slip criterion = tresca\n"
+            "subsection Interface 3\n  set Slip criterion = tresca\n"
             "  set Adhesion = 1\nend\n"
             "subsection Boundary 1\n  set Constrained components = x, y\nend\n"
             "subsection Boundary 2\n  set Traction = 1; -1\nend\n"

@@ -48,7 +48,7 @@ namespace
            "\nend\n"
            "subsection Material 1\n"
            "  set Young's modulus = 1000\n  set Poisson's ratio = 0\nend\n"
-           "subsection Interface curve 3\n"
+           "subsection Interface 3\n"
            "  set Normal stiffness = 1e5\n  set Shear stiffness = 4e4\n" +
            interface +
            "end\n"
@@ -76,15 +76,12 @@ namespace
     return true;
   }
 
-  /// The rows of results/interface-curve-3-NNNN.csv for step @p step.
+  /// The rows of results/interface-3-NNNN.csv for step @p step.
   std::vector<std::vector<double>>
   profile(const unsigned int step)
   {
     char name[64];
-    std::snprintf(name,
-                  sizeof(name),
-                  "results/interface-curve-3-%04u.csv",
-                  step);
+    std::snprintf(name, sizeof(name), "results/interface-3-%04u.csv", step);
     std::ifstream                    in(name);
     std::string                      line;
     std::vector<std::vector<double>> rows;
@@ -216,7 +213,7 @@ main(int argc, char **argv)
       "  set Stations = 0\nend\n"
       "subsection Material 1\n"
       "  set Young's modulus = 1000\n  set Poisson's ratio = 0\nend\n"
-      "subsection Interface curve 3\n"
+      "subsection Interface 3\n"
       "  set Normal stiffness = 1e5\n  set Shear stiffness = 4e4\nend\n"
       "subsection Boundary 1\n  set Constrained components = r, z\nend\n"
       "subsection Boundary 2\n  set Traction = 0; 0; -1\nend\n"

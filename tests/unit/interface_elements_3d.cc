@@ -65,7 +65,7 @@ namespace
            "subsection Kinematics\n  set Type = 3d\nend\n"
            "subsection Material 1\n"
            "  set Young's modulus = 1000\n  set Poisson's ratio = 0\nend\n"
-           "subsection Interface curve 3\n"
+           "subsection Interface 3\n"
            "  set Normal stiffness = 1e5\n  set Shear stiffness = 4e4\n" +
            interface +
            "end\n"
@@ -103,10 +103,7 @@ namespace
   profile(const unsigned int step)
   {
     char name[64];
-    std::snprintf(name,
-                  sizeof(name),
-                  "results/interface-curve-3-%04u.csv",
-                  step);
+    std::snprintf(name, sizeof(name), "results/interface-3-%04u.csv", step);
     return run_results::read_csv(name);
   }
 
@@ -128,11 +125,11 @@ namespace
     return 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
   }
 
-  /// The sum of the patches' areas in results/interface-curve-3-0001.vtu.
+  /// The sum of the patches' areas in results/interface-3-0001.vtu.
   double
   patches_area()
   {
-    std::ifstream in("results/interface-curve-3-0001.vtu");
+    std::ifstream in("results/interface-3-0001.vtu");
     std::string   line;
     while (std::getline(in, line) && line.find("<Points>") == std::string::npos)
       ;
@@ -247,7 +244,7 @@ namespace
       "subsection Kinematics\n  set Type = 3d\nend\n"
       "subsection Material 1\n"
       "  set Young's modulus = 1000\n  set Poisson's ratio = 0\nend\n"
-      "subsection Interface curve 3\n"
+      "subsection Interface 3\n"
       "  set Normal stiffness = 1e5\n  set Shear stiffness = 4e4\n"
       "  set Slip criterion = tresca\n  set Adhesion = 1\nend\n"
       "subsection Boundary 1\n"

@@ -156,6 +156,41 @@ main()
                     ? 0.
                     : law->yield_function(s),
                   law->yield_ratio(1.01 * s));
+
+    // The mobilised strength tau_mob / tau_max: 1 on the surface and
+    // beyond it, 1/2 at half the surface's shear (the mean stress kept),
+    // in [0, 1] everywhere (1000 random states), 0 for an elastic law.
+    SymmetricTensor<2, 3> half_compression = compression;
+    const double          mean             = compression[2][2] / 2;
+    half_compression[2][2] = mean + (compression[2][2] - mean) / 2;
+    half_compression[0][0] = mean - (compression[2][2] - mean) / 2;
+    half_compression[1][1] = half_compression[0][0];
+    // Its Mohr circle has half the radius of the uniaxial one about the
+    // same centre.
+    bool in_range = true;
+    for (unsigned int k = 0; k < 1000; ++k)
+      {
+        const SymmetricTensor<2, 3> r = random_stress(5 * c);
+        for (const MaterialLaw *law :
+             {tresca.get(), mises.get(), mohr_coulomb.get()})
+          in_range = in_range && law->mobilised_strength(r) >= 0 &&
+                     law->mobilised_strength(r) <= 1;
+      }
+    const auto elastic =
+      create_material_law(material(YieldCriterion::elastic, c));
+    std::printf(
+      "  mobilised strength: on the surfaces %.12f %.12f %.12f, 1%% "
+      "outside %.12f, at half the shear %.12f %.12f %.12f, elastic %g; in "
+      "[0, 1] for 1000 random states: %s\n",
+      tresca->mobilised_strength(shear),
+      mises->mobilised_strength(shear),
+      mohr_coulomb->mobilised_strength(compression),
+      mohr_coulomb->mobilised_strength(1.01 * compression),
+      tresca->mobilised_strength(0.5 * shear),
+      mises->mobilised_strength(0.5 * shear),
+      mohr_coulomb->mobilised_strength(half_compression),
+      elastic->mobilised_strength(shear),
+      yes_no(in_range));
   }
 
   std::printf("\nFlow directions against central differences "

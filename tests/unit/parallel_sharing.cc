@@ -15,7 +15,7 @@
 //    the same on every rank.
 // 3. Profile values (sum_over_ranks()): every rank receives each sample's
 //    values from the rank that computed them, every member and the flag,
-//    a NaN yield ratio too.
+//    a NaN mobilised strength too.
 // 4. An InputError met by rank 0 in on_root() is thrown on every rank with
 //    the same file, entry and expectation; rank 0's text reaches all.
 // Each rank checks; rank 0 prints whether every rank's check held.
@@ -216,7 +216,7 @@ main(int argc, char **argv)
     const unsigned int n_samples = 50;
     const auto owner = [n](const unsigned int k) { return (7 * k) % n; };
     // Sample k's values at its owner: k + j / 10 for member j, the flag
-    // set for odd k, the yield ratio NaN for every fifth.
+    // set for odd k, the mobilised strength NaN for every fifth.
     const auto expected = [](const unsigned int k) {
       const double    x = k;
       InterfaceValues v{x + 0.0,
@@ -249,8 +249,8 @@ main(int argc, char **argv)
           v.shear_traction == e.shear_traction &&
           v.shear_traction_out_of_plane == e.shear_traction_out_of_plane &&
           v.normal_traction == e.normal_traction &&
-          (k % 5 == 0 ? std::isnan(v.yield_ratio)
-                      : v.yield_ratio == e.yield_ratio) &&
+          (k % 5 == 0 ? std::isnan(v.mobilised_strength)
+                      : v.mobilised_strength == e.mobilised_strength) &&
           v.plastic == e.plastic;
       }
     truths::expect_everywhere(owners, "every sample's values are its owner's");

@@ -104,9 +104,9 @@ namespace
       std::to_string(n) + ", n_radial=" + std::to_string(n_radial) +
       ", growth=" + std::to_string(std::pow(1.2, 20. / n_radial)) +
       (zero_thickness ? ", zero_thickness=1" : "");
-    const std::string strength = (zero_thickness ? "Interface curve 4/Adhesion="
-                                                 : "Material 2/Cohesion=") +
-                                 std::to_string(alpha);
+    const std::string strength =
+      (zero_thickness ? "Interface 4/Adhesion=" : "Material 2/Cohesion=") +
+      std::to_string(alpha);
     return run_results::run_prm(zero_thickness
                                   ? "circular-inclusion-zero-thickness.prm"
                                   : "circular-inclusion.prm",
@@ -135,7 +135,7 @@ main()
           run_results::summary_number("results", "last_converged_load") *
           (zero_thickness ? 1.02 : 1.);
         const double from_profile = zero_thickness
-                                      ? profile_load("interface-curve-4-", 3)
+                                      ? profile_load("interface-4-", 3)
                                       : profile_load("layer-2-", 2);
         std::printf("%s, alpha = %g: exact %.3f; errors %+.2f%% on 6, %+.2f%% "
                     "on 12 cells per quarter\n",

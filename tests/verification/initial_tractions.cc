@@ -73,7 +73,7 @@ namespace
   {
     return "subsection Mesh\n  set File = block.geo\nend\n" +
            material(1, k0_below) + material(2, k0_above) +
-           "subsection Interface curve 5\n  set Normal stiffness = 1e8\n"
+           "subsection Interface 5\n  set Normal stiffness = 1e8\n"
            "  set Shear stiffness = 1e8\n  set Slip criterion = mohr-coulomb\n"
            "  set Adhesion = 0\n  set Friction angle = " +
            std::to_string(phi) +
@@ -118,10 +118,9 @@ main()
 
   failure = run_results::run_text(scene(0.6, 0.6, 2));
   std::printf("inclined interface, phi = 2: %s\n", failure.c_str());
-  expect(failure.find("Interface curve 5/Friction angle") !=
-             std::string::npos &&
+  expect(failure.find("Interface 5/Friction angle") != std::string::npos &&
            failure.find("outside its slip surface") != std::string::npos,
-         "refused, naming Interface curve 5/Friction angle");
+         "refused, naming Interface 5/Friction angle");
 
   write_mesh(0.5, 0.5);
   failure   = run_results::run_text(scene(0.5, 0.7, 30));
@@ -132,7 +131,7 @@ main()
   expect(failure.empty(), "the run succeeds" + failure);
   expect(imbalance < 1e-10, "the tractions balance the stresses beside them");
   double     worst = 0;
-  const auto rows = run_results::read_csv("results/interface-curve-5-0001.csv");
+  const auto rows  = run_results::read_csv("results/interface-5-0001.csv");
   expect(rows.size() > 8, "the interface's profile has its points");
   for (const auto &row : rows)
     {

@@ -176,7 +176,7 @@ main()
       std::vector<std::string> arguments = {
         std::string(SOURCE_DIR) + "/../../prm/sliding-block.prm",
         "-s",
-        "Interface curve 4/Friction angle=" + std::to_string(delta),
+        "Interface 4/Friction angle=" + std::to_string(delta),
         "-s",
         "Monitors/Load scale=" + std::string(scale),
         "-s",

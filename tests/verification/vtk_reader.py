@@ -273,7 +273,7 @@ def check_run(label, directory, exact):
     profile = {"slip": 1, "slip_out_of_plane": 1, "opening": 1,
                "slip_increment": 1, "opening_increment": 1,
                "shear_traction": 1, "shear_traction_out_of_plane": 1,
-               "normal_traction": 1, "yield_ratio": 1, "plastic": 1}
+               "normal_traction": 1, "mobilised_strength": 1, "plastic": 1}
     tol = 1e-8  # ASCII with 10 significant digits in the layer's VTU
     for name in layer_files:
         load = load_of_step.get(int(name[-8:-4]), math.nan)

@@ -3,10 +3,10 @@
 interface elements.
 
 Reads OUTPUT_DIR/layer-<id>-NNNN.csv (a thin layer the scene names in
-Layers/Material ids) or interface-curve-<id>-NNNN.csv (zero-thickness
-interface elements on an Interface curve), and history.csv, and writes one
-chart per interface, layer-<id>.png or interface-curve-<id>.png: slip, opening,
-shear and normal traction
+Layers/Material ids) or interface-<id>-NNNN.csv (zero-thickness
+interface elements, an Interface <id> section), and history.csv, and writes one
+chart per interface, layer-<id>.png or interface-<id>.png: slip, opening,
+shear and normal traction and the mobilised strength tau_mob / tau_max
 against arc length along the layer, at a few load steps. Converged,
 accepted steps are solid lines, plastic points filled. A step that ended
 the run without an accepted state (a failure) is drawn apart: its tractions
@@ -28,7 +28,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 from thinlayer_tools import results  # noqa: E402
 
 
-SERIES = re.compile(r"((?:layer|interface-curve)-\d+)-(\d+)\.csv$")
+SERIES = re.compile(r"((?:layer|interface)-\d+)-(\d+)\.csv$")
 
 
 def profile_files(directory, series):
@@ -42,7 +42,7 @@ def profile_files(directory, series):
 
 
 def all_series(directory):
-    """The interfaces written: layer-<id> and interface-curve-<id>."""
+    """The interfaces written: layer-<id> and interface-<id>."""
     names = set()
     for path in glob.glob(os.path.join(directory, "*.csv")):
         match = SERIES.search(path)
@@ -74,7 +74,7 @@ def plot(directory, series, steps, angle, count):
     files = profile_files(directory, series)
     if not files:
         raise SystemExit("no %s-NNNN.csv in %s: does the scene name the layer "
-                         "in Interfaces/Material ids, or have an Interface curve "
+                         "in Interfaces/Material ids, or have an Interface "
                          "section?" % (series, directory))
     if steps:
         missing = [s for s in steps if s not in files]
@@ -86,11 +86,12 @@ def plot(directory, series, steps, angle, count):
     else:
         accepted, failed = chosen_steps(rows, files, count)
 
-    figure, axes = plt.subplots(2, 2, figsize=(11, 7.5), sharex=True)
-    panels = [("slip", "slip (relative tangential displacement)"),
-              ("opening", "opening (relative normal displacement)"),
-              ("shear_traction", "shear traction"),
-              ("normal_traction", "normal traction (tension +)")]
+    figure, axes = plt.subplots(3, 2, figsize=(11, 10), sharex=True)
+    panels = [("slip", "slip (relative tangential displacement)\n(scene units)"),
+              ("opening", "opening (relative normal displacement)\n(scene units)"),
+              ("shear_traction", "shear traction\n(scene units)"),
+              ("normal_traction", "normal traction (tension +)\n(scene units)"),
+              ("mobilised_strength", "mobilised strength\ntau_mob / tau_max (-)")]
     colours = plt.get_cmap("viridis")
     drawn = [(s, False) for s in accepted] + [(s, True) for s in failed]
     profiles = {}
@@ -134,15 +135,21 @@ def plot(directory, series, steps, angle, count):
                     axis.plot(*zip(*elastic), "o", color=colour, markersize=4,
                               markerfacecolor="white")
     for axis, (_, title) in zip(axes.flat, panels):
-        axis.set_ylabel(title + "\n(scene units)")
+        axis.set_ylabel(title)
         axis.axhline(0, color="grey", linewidth=0.5)
         axis.grid(alpha=0.3)
-    for axis in axes[1]:
+    # The mobilised strength lies in [0, 1]: 1 where the interface yields.
+    axes.flat[4].axhline(1, color="k", linewidth=0.8)
+    axes.flat[4].set_ylim(-0.05, 1.1)
+    axes.flat[5].set_visible(False)
+    axes.flat[3].xaxis.set_tick_params(labelbottom=True)
+    for axis in (axes.flat[3], axes.flat[4]):
         axis.set_xlabel("arc length along the interface (mesh length units)")
     axes.flat[0].legend(fontsize=8)
     where = " at %g degrees" % angle if angle else ""
-    kind = ("zero-thickness elements on curve %s" % series.split("-")[-1]
-            if "curve" in series else "thin layer, material id %s" % series.split("-")[-1])
+    kind = ("zero-thickness elements, Interface %s" % series.split("-")[-1]
+            if series.startswith("interface") else
+            "thin layer, material id %s" % series.split("-")[-1])
     figure.suptitle("Interface (%s)%s: %s\nfilled markers: plastic; open: elastic"
                     % (kind, where, os.path.basename(os.path.normpath(directory))))
     figure.tight_layout()
@@ -158,7 +165,7 @@ def main():
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("directory", help="a run's results directory")
     parser.add_argument("--series", action="append",
-                        help="layer-<id> (a thin layer) or interface-curve-<id> "
+                        help="layer-<id> (a thin layer) or interface-<id> "
                              "(zero-thickness elements); default: every one written")
     parser.add_argument("--steps", type=int, nargs="+",
                         help="load steps to draw (default: a few accepted steps "
@@ -172,8 +179,8 @@ def main():
         raise SystemExit("%s is not a results directory" % arguments.directory)
     names = arguments.series or all_series(arguments.directory)
     if not names:
-        raise SystemExit("no layer-*-NNNN.csv or interface-curve-*-NNNN.csv in %s: name a "
-                         "thin layer in Layers/Material ids, or add an Interface curve "
+        raise SystemExit("no layer-*-NNNN.csv or interface-*-NNNN.csv in %s: name a "
+                         "thin layer in Layers/Material ids, or add an Interface "
                          "section" % arguments.directory)
     for series in names:
         plot(arguments.directory, series, arguments.steps, arguments.angle,

@@ -37,7 +37,7 @@ def overrides(kind, alpha, n, curved):
     n_radial = 5 * n // 3
     geometry = "radius=1, thickness=0.02, outer=20, n_around=%d, n_radial=%d, growth=%.10g%s" % (
         n, n_radial, 1.2 ** (20 / n_radial), ", zero_thickness=1" if kind == "interface" else "")
-    strength = ("Interface curve 4/Adhesion=%g" if kind == "interface"
+    strength = ("Interface 4/Adhesion=%g" if kind == "interface"
                 else "Material 2/Cohesion=%g") % alpha
     return ("Mesh/Geometry parameters=" + geometry, strength,
             "Mesh/Curved cells=%s" % ("true" if curved else "false"),

@@ -63,7 +63,7 @@ def integrals(directory):
     (three per cell side): the shaft's shear, the shear below the toe, the
     normal traction on the shaft, the worst departure from Coulomb's law,
     each force divided by the beta method's estimate; and the samples."""
-    last = sorted(glob.glob(os.path.join(directory, "interface-curve-6-*.csv")))[-1]
+    last = sorted(glob.glob(os.path.join(directory, "interface-6-*.csv")))[-1]
     rows = sorted(results.read_csv(last), key=lambda r: float(r["y"]))
     tan_delta = math.tan(math.radians(DELTA))
     shaft = below = normal = worst = largest = 0.0

@@ -106,7 +106,7 @@ def strength_reduction(runs, quick):
            "degrees (phi = 30, associated flow; prm/%s.prm) slides by statics when "
            "tan(phi) / F = tan(beta): asked from below, within 1.5%% on the file's mesh and "
            "closer when the elements and the seam are halved, and as zero-thickness Coulomb "
-           "interface elements (Strength reduction/Interface curves; prm/%s.prm), whose "
+           "interface elements (Strength reduction/Interfaces; prm/%s.prm), whose "
            "tractions are admissible so that F cannot exceed it, within 1%% below. %s The "
            "paper's method, with "
            "its 250 iterations and TOL 1e-4, stops converging below the default method's "

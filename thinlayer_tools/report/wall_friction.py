@@ -47,7 +47,7 @@ def passive_bracket(delta):
 
 def friction(kind, delta):
     if kind == "interface":
-        return "Interface curve 6/Friction angle=%r" % delta
+        return "Interface 6/Friction angle=%r" % delta
     return "Material 2/Friction angle=%r" % math.degrees(
         math.asin(math.tan(math.radians(delta))))
 

@@ -26,7 +26,7 @@ namespace thinlayer
    * that is not level (a boundary face facing upward that is not
    * horizontal at the top level: a slope, a step, a structure above the
    * ground) is refused. The sides of zero-thickness interface elements
-   * (boundary faces of the split mesh with an Interface curve's id) are
+   * (boundary faces of the split mesh with an Interface section's id) are
    * inside the body, not ground.
    *
    * The weight above a point is summed exactly over the cells the

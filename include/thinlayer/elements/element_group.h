@@ -62,7 +62,7 @@ namespace thinlayer
     std::function<void(const std::vector<types::global_dof_index> &)>;
 
   /// A profile along a line of an element group, with the name of its
-  /// output files (e.g. "interface-curve-3").
+  /// output files (e.g. "interface-3").
   struct NamedProfile
   {
     std::string name;
@@ -221,7 +221,7 @@ namespace thinlayer
   /**
    * The element groups of the scene that @p parameters describe, on the
    * DoFs of @p dof_handler: the continuum cells first (with @p quadrature),
-   * then the interface elements along the Interface curve sections, if
+   * then the interface elements along the Interface sections, if
    * any; each with the points of the cells that @p partition gives this
    * rank (every cell where it names no owners). The interface elements
    * join @p facing_sides, found on the whole mesh, whose cells

@@ -96,7 +96,7 @@ namespace thinlayer
       const CellPartition                                            &partition,
       const std::string &parameter_file);
 
-    /// The laws of the curves of @p reduced (Interface curves) with their
+    /// The laws of the curves of @p reduced (Interfaces) with their
     /// adhesion and tan(phi) divided by @p factor, the dilation angle at
     /// most the reduced friction angle; the other curves' as given.
     void
@@ -197,7 +197,7 @@ namespace thinlayer
     void
     add_coupled_tangent(const CellMatrixSink &add) override;
 
-    /// One profile per interface, "interface-curve-<id>".
+    /// One profile per interface, "interface-<id>".
     std::vector<NamedProfile>
     profiles(const ModeVectors &solution,
              const ModeVectors &step_increment,

@@ -39,9 +39,10 @@ namespace thinlayer
     double shear_traction;
     double shear_traction_out_of_plane;
     double normal_traction;
-    /// The largest yield ratio across the layer's thickness (NaN for an
-    /// elastic material).
-    double yield_ratio;
+    /// The mobilised strength tau_mob / tau_max in [0, 1]
+    /// (MaterialLaw::mobilised_strength()), the largest across a layer's
+    /// thickness; 0 for an elastic material.
+    double mobilised_strength;
     /// Whether a Gauss point across the thickness yields.
     bool plastic;
   };

@@ -75,6 +75,12 @@ namespace thinlayer
     double
     yield_ratio(const Tensor<1, 3> &traction) const;
 
+    /// The mobilised strength |tau| / (c - sigma_n tan(phi)) in [0, 1],
+    /// as MaterialLaw::mobilised_strength(): 1 at or beyond the tension
+    /// cut-off, 0 for an elastic law.
+    double
+    mobilised_strength(const Tensor<1, 3> &traction) const;
+
     /// dQ/dt of the active surface (the larger function) at @p traction.
     Tensor<1, 3>
     flow_direction(const Tensor<1, 3> &traction) const;

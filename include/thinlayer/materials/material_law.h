@@ -97,6 +97,16 @@ namespace thinlayer
     yield_ratio(const SymmetricTensor<2, 3> &stress) const;
 
     /**
+     * The mobilised strength tau_mob / tau_max in [0, 1] (PLAXIS's
+     * relative shear stress): the shear stress in use over the shear
+     * strength available at @p stress, 1 on the yield surface (and beyond
+     * a cohesionless apex, where no shear strength is left), 0 for a law
+     * that cannot yield, which has no strength to mobilise.
+     */
+    virtual double
+    mobilised_strength(const SymmetricTensor<2, 3> &stress) const;
+
+    /**
      * The largest pseudo time step for which viscoplastic strain
      * iterations are stable with this law (infinite if it cannot yield).
      */

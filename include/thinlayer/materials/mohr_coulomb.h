@@ -49,6 +49,9 @@ namespace thinlayer
     yield_ratio(const SymmetricTensor<2, 3> &stress) const override;
 
     double
+    mobilised_strength(const SymmetricTensor<2, 3> &stress) const override;
+
+    double
     viscoplastic_time_step() const override;
 
     bool

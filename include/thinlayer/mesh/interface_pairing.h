@@ -48,7 +48,7 @@ namespace thinlayer
    * each run from its end nearest the lower left (x before y), as
    * LayerProfile orders a thin layer; on surfaces in the order of the
    * cells. Throws InputError (naming @p parameter_file and the interface's
-   * "Interface curve <id>" section) for a side that faces none, or an id
+   * "Interface <id>" section) for a side that faces none, or an id
    * the mesh does not have.
    */
   template <int dim>

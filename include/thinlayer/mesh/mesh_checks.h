@@ -44,7 +44,7 @@ namespace thinlayer
    * body, between two cells, where a boundary id means nothing: refused,
    * naming the physical group and what it may be instead (a boundary, or
    * interface elements with their section). @p interface_section is the
-   * name of that section ("Interface curve" or "Interface").
+   * name of that section ("Interface").
    */
   void
   check_physical_faces_on_boundary(const MshFile     &mesh,

@@ -3,7 +3,7 @@
 
 #include <deal.II/base/data_out_base.h>
 
-#include <thinlayer/analysis/analysis.h>
+#include <thinlayer/analysis/analysis_view.h>
 #include <thinlayer/parameters/parameters.h>
 #include <thinlayer/postprocess/displacement_measure.h>
 #include <thinlayer/postprocess/layer_profile.h>
@@ -36,7 +36,7 @@ namespace thinlayer
     /// Whether the attempt's state was accepted.
     bool accepted;
     /// The attempt's secant stiffness along its increment against the
-    /// elastic one (Analysis::secant_stiffness_ratio()).
+    /// elastic one (AnalysisView::secant_stiffness_ratio()).
     double stiffness_ratio;
     /// The phase of the run (Phase): "initial state" or "loading".
     std::string phase;
@@ -81,7 +81,7 @@ namespace thinlayer
     write_fields(const unsigned int                    step,
                  const double                          load_factor,
                  const bool                            on_curve,
-                 const Analysis<dim>                  &analysis,
+                 const AnalysisView<dim>              &analysis,
                  const double                          theta,
                  const std::vector<LayerProfile<dim>> &interfaces);
 
@@ -89,14 +89,17 @@ namespace thinlayer
      * The profile of every one of @p interfaces at load step @p step
      * (load factor @p load_factor), as `layer-<id>-NNNN.csv`, and of
      * every curve of zero-thickness elements as
-     * `interface-curve-<id>-NNNN.csv`; @p with_vtu, also each as a VTU
-     * polyline, listed in `layer-<id>.pvd` and `interface-curve-<id>.pvd`.
+     * `interface-<id>-NNNN.csv`; @p with_vtu, also each as a VTU
+     * polyline, listed in `layer-<id>.pvd` and `interface-<id>.pvd` if
+     * the state is @p on_curve (as write_fields()), else in
+     * `layer-<id>-attempts.pvd` and `interface-<id>-attempts.pvd`.
      */
     template <int dim>
     void
     write_interface_profiles(const unsigned int                    step,
                              const double                          load_factor,
-                             const Analysis<dim>                  &analysis,
+                             const bool                            on_curve,
+                             const AnalysisView<dim>              &analysis,
                              const std::vector<LayerProfile<dim>> &interfaces,
                              const bool                            with_vtu);
 
@@ -107,11 +110,11 @@ namespace thinlayer
      * Every rank takes part.
      */
     void
-    write_revolved_view(const unsigned int step,
-                        const double       load_factor,
-                        const bool         on_curve,
-                        const Analysis<2> &analysis,
-                        const unsigned int slices);
+    write_revolved_view(const unsigned int     step,
+                        const double           load_factor,
+                        const bool             on_curve,
+                        const AnalysisView<2> &analysis,
+                        const unsigned int     slices);
 
     /**
      * Vertex positions, displacements and the last step's displacement
@@ -123,8 +126,8 @@ namespace thinlayer
      */
     template <int dim>
     void
-    write_displacements(const Analysis<dim> &analysis,
-                        const double         theta) const;
+    write_displacements(const AnalysisView<dim> &analysis,
+                        const double             theta) const;
 
     /// Any other file (the mesh, the parameters), written whole.
     void

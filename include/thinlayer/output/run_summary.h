@@ -73,7 +73,7 @@ namespace thinlayer
     std::string  initial_state_reason;
     unsigned int initial_state_steps = 0;
     /// The K0 procedure's out-of-balance force against the weight it
-    /// carries (Analysis::set_initial_stresses()); NaN otherwise.
+    /// carries (StepAccess::set_initial_stresses()); NaN otherwise.
     double initial_out_of_balance = std::numeric_limits<double>::quiet_NaN();
     /// The monitored load and displacement the loading starts from (after
     /// an initial state; 0 without): where its load-displacement curve
@@ -102,7 +102,9 @@ namespace thinlayer
     double last_converged_load;
     double first_failed_load;
     double reference_load;
-    double relative_error;
+    /// Reference/Analytic bracket: {"low", "high"}, empty for none.
+    std::map<std::string, double> reference_bracket;
+    double                        relative_error;
     /// The displacement measure at the last converged state, where the
     /// collapse load is read (not at a failed step or a probe beyond it,
     /// whose displacements run away); NaN where no state converged.
@@ -205,6 +207,7 @@ namespace thinlayer
       visitor("last_converged_load", last_converged_load);
       visitor("first_failed_load", first_failed_load);
       visitor("reference_load", reference_load);
+      visitor("reference_bracket", reference_bracket);
       visitor("relative_error", relative_error);
       visitor("final_displacement", final_displacement);
       visitor("final_displacement_min", final_displacement_min);

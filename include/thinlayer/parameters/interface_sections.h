@@ -36,7 +36,7 @@ namespace thinlayer
   };
 
   /**
-   * "Interface curve <id>", one per gmsh physical curve that carries
+   * "Interface <id>", one per gmsh physical curve that carries
    * zero-thickness (Goodman-type) interface elements: the mesh is split
    * along the curve when read, and each pair of facing cell sides is
    * coupled by an InterfaceLaw.

@@ -137,7 +137,7 @@ namespace thinlayer
     /// The materials and the curves of interface elements whose strength
     /// is reduced; none of either: no such phase.
     std::set<types::material_id> materials;
-    std::set<types::boundary_id> interface_curves;
+    std::set<types::boundary_id> interfaces;
     /// Increments of F, from 1.
     std::vector<double> factor_increments;
 
@@ -157,7 +157,7 @@ namespace thinlayer
     bool
     active() const
     {
-      return !materials.empty() || !interface_curves.empty();
+      return !materials.empty() || !interfaces.empty();
     }
 
     static void

@@ -179,8 +179,13 @@ namespace thinlayer
    */
   struct ReferenceParameters
   {
-    /// Evaluated from the geometry parameters; NaN where none is declared.
+    /// Evaluated from the geometry parameters and the Variables; the
+    /// middle of analytic_bracket where only that is given; NaN where
+    /// neither is.
     double analytic_load;
+    /// Bounds known to hold the exact value (limit analysis brackets it
+    /// where no closed form is known): {"low", "high"}, empty for none.
+    std::map<std::string, double> analytic_bracket;
     /// The outcome the run must end in; empty for any.
     std::string expected_outcome;
     /// The range, as multiples of analytic_load (in load units where there
@@ -202,6 +207,14 @@ namespace thinlayer
     parse(ParameterHandler     &prm,
           const std::string    &parameter_file,
           const MeshParameters &mesh);
+
+  private:
+    /// The names Reference/Variables binds, with this run's values of the
+    /// entries they name.
+    static std::map<std::string, double>
+    variables(ParameterHandler  &prm,
+              const std::string &text,
+              const std::string &parameter_file);
   };
 
   /// "Output": where results go and which.
