@@ -300,7 +300,9 @@ namespace thinlayer
               warn("command line '" + o + "'", "section", section, name);
               o = name + o.substr(slash);
             }
-          const auto        equal     = o.find('=');
+          const auto equal = o.find('=');
+          if (equal == std::string::npos)
+            continue; // apply_override() refuses it
           const auto        slash_now = o.find('/');
           const std::string owner     = Utilities::trim(o.substr(0, slash_now));
           const std::string entry =

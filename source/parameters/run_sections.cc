@@ -486,6 +486,13 @@ namespace thinlayer
     prm.leave_subsection();
     const std::map<std::string, double> bound_values =
       variables(prm, bound, file);
+    for (const auto &[name, value] : bound_values)
+      if (mesh.geometry_parameters.count(name) != 0)
+        throw InputError(file,
+                         "Reference/Variables",
+                         "'" + name +
+                           "' is a geometry parameter too; expected a name "
+                           "of its own");
     prm.enter_subsection("Reference");
 
     analytic_load = std::numeric_limits<double>::quiet_NaN();

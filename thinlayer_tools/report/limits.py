@@ -12,12 +12,12 @@ from thinlayer_tools.report.page import Section
 # ways of driving a footing.
 RESOLUTION = 0.005
 
-# footing: (parameter files' stem, title, classical limit / c, its source)
+# footing: (parameter files' stem, title, the classical limit's source); the
+# limit itself is the files' Reference/Analytic load, read from the runs.
 FOOTINGS = {
-    "strip": ("strip-footing-rigid", "rough rigid strip footing", 2 + 3.141592653589793,
-              "(2 + pi) c, Prandtl"),
-    "circular": ("circular-footing-rigid", "rough rigid circular footing (harmonic 0)", 6.05,
-                 "6.05 c, Eason and Shield 1960"),
+    "strip": ("strip-footing-rigid", "rough rigid strip footing", "Prandtl"),
+    "circular": ("circular-footing-rigid", "rough rigid circular footing (harmonic 0)",
+                 "Eason and Shield 1960"),
 }
 CONTROLS = ("load", "settlement")
 
@@ -41,14 +41,21 @@ def run_list(quick):
             for control in CONTROLS]
 
 
-def pairs(quick):
+def classical(runs, footing):
+    """The classical limit / c of @p footing, as its files state it, and
+    its source."""
+    value = runs.summary(run_name(footing, "load", 1))["reference_load"]
+    return value, "%.4g c, %s" % (value, FOOTINGS[footing][2])
+
+
+def pairs(runs, quick):
     """(title, level, run under load, run under displacement, classical
     value or None, its source) of every comparison: the rigid footings at
     each level, and Case 3's stiff footing pushed sideways (the report's
     runs case3-default and case3-displacement, the same mesh)."""
     rows = [(title, level, run_name(footing, "load", level),
-             run_name(footing, "settlement", level), classical, source)
-            for footing, (stem, title, classical, source) in FOOTINGS.items()
+             run_name(footing, "settlement", level)) + classical(runs, footing)
+            for footing, (stem, title, _) in FOOTINGS.items()
             for level in levels(quick)]
     rows.append(("Case 3's footing, lateral (harmonics 1, 3)", 1, "case3-default",
                  "case3-displacement", None, "no closed form; the paper: about 1.2"))
@@ -61,7 +68,7 @@ def limit_not_knee(runs, quick):
               "knee below collapse", "collapse against classical",
               "wall s (load, displacement)"]]
     disagreements, gaps = [], []
-    for title, level, by_load_run, by_displacement_run, classical, source in pairs(quick):
+    for title, level, by_load_run, by_displacement_run, limit, source in pairs(runs, quick):
         load = runs.summary(by_load_run)
         settled = runs.summary(by_displacement_run)
         by_load, by_settlement = results.collapse_load(load), results.collapse_load(settled)
@@ -78,20 +85,21 @@ def limit_not_knee(runs, quick):
                       if by_load and by_settlement else "-",
                       "%.2f%%" % (100 * (1 - knee / by_load)) if by_load and knee == knee
                       else "-",
-                      "%+.2f%% (%s)" % (100 * (by_load / classical - 1), source)
-                      if by_load and classical else source,
+                      "%+.2f%% (%s)" % (100 * (by_load / limit - 1), source)
+                      if by_load and limit else source,
                       "%.1f, %.1f" % (load["wall_seconds"], settled["wall_seconds"])])
     fig, axes = plt.subplots(1, 2, figsize=(10, 4))
-    for ax, (footing, (stem, title, classical, source)) in zip(axes, FOOTINGS.items()):
+    for ax, (footing, (stem, title, _)) in zip(axes, FOOTINGS.items()):
+        limit, source = classical(runs, footing)
         for control, style in (("load", "o-"), ("settlement", ".-")):
             figures.curve(ax, runs.path(run_name(footing, control, 1)),
                           "by " + control, marker=style[0], ms=3)
         knee = results.number(runs.summary(run_name(footing, "load", 1)).get("knee_load"))
         if knee == knee:
             ax.axhline(knee, color="grey", ls=":", lw=1.2, label="knee under load")
-        ax.axhline(classical, color="k", ls="--", lw=1, label=source)
+        ax.axhline(limit, color="k", ls="--", lw=1, label=source)
         # Near the limit, where the knee and the plateau part.
-        ax.set_ylim(0.85 * classical, 1.1 * classical)
+        ax.set_ylim(0.85 * limit, 1.1 * limit)
         ax.set_title(title + ", level 1", fontsize=9)
         ax.set_xlabel("settlement E u / (c B)" if footing == "strip" else
                       "settlement E u / (c R)")
@@ -99,7 +107,7 @@ def limit_not_knee(runs, quick):
         ax.grid(alpha=0.3)
         figures.failure_legend(ax, fontsize=7, loc="lower right")
     fig.tight_layout()
-    names = [name for pair in pairs(quick) for name in pair[2:4]]
+    names = [name for pair in pairs(runs, quick) for name in pair[2:4]]
     why = ("A rough rigid footing (a block 1000 times stiffer than the soil) on weightless "
            "Tresca soil (loads and pressures per c), default method, driven two ways: a "
            "pressure on its top (load control, automatic stepping) and a prescribed "
