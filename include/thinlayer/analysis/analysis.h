@@ -60,7 +60,7 @@ namespace thinlayer
    * The outputs read the DoFs of each rank's own cells and gather what one
    * file holds on rank 0. What spans the ranks is set up on the whole mesh
    * before it is split (the facing sides of interface elements, the runs
-   * of a layer's profile): whole_mesh().
+   * of a layer's profile): get_whole_mesh().
    *
    * Its callers see it through three interfaces, each wider than the
    * one before: postprocessing and output read it (AnalysisView); a
@@ -397,7 +397,7 @@ namespace thinlayer
     /// On many ranks: the rank of every cell, and the DoFs each rank owns
     /// (contiguous, in rank order).
     CellPartition partition;
-    /// The same over the cells of whole_mesh().
+    /// The same over the cells of get_whole_mesh().
     CellPartition         whole_partition;
     std::vector<IndexSet> owned_per_rank;
     /// The DoFs of this rank's cells and of its ghost cells: the lines its
