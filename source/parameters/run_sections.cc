@@ -10,6 +10,8 @@
 #include <cctype>
 #include <cmath>
 #include <limits>
+#include <set>
+#include <sstream>
 
 // The sections that describe a run of the model: solver, monitors,
 // reference and output (the loading and the initial state have
@@ -600,6 +602,15 @@ namespace thinlayer
   {
     std::map<std::string, double> values;
     const std::string             entry = "Reference/Variables";
+    if (Utilities::trim(text).empty())
+      return values;
+    // The entries this run declares, by their paths.
+    std::ostringstream listing;
+    prm.print_parameters(listing, ParameterHandler::ShortPRM);
+    std::set<std::string> declared;
+    for (const auto &[line, path] :
+         set_entries(parameter_lines(listing.str(), file)))
+      declared.insert(path);
     for (const auto &item : Utilities::split_string_list(text, ';'))
       {
         const auto        equal = item.find('=');
@@ -624,20 +635,17 @@ namespace thinlayer
                            entry,
                            "expected '" + name + " = Section/Entry', got '" +
                              item + "'");
-        std::string  value;
-        unsigned int entered = 0;
-        try
+        // Only a declared entry is read: deal.II's debug library stops the
+        // program on a get() of any other.
+        std::string value;
+        if (declared.count(path) != 0)
           {
-            for (; entered + 1 < parts.size(); ++entered)
-              prm.enter_subsection(parts[entered]);
+            for (unsigned int k = 0; k + 1 < parts.size(); ++k)
+              prm.enter_subsection(parts[k]);
             value = prm.get(parts.back());
+            for (unsigned int k = 0; k + 1 < parts.size(); ++k)
+              prm.leave_subsection();
           }
-        catch (const ExceptionBase &)
-          {
-            value = "";
-          }
-        for (; entered > 0; --entered)
-          prm.leave_subsection();
         double number = 0;
         if (!to_number(value, number) || !std::isfinite(number))
           throw InputError(file,
