@@ -3,6 +3,7 @@
 
 #include <thinlayer/parameters/interface_sections.h>
 #include <thinlayer/parameters/loading_sections.h>
+#include <thinlayer/parameters/reference_section.h>
 #include <thinlayer/parameters/run_sections.h>
 #include <thinlayer/parameters/scene_sections.h>
 #include <thinlayer/parameters/sweep_section.h>
@@ -26,9 +27,9 @@ namespace thinlayer
    * Patterns::Selection, its parsing and the name written into results.
    *
    * The sections are declared in scene_sections.h, interface_sections.h,
-   * run_sections.h and sweep_section.h, each implemented in the source file
-   * of its name; ParameterReader (parameter_reader.h) reads a file into
-   * Parameters.
+   * run_sections.h, reference_section.h and sweep_section.h, each implemented
+   * in the source file of its name; ParameterReader (parameter_reader.h) reads
+   * a file into Parameters.
    */
 
   /**
