@@ -18,6 +18,7 @@
 
 #include <thinlayer/materials/material_law.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -178,18 +179,22 @@ main()
       }
     const auto elastic =
       create_material_law(material(YieldCriterion::elastic, c));
+    const double surfaces = std::max(
+      {std::abs(tresca->mobilised_strength(shear) - 1),
+       std::abs(mises->mobilised_strength(shear) - 1),
+       std::abs(mohr_coulomb->mobilised_strength(compression) - 1),
+       std::abs(mohr_coulomb->mobilised_strength(1.01 * compression) - 1)});
+    const double halves = std::max(
+      {std::abs(tresca->mobilised_strength(0.5 * shear) - 0.5),
+       std::abs(mises->mobilised_strength(0.5 * shear) - 0.5),
+       std::abs(mohr_coulomb->mobilised_strength(half_compression) - 0.5)});
     std::printf(
-      "  mobilised strength: on the surfaces %.12f %.12f %.12f, 1%% "
-      "outside %.12f, at half the shear %.12f %.12f %.12f, elastic %g; in "
-      "[0, 1] for 1000 random states: %s\n",
-      tresca->mobilised_strength(shear),
-      mises->mobilised_strength(shear),
-      mohr_coulomb->mobilised_strength(compression),
-      mohr_coulomb->mobilised_strength(1.01 * compression),
-      tresca->mobilised_strength(0.5 * shear),
-      mises->mobilised_strength(0.5 * shear),
-      mohr_coulomb->mobilised_strength(half_compression),
-      elastic->mobilised_strength(shear),
+      "  mobilised strength: on the surfaces and 1%% outside 1 to 1e-12: %s; "
+      "at half the shear 1/2 to 1e-12: %s; elastic 0: %s; in [0, 1] for "
+      "1000 random states: %s\n",
+      yes_no(surfaces < 1e-12),
+      yes_no(halves < 1e-12),
+      yes_no(elastic->mobilised_strength(shear) == 0),
       yes_no(in_range));
   }
 
