@@ -1,11 +1,18 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/petsc_vector.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/sparsity_tools.h>
 
 #include <thinlayer/analysis/coupled_system.h>
+#include <thinlayer/base/work_counts.h>
 #include <thinlayer/parallel/mpi.h>
 #include <thinlayer/solvers/singular_matrix.h>
 
 #include <algorithm>
+#include <cmath>
+
+#include <petscvec.h>
 
 namespace thinlayer
 {
@@ -146,52 +153,71 @@ namespace thinlayer
   CoupledSystem::factorise(
     const std::function<void(const CellMatrixSink &)> &add_matrices)
   {
+    assemble(add_matrices);
+    return factorise_assembled();
+  }
+
+
+  void
+  CoupledSystem::assemble(
+    const std::function<void(const CellMatrixSink &)> &add_matrices)
+  {
+    if (factorisation)
+      {
+        matrix = 0;
+        add_matrices([&](const std::vector<types::global_dof_index> &dofs,
+                         const FullMatrix<double> &cell_matrix) {
+          constraints.distribute_local_to_global(cell_matrix, dofs, matrix);
+        });
+        return;
+      }
+    *distributed_matrix = 0;
+    add_matrices([&](const std::vector<types::global_dof_index> &dofs,
+                     const FullMatrix<double>                   &cell_matrix) {
+      constraints.distribute_local_to_global(cell_matrix,
+                                             renumbered(dofs),
+                                             *distributed_matrix);
+    });
+    distributed_matrix->compress(VectorOperation::add);
+  }
+
+
+  bool
+  CoupledSystem::factorise_assembled()
+  {
+    held_factor = false;
     try
       {
         if (factorisation)
-          {
-            matrix = 0;
-            add_matrices([&](const std::vector<types::global_dof_index> &dofs,
-                             const FullMatrix<double> &cell_matrix) {
-              constraints.distribute_local_to_global(cell_matrix, dofs, matrix);
-            });
-            factorisation->factorize(matrix);
-          }
+          factorisation->factorize(matrix);
         else
-          {
-            *distributed_matrix = 0;
-            add_matrices([&](const std::vector<types::global_dof_index> &dofs,
-                             const FullMatrix<double> &cell_matrix) {
-              constraints.distribute_local_to_global(cell_matrix,
-                                                     renumbered(dofs),
-                                                     *distributed_matrix);
-            });
-            distributed_matrix->compress(VectorOperation::add);
-            distributed_factorisation->factorize(*distributed_matrix,
-                                                 rows_per_rank);
-          }
+          distributed_factorisation->factorize(*distributed_matrix,
+                                               rows_per_rank);
       }
     catch (const SingularMatrix &)
       {
         return false;
       }
+    held_factor = true;
     return true;
   }
 
 
+  bool
+  CoupledSystem::has_factor() const
+  {
+    return held_factor;
+  }
+
+
   void
-  CoupledSystem::solve(const ModeVectors &residual, ModeVectors &correction)
+  CoupledSystem::gather(const ModeVectors &residual)
   {
     if (factorisation)
       {
         for (unsigned int m = 0; m < n_modes; ++m)
           for (types::global_dof_index i = 0; i < n; ++i)
             vector[index(m, i)] = residual[m][i];
-        factorisation->solve(make_array_view(vector));
-        constraints.distribute(vector);
-        for (unsigned int m = 0; m < n_modes; ++m)
-          for (types::global_dof_index i = 0; i < n; ++i)
-            correction[m][i] = vector[index(m, i)];
         return;
       }
     // The rank's rows: its own DoFs of each mode in turn (index()).
@@ -199,12 +225,187 @@ namespace thinlayer
     for (unsigned int m = 0; m < n_modes; ++m)
       for (types::global_dof_index k = 0; k < n_rows; ++k)
         vector[m * n_rows + k] = residual[m].local_element(k);
-    distributed_factorisation->solve(make_array_view(vector));
+  }
+
+
+  void
+  CoupledSystem::scatter(ModeVectors &correction)
+  {
+    if (factorisation)
+      {
+        constraints.distribute(vector);
+        for (unsigned int m = 0; m < n_modes; ++m)
+          for (types::global_dof_index i = 0; i < n; ++i)
+            correction[m][i] = vector[index(m, i)];
+        return;
+      }
+    const types::global_dof_index n_rows = n_owned[mpi::rank()];
     for (unsigned int m = 0; m < n_modes; ++m)
       {
         for (types::global_dof_index k = 0; k < n_rows; ++k)
           correction[m].local_element(k) = vector[m * n_rows + k];
         distribute(*mode_constraints[m], correction[m]);
       }
+  }
+
+
+  void
+  CoupledSystem::solve(const ModeVectors &residual, ModeVectors &correction)
+  {
+    Assert(held_factor, ExcMessage("No factor is held."));
+    gather(residual);
+    if (factorisation)
+      factorisation->solve(make_array_view(vector));
+    else
+      distributed_factorisation->solve(make_array_view(vector));
+    scatter(correction);
+  }
+
+
+  namespace
+  {
+    /**
+     * Right-preconditioned GMRES on A x = b from x = 0, to |b - A x| <=
+     * @p relative_tolerance |b|, its Krylov space as long as its iteration
+     * limit (no restart: a preconditioner that needs a restart no longer
+     * serves). Returns the iterations, or nothing if it did not converge.
+     */
+    template <typename VectorType, typename MatrixType, typename Precondition>
+    std::optional<unsigned int>
+    gmres(const MatrixType   &A,
+          VectorType         &x,
+          const VectorType   &b,
+          const Precondition &preconditioner,
+          const double        relative_tolerance,
+          const unsigned int  max_iterations)
+    {
+      x                 = 0;
+      const double norm = b.l2_norm();
+      if (norm == 0)
+        return 0;
+      SolverControl                                    control(max_iterations,
+                            relative_tolerance * norm,
+                            /*log_history=*/false,
+                            /*log_result=*/false);
+      typename SolverGMRES<VectorType>::AdditionalData data(
+        max_iterations + 2, /*right_preconditioning=*/true);
+      SolverGMRES<VectorType> solver(control, data);
+      try
+        {
+          solver.solve(A, x, b, preconditioner);
+        }
+      catch (const SolverControl::NoConvergence &)
+        {
+          work_counts().krylov_iterations += control.last_step();
+          return {};
+        }
+      work_counts().krylov_iterations += control.last_step();
+      if (!std::isfinite(control.last_value()))
+        return {};
+      return control.last_step();
+    }
+
+
+    /// A preconditioner from a solve in place of an array of rows.
+    struct RowSolve
+    {
+      std::function<void(const ArrayView<double> &)> solve;
+
+      void
+      vmult(Vector<double> &dst, const Vector<double> &src) const
+      {
+        dst = src;
+        solve(make_array_view(dst));
+      }
+
+      void
+      vmult(PETScWrappers::MPI::Vector       &dst,
+            const PETScWrappers::MPI::Vector &src) const
+      {
+        dst               = src;
+        PetscScalar *rows = nullptr;
+        PetscInt     n_rows;
+        VecGetLocalSize(dst, &n_rows);
+        VecGetArray(dst, &rows);
+        solve(make_array_view(rows, rows + n_rows));
+        VecRestoreArray(dst, &rows);
+      }
+    };
+  } // namespace
+
+
+  std::optional<unsigned int>
+  CoupledSystem::solve_iteratively(const ModeVectors &residual,
+                                   ModeVectors       &correction,
+                                   const double       relative_tolerance,
+                                   const unsigned int max_iterations,
+                                   const ModeSolve   *elastic_solve)
+  {
+    Assert(elastic_solve || held_factor, ExcMessage("No factor is held."));
+    RowSolve preconditioner;
+    if (elastic_solve)
+      {
+        // The system's rows into the modes' vectors, each mode's elastic
+        // solve, and back.
+        mode_work            = residual;
+        preconditioner.solve = [this,
+                                elastic_solve](const ArrayView<double> &rows) {
+          const types::global_dof_index n_rows =
+            factorisation ? n : n_owned[mpi::rank()];
+          for (unsigned int m = 0; m < n_modes; ++m)
+            for (types::global_dof_index k = 0; k < n_rows; ++k)
+              mode_work[m].local_element(k) =
+                rows[factorisation ? index(m, k) : m * n_rows + k];
+          (*elastic_solve)(mode_work);
+          for (unsigned int m = 0; m < n_modes; ++m)
+            for (types::global_dof_index k = 0; k < n_rows; ++k)
+              rows[factorisation ? index(m, k) : m * n_rows + k] =
+                mode_work[m].local_element(k);
+        };
+      }
+    else if (factorisation)
+      preconditioner.solve = [this](const ArrayView<double> &rows) {
+        factorisation->solve(rows);
+      };
+    else
+      preconditioner.solve = [this](const ArrayView<double> &rows) {
+        distributed_factorisation->solve(rows);
+      };
+
+    gather(residual);
+    std::optional<unsigned int> iterations;
+    if (factorisation)
+      {
+        Vector<double> x(vector.size());
+        iterations = gmres(matrix,
+                           x,
+                           vector,
+                           preconditioner,
+                           relative_tolerance,
+                           max_iterations);
+        vector     = x;
+      }
+    else
+      {
+        const IndexSet            &rows = rows_per_rank[mpi::rank()];
+        PETScWrappers::MPI::Vector b(rows, mpi::communicator());
+        PETScWrappers::MPI::Vector x(rows, mpi::communicator());
+        PetscScalar               *entries = nullptr;
+        VecGetArray(b, &entries);
+        std::copy(vector.begin(), vector.end(), entries);
+        VecRestoreArray(b, &entries);
+        iterations = gmres(*distributed_matrix,
+                           x,
+                           b,
+                           preconditioner,
+                           relative_tolerance,
+                           max_iterations);
+        VecGetArray(x, &entries);
+        std::copy(entries, entries + vector.size(), vector.begin());
+        VecRestoreArray(x, &entries);
+      }
+    if (iterations)
+      scatter(correction);
+    return iterations;
   }
 } // namespace thinlayer

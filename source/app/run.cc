@@ -267,6 +267,7 @@ namespace thinlayer
       summary.factorisations         = work.factorisations;
       summary.substitutions          = work.substitutions;
       summary.sweeps                 = work.sweeps;
+      summary.krylov_iterations      = work.krylov_iterations;
       if (work.factorisations > 0)
         summary.seconds_per_factorisation =
           work.factorisation_seconds / work.factorisations;

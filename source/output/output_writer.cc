@@ -47,11 +47,12 @@ namespace thinlayer
       return;
     errno = 0;
     history.open(directory + "/history.csv");
-    history << "step,attempt,load_factor,load,displacement,displacement_min,"
-               "displacement_max,iterations,converged,accepted,"
-               "max_yield_ratio,plastic_points,cut_backs,factorisations,"
-               "stiffness_ratio,growth_ratio,non_finite,phase\n"
-            << std::flush;
+    history
+      << "step,attempt,load_factor,load,displacement,displacement_min,"
+         "displacement_max,iterations,converged,accepted,"
+         "max_yield_ratio,plastic_points,cut_backs,factorisations,"
+         "krylov_iterations,stiffness_ratio,growth_ratio,non_finite,phase\n"
+      << std::flush;
     check_written(history, "history.csv");
   }
 
@@ -73,8 +74,9 @@ namespace thinlayer
             << (row.accepted ? 1 : 0) << ','
             << number(row.result.max_yield_ratio) << ','
             << row.result.plastic_points << ',' << row.result.cut_backs << ','
-            << row.result.factorisations << ',' << number(row.stiffness_ratio)
-            << ',' << number(row.result.growth_ratio) << ','
+            << row.result.factorisations << ',' << row.result.krylov_iterations
+            << ',' << number(row.stiffness_ratio) << ','
+            << number(row.result.growth_ratio) << ','
             << (row.result.non_finite ? 1 : 0) << ','
             << text_format::csv_field(row.phase) << '\n'
             << std::flush;

@@ -1,6 +1,9 @@
 #include <thinlayer/solution_methods/newton.h>
 #include <thinlayer/solvers/singular_matrix.h>
 
+#include <algorithm>
+#include <optional>
+
 namespace thinlayer
 {
   template <int dim>
@@ -69,8 +72,7 @@ namespace thinlayer
     IterationAccess<dim> &analysis = this->analysis;
     const unsigned int    n_modes  = analysis.n_modes();
 
-    ++result.factorisations;
-    if (!factorise_tangent())
+    if (!solve_correction(norms, result))
       {
         // A singular tangent: the active set is a mechanism (an interface
         // sliding along its whole length, say). An iteration with the
@@ -83,9 +85,6 @@ namespace thinlayer
         norms = this->evaluate_residual(target, /*tangents=*/true);
         return true;
       }
-    // The coupled solve of the residuals, each condensed with its mode's
-    // constraints.
-    system->solve(this->residual, this->correction);
     this->remember_increments();
 
     // Backtracking on |r|_2: halve the step until the residual falls
@@ -110,13 +109,79 @@ namespace thinlayer
 
 
   template <int dim>
+  void
+  NewtonMethod<dim>::start_attempt()
+  {
+    last_l2      = 0;
+    forcing_term = maximum_forcing_term;
+  }
+
+
+  template <int dim>
+  double
+  NewtonMethod<dim>::next_forcing_term(const ResidualNorms &norms)
+  {
+    // Eisenstat and Walker's second choice, gamma = 0.9, alpha = 2, with
+    // their safeguard against a forcing term that falls too fast.
+    constexpr double gamma = 0.9;
+    if (last_l2 > 0)
+      {
+        const double ratio     = norms.l2 / last_l2;
+        const double previous  = gamma * forcing_term * forcing_term;
+        double       candidate = gamma * ratio * ratio;
+        if (previous > 0.1)
+          candidate = std::max(candidate, previous);
+        forcing_term = std::min(candidate, maximum_forcing_term);
+      }
+    last_l2 = norms.l2;
+    // No more than the convergence test needs: a linear residual a tenth
+    // of the tolerance's (the test is on max |r|, which |r|_2 bounds).
+    const double enough =
+      norms.l2 > 0 ? 0.1 * this->parameters.tolerance * norms.forces / norms.l2
+                   : maximum_forcing_term;
+    return std::min(std::max(forcing_term, enough), maximum_forcing_term);
+  }
+
+
+  template <int dim>
   bool
-  NewtonMethod<dim>::factorise_tangent()
+  NewtonMethod<dim>::solve_correction(const ResidualNorms &norms,
+                                      StepResult          &result)
   {
     IterationAccess<dim> &analysis = this->analysis;
-    return system->factorise([&analysis](const CellMatrixSink &add) {
+    system->assemble([&analysis](const CellMatrixSink &add) {
       analysis.add_coupled_tangent(add);
     });
+    const unsigned int limit     = this->parameters.krylov_iterations;
+    const double       tolerance = next_forcing_term(norms);
+    if (this->parameters.newton_corrections ==
+          SolverParameters::NewtonCorrections::krylov &&
+        !refactorise)
+      {
+        const CoupledSystem::ModeSolve elastic = [&analysis](ModeVectors &v) {
+          analysis.elastic_solve(v);
+        };
+        if (const std::optional<unsigned int> iterations =
+              system->solve_iteratively(this->residual,
+                                        this->correction,
+                                        tolerance,
+                                        limit,
+                                        system->has_factor() ? nullptr
+                                                             : &elastic))
+          {
+            result.krylov_iterations += *iterations;
+            // A kept factor that needed more than half the limit is
+            // replaced at the next iteration, before it wastes a solve.
+            refactorise = 2 * *iterations > limit;
+            return true;
+          }
+      }
+    refactorise = false;
+    ++result.factorisations;
+    if (!system->factorise_assembled())
+      return false;
+    system->solve(this->residual, this->correction);
+    return true;
   }
 
 

@@ -15,6 +15,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace thinlayer
@@ -70,15 +71,65 @@ namespace thinlayer
     bool
     factorise(const std::function<void(const CellMatrixSink &)> &add_matrices);
 
-    /// @p correction = K_t^-1 @p residual, mode by mode, with the
-    /// constrained DoFs set from the constraints.
+    /// Assemble the tangent whose matrices @p add_matrices hands to its
+    /// argument, as factorise() does, without factorising it: the operator
+    /// of solve_iteratively().
+    void
+    assemble(const std::function<void(const CellMatrixSink &)> &add_matrices);
+
+    /**
+     * Factorise the matrix assemble() left. Returns false if it is
+     * singular; the system then holds no factor (has_factor()) until a
+     * later factorisation succeeds.
+     */
+    bool
+    factorise_assembled();
+
+    /// Whether a factor of some earlier tangent is held.
+    bool
+    has_factor() const;
+
+    /// @p correction = K_t^-1 @p residual, mode by mode, by the held
+    /// factor, with the constrained DoFs set from the constraints.
     void
     solve(const ModeVectors &residual, ModeVectors &correction);
+
+    /**
+     * What preconditions solve_iteratively(): the factor this system
+     * holds, of an earlier tangent, or the caller's solve of every mode
+     * with its elastic factor in place (each mode's block of the elastic
+     * stiffness, the tangent of a body that has not yielded).
+     */
+    using ModeSolve = std::function<void(ModeVectors &)>;
+
+    /**
+     * @p correction = K_t^-1 @p residual for the tangent of the last
+     * assemble(), by GMRES preconditioned (on the right, so that its
+     * residual is the true one) by the held factor or by @p elastic_solve
+     * if given, to a residual @p relative_tolerance times |residual|_2.
+     * Returns the GMRES iterations, or nothing, with @p correction
+     * undefined, if it did not get there within @p max_iterations: the
+     * preconditioner no longer serves, and the tangent is to be
+     * factorised.
+     */
+    std::optional<unsigned int>
+    solve_iteratively(const ModeVectors &residual,
+                      ModeVectors       &correction,
+                      const double       relative_tolerance,
+                      const unsigned int max_iterations,
+                      const ModeSolve   *elastic_solve = nullptr);
 
   private:
     /// The system's DoF of DoF @p i of mode @p m.
     types::global_dof_index
     index(const unsigned int m, const types::global_dof_index i) const;
+
+    /// The residual's rows into the system's vector, and the system's
+    /// vector back into a correction, with its constrained DoFs set.
+    void
+    gather(const ModeVectors &residual);
+    void
+    scatter(ModeVectors &correction);
 
     /// @p dofs, in the m * n + i numbering, in the system's.
     const std::vector<types::global_dof_index> &
@@ -107,7 +158,11 @@ namespace thinlayer
     std::unique_ptr<PETScWrappers::MPI::SparseMatrix> distributed_matrix;
     std::unique_ptr<DistributedFactorisation>         distributed_factorisation;
 
-    Vector<double>                               vector;
+    bool held_factor = false;
+
+    Vector<double> vector;
+    /// The modes' vectors of an elastic preconditioner's solve.
+    ModeVectors                                  mode_work;
     mutable std::vector<types::global_dof_index> renumbered_dofs;
   };
 } // namespace thinlayer

@@ -21,6 +21,10 @@ namespace thinlayer
     unsigned long factorisations = 0;
     unsigned long substitutions  = 0;
     unsigned long sweeps         = 0;
+    /// Iterations of the Krylov solves of Newton's corrections, each a
+    /// product with the tangent and a substitution (counted among the
+    /// substitutions) with a factor kept from an earlier one.
+    unsigned long krylov_iterations = 0;
     /// The wall time of the factorisations (numerical and, where it is
     /// redone, symbolic), tangents and elastic stiffness alike: with the
     /// substitution's, the floors a method's time per iteration is
@@ -34,6 +38,7 @@ namespace thinlayer
       return {factorisations - earlier.factorisations,
               substitutions - earlier.substitutions,
               sweeps - earlier.sweeps,
+              krylov_iterations - earlier.krylov_iterations,
               factorisation_seconds - earlier.factorisation_seconds};
     }
   };

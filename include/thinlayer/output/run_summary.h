@@ -127,6 +127,9 @@ namespace thinlayer
     unsigned int factorisations = 0;
     unsigned int substitutions  = 0;
     unsigned int sweeps         = 0;
+    /// Newton's GMRES iterations on kept factors (each also one of the
+    /// substitutions).
+    unsigned int krylov_iterations = 0;
     /// The mean wall time of those factorisations (NaN: none).
     double      seconds_per_factorisation;
     std::string method;
@@ -220,6 +223,7 @@ namespace thinlayer
       visitor("factorisations", factorisations);
       visitor("substitutions", substitutions);
       visitor("sweeps", sweeps);
+      visitor("krylov_iterations", krylov_iterations);
       visitor("seconds_per_factorisation", seconds_per_factorisation);
       visitor("method", method);
       visitor("seconds_per_substitution", seconds_per_substitution);

@@ -66,14 +66,30 @@ namespace thinlayer
       amg_cg
     };
 
+    /// How Newton solves its corrections.
+    enum class NewtonCorrections
+    {
+      /// The tangent factorised at every iteration.
+      factorised,
+      /// GMRES preconditioned by a factor kept from an earlier tangent
+      /// (or the elastic stiffness), refactorised only when GMRES needs
+      /// more than Krylov iterations to reach its forcing term.
+      krylov
+    };
+
     static const NameTable<Method>               method_names;
+    static const NameTable<NewtonCorrections>    newton_corrections_names;
     static const NameTable<ConvergenceCriterion> criterion_names;
     static const NameTable<LinearSolver>         linear_solver_names;
 
-    Method               method;
-    unsigned int         anderson_depth;
-    unsigned int         max_cut_backs;
-    unsigned int         max_newton_iterations;
+    Method            method;
+    unsigned int      anderson_depth;
+    unsigned int      max_cut_backs;
+    unsigned int      max_newton_iterations;
+    NewtonCorrections newton_corrections;
+    /// Krylov: GMRES iterations a correction may take with the kept
+    /// factor before the tangent is factorised.
+    unsigned int         krylov_iterations;
     ConvergenceCriterion convergence_criterion;
     double               tolerance;
     unsigned int         max_iterations;

@@ -11,13 +11,16 @@ namespace thinlayer
 {
   /**
    * Newton's method: the correction K_t^-1 r with the consistent tangent
-   * K_t of the return mappings, assembled and refactorised every
-   * iteration, a backtracking line search on |r|_2, and, with the load
-   * programme as given, the load step halved (Solver/Maximum cut-backs)
-   * when an attempt does not converge in Solver/Maximum Newton iterations
-   * (automatic stepping halves failed steps itself). An attempt starts
-   * from the secant predictor (ReturnMappingMethod), its first correction
-   * with the tangents at that predicted state.
+   * K_t of the return mappings, assembled every iteration and solved
+   * either by its factor (Solver/Newton corrections = factorised) or by
+   * GMRES preconditioned by a factor kept from an earlier tangent (krylov:
+   * an inexact Newton method, the tangent refactorised only where the kept
+   * factor no longer serves), a backtracking line search on |r|_2, and, with
+   * the load programme as given, the load step halved (Solver/Maximum
+   * cut-backs) when an attempt does not converge in Solver/Maximum Newton
+   * iterations (automatic stepping halves failed steps itself). An attempt
+   * starts from the secant predictor (ReturnMappingMethod), its first
+   * correction with the tangents at that predicted state.
    *
    * In the Fourier case the stations mix the harmonics, so the consistent
    * tangent couples them: it is one matrix over all modes, mode m's DoFs
@@ -68,10 +71,41 @@ namespace thinlayer
     gives_up(const ConvergenceWatch &watch) const override;
 
 
+    /// Resets the forcing term.
+    void
+    start_attempt() override;
+
   private:
-    /// Assemble and factorise the tangent; false if it is singular.
+    /**
+     * Assemble the tangent and solve for the correction: by a kept factor
+     * and GMRES (Solver/Newton corrections = krylov) while GMRES reaches
+     * the forcing term within Solver/Krylov iterations, else by
+     * factorising the tangent (and keeping its factor). False if the
+     * tangent is singular.
+     */
     bool
-    factorise_tangent();
+    solve_correction(const ResidualNorms &norms, StepResult &result);
+
+    /**
+     * The relative tolerance of the next Krylov solve (an inexact Newton
+     * method's forcing term): Eisenstat and Walker's choice 2 from the
+     * residual's last reduction, at most maximum_forcing_term, and no
+     * tighter than the convergence test needs.
+     */
+    double
+    next_forcing_term(const ResidualNorms &norms);
+
+    /// The loosest forcing term: a correction that removes nine tenths
+    /// of the residual of the linearised problem.
+    static constexpr double maximum_forcing_term = 0.1;
+
+    /// The residual |r|_2 of the last iteration of the attempt (0: none
+    /// yet), and the last forcing term.
+    double last_l2      = 0;
+    double forcing_term = maximum_forcing_term;
+    /// The last Krylov solve needed more than half its limit: factorise
+    /// the next tangent.
+    bool refactorise = false;
 
     /// The tangent over all modes, and its factors.
     std::unique_ptr<CoupledSystem> system;

@@ -21,6 +21,8 @@ namespace thinlayer
     unsigned int cut_backs = 0;
     /// Newton: tangent factorisations.
     unsigned int factorisations = 0;
+    /// Newton: GMRES iterations of its corrections.
+    unsigned int krylov_iterations = 0;
     /// Whether the displacements (or stresses) of the step are not finite
     /// numbers: never converged.
     bool non_finite = false;
