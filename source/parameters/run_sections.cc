@@ -464,7 +464,24 @@ namespace thinlayer
     prm.declare_entry("Write VTU",
                       "true",
                       Patterns::Bool(),
-                      "Write VTU/PVD fields for ParaView at every step.");
+                      "Write VTU/PVD fields for ParaView (which steps: "
+                      "Fields interval).");
+    prm.declare_entry("Fields interval",
+                      "1",
+                      Patterns::Integer(0),
+                      "With Write VTU: the fields of every n-th accepted "
+                      "step (fields.pvd), and always those of the last "
+                      "accepted state of each phase and of the failed "
+                      "attempt that ends a run, the collapse mechanism "
+                      "(attempts.pvd); 0 for those alone. Writing the "
+                      "fields is the largest cost after the solver on a "
+                      "fine mesh.");
+    prm.declare_entry("Fields of cut-back attempts",
+                      "false",
+                      Patterns::Bool(),
+                      "With Write VTU: also the fields of every attempt "
+                      "that was cut back and tried again with a smaller "
+                      "step (attempts.pvd), for studying a failure.");
     prm.declare_entry("VTU subdivisions",
                       "2",
                       Patterns::Integer(1, 8),
@@ -508,12 +525,14 @@ namespace thinlayer
     directory = prm.get("Directory");
     if (directory.empty())
       throw InputError(file, "Output/Directory", "expected a directory");
-    write_vtu         = prm.get_bool("Write VTU");
-    vtu_subdivisions  = prm.get_integer("VTU subdivisions");
-    view_slices       = prm.get_integer("3D view slices");
-    print_timing      = prm.get_bool("Print timing");
-    print_iterations  = prm.get_bool("Print iterations");
-    progress_interval = prm.get_double("Progress interval");
+    write_vtu           = prm.get_bool("Write VTU");
+    fields_interval     = prm.get_integer("Fields interval");
+    fields_of_cut_backs = prm.get_bool("Fields of cut-back attempts");
+    vtu_subdivisions    = prm.get_integer("VTU subdivisions");
+    view_slices         = prm.get_integer("3D view slices");
+    print_timing        = prm.get_bool("Print timing");
+    print_iterations    = prm.get_bool("Print iterations");
+    progress_interval   = prm.get_double("Progress interval");
     prm.leave_subsection();
   }
 } // namespace thinlayer

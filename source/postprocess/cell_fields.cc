@@ -41,11 +41,15 @@ namespace thinlayer
                   stress[s][k][c] +=
                     state.stress[components[k][0]][components[k][1]] / n_q;
                 equivalent[s][c] += equivalent_stress(state.stress) / n_q;
-                // Equivalent plastic strain sqrt(2/3 e:e).
+                // Equivalent plastic strain sqrt(2/3 e:e) of the state as
+                // it stands: with the step's own when the step is pending
+                // (the fields of a step are written before it is
+                // accepted), as ContinuumCells::accept() will add it.
+                const SymmetricTensor<2, 3> total =
+                  state.plastic_strain + state.step_plastic_strain -
+                  state.pending_plastic_strain;
                 plastic_strain[s][c] +=
-                  std::sqrt(2. / 3. *
-                            (state.plastic_strain * state.plastic_strain)) /
-                  n_q;
+                  std::sqrt(2. / 3. * (total * total)) / n_q;
                 if (law.can_yield())
                   yield_ratio[s][c] =
                     std::max(yield_ratio[s][c], law.yield_ratio(state.stress));

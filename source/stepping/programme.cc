@@ -157,6 +157,8 @@ namespace thinlayer
           probe_beyond(a);
         break;
       }
+    // A run that stops on a failure holds that attempt's state.
+    write_last_state(result.stopped && !result.stopped_on_plateau);
     return result;
   }
 
@@ -306,27 +308,28 @@ namespace thinlayer
                                   next == LoadStepping::Next::accept_failed,
                                 a.stiffness_ratio,
                                 phase.name});
-      if (next != LoadStepping::Next::retry)
+      // A state of the load-displacement curve: converged and accepted
+      // (not a failure, nor a probe beyond one).
+      const bool on_curve =
+        next == LoadStepping::Next::accept && a.result.converged && !probe;
+      const bool cut_back = next == LoadStepping::Next::retry;
+      if (on_curve)
+        ++curve_states;
+      const unsigned int interval = p.output.fields_interval;
+      const bool         fields =
+        p.output.write_vtu &&
+        (on_curve ? interval > 0 && curve_states % interval == 0
+                  : !cut_back || p.output.fields_of_cut_backs);
+      if (fields)
+        write_fields(a.step, a.load_factor, on_curve);
+      // The last accepted state's fields are written at the end if the
+      // interval skipped them (write_last_state()).
+      if (on_curve && !fields && p.output.write_vtu)
+        unwritten_state = std::make_pair(a.step, a.load_factor);
+      else if (on_curve || next == LoadStepping::Next::accept_failed)
+        unwritten_state.reset();
+      if (!cut_back)
         {
-          // A state of the load-displacement curve: converged and
-          // accepted (not a failure, nor a probe beyond one).
-          const bool on_curve =
-            next == LoadStepping::Next::accept && a.result.converged && !probe;
-          if (p.output.write_vtu)
-            writer.write_fields(a.step,
-                                a.load_factor,
-                                on_curve,
-                                analysis,
-                                p.monitors.displacement_angle,
-                                layers);
-          // A revolved view is of a Fourier body, whose mesh is 2D.
-          if constexpr (dim == 2)
-            if (p.output.write_vtu && p.output.view_slices > 0)
-              writer.write_revolved_view(a.step,
-                                         a.load_factor,
-                                         on_curve,
-                                         analysis,
-                                         p.output.view_slices);
           writer.write_displacements(analysis, p.monitors.displacement_angle);
           writer.write_interface_profiles(a.step,
                                           a.load_factor,
@@ -347,6 +350,42 @@ namespace thinlayer
                   probe,
                   p.output.print_iterations,
                   out);
+  }
+
+
+  template <int dim>
+  void
+  Programme<dim>::write_fields(const unsigned int step,
+                               const double       load_factor,
+                               const bool         on_curve)
+  {
+    writer.write_fields(step,
+                        load_factor,
+                        on_curve,
+                        analysis,
+                        p.monitors.displacement_angle,
+                        layers);
+    // A revolved view is of a Fourier body, whose mesh is 2D.
+    if constexpr (dim == 2)
+      if (p.output.view_slices > 0)
+        writer.write_revolved_view(
+          step, load_factor, on_curve, analysis, p.output.view_slices);
+  }
+
+
+  template <int dim>
+  void
+  Programme<dim>::write_last_state(const bool pending_failure)
+  {
+    if (!unwritten_state)
+      return;
+    TimerOutput::Scope scope(timer, "output");
+    // Back from the failed attempt to the last accepted state, which the
+    // fields show.
+    if (pending_failure)
+      solver.reject();
+    write_fields(unwritten_state->first, unwritten_state->second, true);
+    unwritten_state.reset();
   }
 
 

@@ -189,8 +189,13 @@ namespace thinlayer
   /// "Output": where results go and which.
   struct OutputParameters
   {
-    std::string  directory;
-    bool         write_vtu;
+    std::string directory;
+    bool        write_vtu;
+    /// The VTU fields of every n-th accepted step (and always of the last
+    /// one, and of the failure that ends a run); 0: only those.
+    unsigned int fields_interval;
+    /// Whether the fields of attempts that were cut back are written too.
+    bool         fields_of_cut_backs;
     unsigned int vtu_subdivisions;
     /// Fourier: slices of the revolved 3D view over the circle; 0 for none.
     unsigned int view_slices;

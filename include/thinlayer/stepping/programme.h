@@ -9,8 +9,10 @@
 #include <thinlayer/stepping/run_outcome.h>
 #include <thinlayer/stepping/step_solver.h>
 
+#include <optional>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace thinlayer
@@ -100,6 +102,21 @@ namespace thinlayer
     run();
 
   private:
+    /// The fields (and a Fourier body's revolved view) of the current
+    /// state, as step @p step at @p load_factor.
+    void
+    write_fields(const unsigned int step,
+                 const double       load_factor,
+                 const bool         on_curve);
+
+    /**
+     * The fields of the last accepted state, if Output/Fields interval
+     * skipped them: at the end of the phase. @p pending_failure: the
+     * current state is a failed attempt's, rejected first.
+     */
+    void
+    write_last_state(const bool pending_failure);
+
     struct Attempt
     {
       unsigned int step;
@@ -183,6 +200,13 @@ namespace thinlayer
     TimerOutput                          &timer;
     std::ostream                         &out;
     ProgrammeResult                       result;
+
+    /// The states of the curve recorded so far, for Output/Fields
+    /// interval.
+    unsigned int curve_states = 0;
+    /// The step and load factor of the last accepted state, if its fields
+    /// are not written.
+    std::optional<std::pair<unsigned int, double>> unwritten_state;
   };
 } // namespace thinlayer
 
