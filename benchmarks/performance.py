@@ -12,7 +12,10 @@ to the collapse load (2 + pi)c:
 - the paper's method with automatic stepping at TOL 1e-3, bracketed to 0.5%;
 - the default method (no Solver/Method) with automatic stepping at TOL 1e-4,
   bracketed to 0.5%, on the file's programme (0.5, 3*0.1, 20*0.01, 10*0.02)
-  and on the paper's seven steps.
+  and on the paper's seven steps;
+- the default method on the file's programme with Newton's tangent
+  factorised at every iteration (Solver/Newton corrections = factorised)
+  rather than solved by GMRES on a kept factor.
 Each row gives the outcome and bracket, the error of the collapse load, the
 work (iterations, factorisations, substitutions, sweeps over the Gauss
 points), the median wall time of --repeat runs and its ratio to the paper's
@@ -29,6 +32,13 @@ method, with the knee beside the collapse and the most iterations an
 accepted step took away from collapse (below 90% of the collapse load, or
 of the last converged load where there is none): performance-scenes.csv
 and .md.
+Then, with --scenes-3d K,K, the 3D scenes on their files' meshes (the rigid
+rough circular footing, Case 3 with interface elements) by the ways numbered
+K (the default method; the same with Newton's tangent factorised at every
+iteration; accelerated initial stress alone), with the Krylov iterations,
+the peak memory per DoF and each target's verdict (the rigid footing in
+60 s with at most one factorisation per five Newton iterations, Case 3 in
+120 s): performance-3d.csv and .md.
 Results are measurements, not tests: quote them with the machine.
 """
 import argparse
@@ -59,6 +69,8 @@ WAYS = [
     ("paper's method, automatic stepping", PAPER_AUTOMATIC),
     ("default method, automatic stepping", DEFAULT),
     ("default method, 7 steps cut back", DEFAULT_SEVEN),
+    ("default method, tangent factorised every iteration",
+     DEFAULT + ("Solver/Newton corrections=factorised",)),
 ]
 # The default method's tolerance (the paper's ways set theirs).
 TOLERANCE = "1e-4"
@@ -141,7 +153,7 @@ def chart(rows):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(figsize=(6.4, 4.6))
-    for (label, _), style in zip(WAYS, ("o-", "s--", "^-", "v-")):
+    for (label, _), style in zip(WAYS, ("o-", "s--", "^-", "v-", "d:")):
         shown = [r for r in rows if r["way"] == label]
         ax.plot([r["equations"] for r in shown], [r["wall_median_s"] for r in shown], style,
                 label=label)
@@ -219,13 +231,84 @@ def measure_scenes(repeat):
     return rows
 
 
-def performance(sizes, repeat, skip=None, scenes=False):
+# The 3D scenes on their files' meshes, each with its targets (seconds to
+# the answer; factorisations per Newton iteration), and the ways: the
+# default method with Newton's corrections on kept factors (its default)
+# and factorised at every iteration, and the accelerated method alone.
+SCENES_3D = [("prm/circular-footing-rigid-3d.prm", 60.0, 0.2),
+             ("prm/case3-circular-footing-3d-zero-thickness.prm", 120.0, None)]
+WAYS_3D = [("default method", DEFAULT_METHOD),
+           ("default method, tangent factorised every iteration",
+            DEFAULT_METHOD + ("Solver/Newton corrections=factorised",)),
+           ("accelerated initial stress alone",
+            ("Solver/Method=accelerated initial stress",
+             "Solver/Convergence criterion=default"))]
+
+
+def measure_scenes_3d(repeat, which):
+    """Every way of WAYS_3D (numbered in @p which) on every 3D scene."""
+    rows = []
+    for prm, seconds_target, factorisation_target in SCENES_3D:
+        name = os.path.splitext(os.path.basename(prm))[0]
+        for k, (label, entries) in enumerate(WAYS_3D):
+            if k not in which:
+                continue
+            directory = os.path.join(common.OUT, "runs", "performance-3d-%s-%d" % (name, k))
+            summary, median, peak = common.median_run(prm, None, "cholmod", "1e-4",
+                                                      directory, repeat, entries)
+            newton = summary["total_iterations"]
+            per_iteration = summary["factorisations"] / newton if newton else math.nan
+            verdicts = ["%s in %.0f s" % ("met" if median <= seconds_target else "missed",
+                                          seconds_target)]
+            if factorisation_target is not None and k == 0:
+                verdicts.append("%s at most %.1f factorisations per iteration" % (
+                    "met" if per_iteration <= factorisation_target else "missed",
+                    factorisation_target))
+            rows.append({
+                "scene": name, "equations": summary["equations"], "dofs": summary["dofs"],
+                "way": label, "outcome": summary["outcome"],
+                "collapse_load": results.collapse_load(summary),
+                "relative_error": results.collapse_error(summary),
+                "total_iterations": newton, "factorisations": summary["factorisations"],
+                "krylov_iterations": summary.get("krylov_iterations", 0),
+                "substitutions": summary["substitutions"], "sweeps": summary["sweeps"],
+                "ms_per_factorisation": 1e3 * (summary["seconds_per_factorisation"] or math.nan),
+                "ms_per_substitution": 1e3 * summary["seconds_per_substitution"],
+                "wall_median_s": median, "runs": repeat, "peak_memory_mb": peak,
+                "peak_kb_per_dof": 1024 * peak / summary["dofs"],
+                "verdict": "; ".join(verdicts)})
+            print(rows[-1], flush=True)
+
+    def number(value, form):
+        return form % value if value is not None and value == value else "-"
+
+    common.write_results(
+        rows, "performance-3d",
+        "| scene | DoFs | way | outcome | collapse load | error | iterations "
+        "| factorisations | Krylov iterations | substitutions | sweeps | ms per factorisation "
+        "| ms per substitution | wall s (median) | peak MB | peak kB per DoF | targets |",
+        lambda r: "| %s | %d | %s | %s | %s | %s | %d | %d | %d | %d | %d | %s | %.1f | %.1f "
+                  "| %.0f | %.1f | %s |" % (
+                      r["scene"], r["dofs"], r["way"], r["outcome"],
+                      number(r["collapse_load"], "%.4f"),
+                      number(r["relative_error"] and 100 * r["relative_error"], "%+.2f%%"),
+                      r["total_iterations"], r["factorisations"], r["krylov_iterations"],
+                      r["substitutions"], r["sweeps"], number(r["ms_per_factorisation"], "%.0f"),
+                      r["ms_per_substitution"], r["wall_median_s"], r["peak_memory_mb"],
+                      r["peak_kb_per_dof"], r["verdict"]))
+    return rows
+
+
+def performance(sizes, repeat, skip=None, scenes=False, scenes_3d=None):
     os.makedirs(common.OUT, exist_ok=True)
-    rows = measure(sizes, repeat, skip or {})
-    table(rows)
-    chart(rows)
+    if sizes:
+        rows = measure(sizes, repeat, skip or {})
+        table(rows)
+        chart(rows)
     if scenes:
         measure_scenes(repeat)
+    if scenes_3d:
+        measure_scenes_3d(repeat, scenes_3d)
 
 
 def main():
@@ -242,15 +325,26 @@ def main():
                         "automatic stepping on the finest mesh")
     parser.add_argument("--scenes", action="store_true",
                         help="also the thin-layer scenes (Case 2 and Case 3, level 2)")
+    parser.add_argument("--scenes-3d", default="",
+                        help="also the 3D scenes (the rigid circular footing, Case 3 with "
+                        "interface elements) by the ways numbered K,K from 0 (0: the default "
+                        "method, 1: its tangent factorised at every iteration, 2: accelerated "
+                        "initial stress alone), e.g. 0,1; --cells '' runs them alone")
     parser.add_argument("--output", default=common.OUT,
                         help="the results directory (default %(default)s)")
     page.add_argument(parser)
     arguments = parser.parse_args()
     page.configure(arguments)
     try:
-        sizes = [int(c) for c in arguments.cells.split(",")]
+        sizes = [int(c) for c in filter(None, arguments.cells.split(","))]
     except ValueError:
         parser.error("--cells: expected whole numbers separated by commas")
+    try:
+        scenes_3d = [int(k) for k in filter(None, arguments.scenes_3d.split(","))]
+    except ValueError:
+        parser.error("--scenes-3d: expected way numbers separated by commas, e.g. 0,1")
+    if any(k not in range(len(WAYS_3D)) for k in scenes_3d):
+        parser.error("--scenes-3d: ways are numbered 0 to %d" % (len(WAYS_3D) - 1))
     unknown = [c for c in sizes if c not in cases.PRANDTL_SIZES]
     if unknown:
         parser.error("--cells: no Prandtl mesh of %s cells (expected some of %s)"
@@ -265,7 +359,7 @@ def main():
     except ValueError:
         parser.error("--skip: expected CELLS:K,K;CELLS:K, e.g. 32768:1")
     common.OUT = os.path.abspath(arguments.output)
-    performance(sizes, arguments.repeat, skip, arguments.scenes)
+    performance(sizes, arguments.repeat, skip, arguments.scenes, scenes_3d)
 
 
 if __name__ == "__main__":

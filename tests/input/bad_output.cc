@@ -620,7 +620,7 @@ namespace
 
 
   /// history.csv's phase names with commas, quotes and line breaks, quoted
-  /// as a CSV library reads them: every row keeps its 18 fields.
+  /// as a CSV library reads them: every row keeps its 19 fields.
   void
   check_csv_fields()
   {

@@ -7,11 +7,16 @@
 // resolution (0.5%) of each other; the Krylov corrections need no more
 // than one factorisation per two Newton iterations (every iteration
 // factorises with the other), and did iterate (GMRES iterations > 0).
+// Serially (CHOLMOD) and on two ranks (MUMPS's factor, GMRES on PETSc's
+// vectors).
+
+#include <deal.II/base/mpi.h>
 
 #include <cmath>
 #include <cstdio>
 #include <string>
 
+#include "../common/parallel_truths.h"
 #include "../common/run_results.h"
 #include "../common/truths.h"
 
@@ -50,8 +55,12 @@ namespace
 
 
 int
-main()
+main(int argc, char **argv)
 {
+  dealii::Utilities::MPI::MPI_InitFinalize mpi_session(argc, argv, 1);
+  // Every rank reads the same summary; rank 0 prints.
+  if (!truths::print_on_rank_zero())
+    return 1;
   using truths::expect;
   const Run    factorised = run("factorised");
   const Run    krylov     = run("krylov");
