@@ -105,14 +105,11 @@ namespace thinlayer
         scale /= 2;
       }
     // An inexact correction that the line search could not make reduce
-    // the residual, or two in a row that did not halve it, may be no
-    // descent direction where the tangent is nearly singular (a thin layer
-    // near its collapse): the rest of the attempt solves its corrections
-    // exactly, as with Newton corrections = factorised, so that the
-    // attempt fails only where Newton itself fails.
-    const bool decreased = norms.l2 <= (1 - 1e-4 * scale) * initial;
-    slow_iterations      = norms.l2 > 0.5 * initial ? slow_iterations + 1 : 0;
-    if (!decreased || slow_iterations >= 2)
+    // the residual may be no descent direction where the tangent is nearly
+    // singular (a thin layer near its collapse): the rest of the attempt
+    // solves its corrections exactly, as with Newton corrections =
+    // factorised.
+    if (norms.l2 > (1 - 1e-4 * scale) * initial)
       exact_corrections = true;
     return true;
   }
@@ -122,13 +119,12 @@ namespace thinlayer
   void
   NewtonMethod<dim>::start_attempt()
   {
-    last_l2           = 0;
-    forcing_term      = maximum_forcing_term;
+    last_l2      = 0;
+    forcing_term = maximum_forcing_term;
     // The attempt whose failure would end the run solves its corrections
     // exactly throughout: a collapse is where Newton fails, not where an
     // inexact correction did.
     exact_corrections = this->final_attempt;
-    slow_iterations   = 0;
   }
 
 

@@ -107,10 +107,8 @@ namespace thinlayer
     /// the next tangent.
     bool refactorise = false;
     /// The rest of the attempt solves its corrections by a factor of
-    /// every tangent (iterate() says when), and the iterations so far in
-    /// a row that did not halve the residual.
-    bool         exact_corrections = false;
-    unsigned int slow_iterations   = 0;
+    /// every tangent (start_attempt() and iterate() say when).
+    bool exact_corrections = false;
 
     /// The tangent over all modes, and its factors.
     std::unique_ptr<CoupledSystem> system;
