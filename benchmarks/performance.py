@@ -258,12 +258,13 @@ def measure_scenes_3d(repeat, which):
                                                       directory, repeat, entries)
             newton = summary["total_iterations"]
             per_iteration = summary["factorisations"] / newton if newton else math.nan
-            verdicts = ["%s in %.0f s" % ("met" if median <= seconds_target else "missed",
-                                          seconds_target)]
+            verdicts = ["at most %.0f s: %s" % (
+                seconds_target, "met" if median <= seconds_target else "missed")]
             if factorisation_target is not None and k == 0:
-                verdicts.append("%s at most %.1f factorisations per iteration" % (
+                verdicts.append("at most %.1f factorisations per iteration: %s (%.2f)" % (
+                    factorisation_target,
                     "met" if per_iteration <= factorisation_target else "missed",
-                    factorisation_target))
+                    per_iteration))
             rows.append({
                 "scene": name, "equations": summary["equations"], "dofs": summary["dofs"],
                 "way": label, "outcome": summary["outcome"],
