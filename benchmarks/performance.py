@@ -13,9 +13,9 @@ to the collapse load (2 + pi)c:
 - the default method (no Solver/Method) with automatic stepping at TOL 1e-4,
   bracketed to 0.5%, on the file's programme (0.5, 3*0.1, 20*0.01, 10*0.02)
   and on the paper's seven steps;
-- the default method on the file's programme with Newton's tangent
-  factorised at every iteration (Solver/Newton corrections = factorised)
-  rather than solved by GMRES on a kept factor.
+- the default method on the file's programme with Newton's corrections
+  solved by GMRES on a kept factor (Solver/Newton corrections = krylov)
+  rather than by a factor of every tangent.
 Each row gives the outcome and bracket, the error of the collapse load, the
 work (iterations, factorisations, substitutions, sweeps over the Gauss
 points), the median wall time of --repeat runs and its ratio to the paper's
@@ -34,8 +34,8 @@ of the last converged load where there is none): performance-scenes.csv
 and .md.
 Then, with --scenes-3d K,K, the 3D scenes on their files' meshes (the rigid
 rough circular footing, Case 3 with interface elements) by the ways numbered
-K (the default method; the same with Newton's tangent factorised at every
-iteration; accelerated initial stress alone), with the Krylov iterations,
+K (the default method; the same with Newton's corrections by GMRES on a
+kept factor; accelerated initial stress alone), with the Krylov iterations,
 the peak memory per DoF and each target's verdict (the rigid footing in
 60 s with at most one factorisation per five Newton iterations, Case 3 in
 120 s): performance-3d.csv and .md.
@@ -69,8 +69,8 @@ WAYS = [
     ("paper's method, automatic stepping", PAPER_AUTOMATIC),
     ("default method, automatic stepping", DEFAULT),
     ("default method, 7 steps cut back", DEFAULT_SEVEN),
-    ("default method, tangent factorised every iteration",
-     DEFAULT + ("Solver/Newton corrections=factorised",)),
+    ("default method, Newton's corrections by GMRES on a kept factor",
+     DEFAULT + ("Solver/Newton corrections=krylov",)),
 ]
 # The default method's tolerance (the paper's ways set theirs).
 TOLERANCE = "1e-4"
@@ -233,13 +233,14 @@ def measure_scenes(repeat):
 
 # The 3D scenes on their files' meshes, each with its targets (seconds to
 # the answer; factorisations per Newton iteration), and the ways: the
-# default method with Newton's corrections on kept factors (its default)
-# and factorised at every iteration, and the accelerated method alone.
+# default method (Newton's tangent factorised at every iteration), the same
+# with Newton's corrections by GMRES on kept factors, and the accelerated
+# method alone.
 SCENES_3D = [("prm/circular-footing-rigid-3d.prm", 60.0, 0.2),
              ("prm/case3-circular-footing-3d-zero-thickness.prm", 120.0, None)]
 WAYS_3D = [("default method", DEFAULT_METHOD),
-           ("default method, tangent factorised every iteration",
-            DEFAULT_METHOD + ("Solver/Newton corrections=factorised",)),
+           ("default method, Newton's corrections by GMRES on a kept factor",
+            DEFAULT_METHOD + ("Solver/Newton corrections=krylov",)),
            ("accelerated initial stress alone",
             ("Solver/Method=accelerated initial stress",
              "Solver/Convergence criterion=default"))]
@@ -260,7 +261,7 @@ def measure_scenes_3d(repeat, which):
             per_iteration = summary["factorisations"] / newton if newton else math.nan
             verdicts = ["at most %.0f s: %s" % (
                 seconds_target, "met" if median <= seconds_target else "missed")]
-            if factorisation_target is not None and k == 0:
+            if factorisation_target is not None and k < 2:
                 verdicts.append("at most %.1f factorisations per iteration: %s (%.2f)" % (
                     factorisation_target,
                     "met" if per_iteration <= factorisation_target else "missed",
@@ -329,8 +330,9 @@ def main():
     parser.add_argument("--scenes-3d", default="",
                         help="also the 3D scenes (the rigid circular footing, Case 3 with "
                         "interface elements) by the ways numbered K,K from 0 (0: the default "
-                        "method, 1: its tangent factorised at every iteration, 2: accelerated "
-                        "initial stress alone), e.g. 0,1; --cells '' runs them alone")
+                        "method, 1: the same with Newton's corrections by GMRES on a kept "
+                        "factor, 2: accelerated initial stress alone), e.g. 0,1; --cells '' "
+                        "runs them alone")
     parser.add_argument("--output", default=common.OUT,
                         help="the results directory (default %(default)s)")
     page.add_argument(parser)

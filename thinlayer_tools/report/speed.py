@@ -114,8 +114,8 @@ def time_to_answer(runs, quick):
            "at TOL 1e-3, its first failed step ending the run (a 2%% bracket at best), and "
            "the same TOL with automatic stepping to a 0.5%% bracket; the default method at "
            "TOL 1e-4 to a 0.5%% bracket, on the scene's programme (0.01 steps near "
-           "collapse), on the paper's seven steps, and with Newton's tangent factorised at "
-           "every iteration instead of solved by GMRES on a kept factor. "
+           "collapse), on the paper's seven steps, and with Newton's corrections solved by "
+           "GMRES on a kept factor instead of a factor of every tangent. "
            "Targets: the default method in at most a third of the paper's fixed steps' "
            "time and in less than the paper's method with automatic stepping, its time "
            "growing no faster than equations^%.1f. Fitted exponents of time against "
@@ -209,11 +209,11 @@ def scenes_3d(runs, quick):
                       "%.1f" % float(r["peak_kb_per_dof"]), r["verdict"]])
     missed = [r["scene"] + " (" + r["way"] + "): " + r["verdict"] for r in rows
               if r["way"] == "default method" and "missed" in r["verdict"]]
-    why = ("Each 3D scene on its file's mesh, by the default method (Newton's corrections "
-           "by GMRES on a kept factor), by the same with the tangent factorised at every "
-           "iteration, and by accelerated initial stress alone. Asked of the default "
-           "method: the rigid footing in at most 60 s with at most one factorisation per "
-           "five Newton iterations, Case 3 in at most 120 s. %s" % (
+    why = ("Each 3D scene on its file's mesh, by the default method (Newton's tangent "
+           "factorised at every iteration), by the same with Newton's corrections by GMRES "
+           "on a kept factor, and by accelerated initial stress alone. Asked of the "
+           "default method: the rigid footing in at most 60 s with at most one "
+           "factorisation per five Newton iterations, Case 3 in at most 120 s. %s" % (
                "Met." if not missed else "Missed: " + "; ".join(missed) + "."))
     return Section("time-to-answer-3d", title, "(not in the paper)",
                    "beyond" if not missed else "differs", why, rows=table,
