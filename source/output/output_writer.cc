@@ -26,9 +26,9 @@ namespace thinlayer
   namespace
   {
     /**
-     * zlib's fastest level rather than deal.II's default, its best
-     * compression, which made writing the fields of a fine mesh a quarter
-     * of a run; and no date, so that the same state gives the same file.
+     * zlib's fastest level rather than its best (deal.II's default): the
+     * fields are written while the run waits for them; and no date, so
+     * that the same state gives the same file.
      */
     DataOutBase::VtkFlags
     fast_vtk_flags()

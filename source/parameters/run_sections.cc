@@ -87,9 +87,8 @@ namespace thinlayer
       "from an earlier iteration, or by the elastic factors before any "
       "tangent has been factorised, to the inexact-Newton forcing term of "
       "Eisenstat and Walker; the tangent is factorised, and kept, only "
-      "when GMRES needs more than Krylov iterations). The benchmarks find "
-      "krylov some 5% faster on a 3D footing of 40k DoFs and slower on "
-      "Prandtl's footing at 8192 cells (the manual's page on running a "
+      "when GMRES needs more than Krylov iterations). benchmarks/"
+      "performance.py compares the two (the manual's page on running a "
       "scene).");
     prm.declare_entry("Krylov iterations",
                       "20",
