@@ -51,6 +51,7 @@ namespace thinlayer
           }
         distributed_factorisation =
           std::make_unique<DistributedFactorisation>(symmetric);
+        rows_of_a_mode = n_owned[mpi::rank()];
       }
 
     if (!owned_per_rank.empty())
@@ -210,21 +211,23 @@ namespace thinlayer
   }
 
 
+  types::global_dof_index
+  CoupledSystem::row(const unsigned int            m,
+                     const types::global_dof_index k) const
+  {
+    // On several ranks the rank's rows: its own DoFs of each mode in turn
+    // (index()).
+    return factorisation ? index(m, k) : m * rows_of_a_mode + k;
+  }
+
+
   void
   CoupledSystem::gather(const ModeVectors &residual)
   {
-    if (factorisation)
-      {
-        for (unsigned int m = 0; m < n_modes; ++m)
-          for (types::global_dof_index i = 0; i < n; ++i)
-            vector[index(m, i)] = residual[m][i];
-        return;
-      }
-    // The rank's rows: its own DoFs of each mode in turn (index()).
-    const types::global_dof_index n_rows = n_owned[mpi::rank()];
+    const types::global_dof_index n_rows = residual[0].locally_owned_size();
     for (unsigned int m = 0; m < n_modes; ++m)
       for (types::global_dof_index k = 0; k < n_rows; ++k)
-        vector[m * n_rows + k] = residual[m].local_element(k);
+        vector[row(m, k)] = residual[m].local_element(k);
   }
 
 
@@ -232,19 +235,14 @@ namespace thinlayer
   CoupledSystem::scatter(ModeVectors &correction)
   {
     if (factorisation)
-      {
-        constraints.distribute(vector);
-        for (unsigned int m = 0; m < n_modes; ++m)
-          for (types::global_dof_index i = 0; i < n; ++i)
-            correction[m][i] = vector[index(m, i)];
-        return;
-      }
-    const types::global_dof_index n_rows = n_owned[mpi::rank()];
+      constraints.distribute(vector);
+    const types::global_dof_index n_rows = correction[0].locally_owned_size();
     for (unsigned int m = 0; m < n_modes; ++m)
       {
         for (types::global_dof_index k = 0; k < n_rows; ++k)
-          correction[m].local_element(k) = vector[m * n_rows + k];
-        distribute(*mode_constraints[m], correction[m]);
+          correction[m].local_element(k) = vector[row(m, k)];
+        if (!factorisation)
+          distribute(*mode_constraints[m], correction[m]);
       }
   }
 
@@ -351,16 +349,14 @@ namespace thinlayer
         preconditioner.solve = [this,
                                 elastic_solve](const ArrayView<double> &rows) {
           const types::global_dof_index n_rows =
-            factorisation ? n : n_owned[mpi::rank()];
+            mode_work[0].locally_owned_size();
           for (unsigned int m = 0; m < n_modes; ++m)
             for (types::global_dof_index k = 0; k < n_rows; ++k)
-              mode_work[m].local_element(k) =
-                rows[factorisation ? index(m, k) : m * n_rows + k];
+              mode_work[m].local_element(k) = rows[row(m, k)];
           (*elastic_solve)(mode_work);
           for (unsigned int m = 0; m < n_modes; ++m)
             for (types::global_dof_index k = 0; k < n_rows; ++k)
-              rows[factorisation ? index(m, k) : m * n_rows + k] =
-                mode_work[m].local_element(k);
+              rows[row(m, k)] = mode_work[m].local_element(k);
         };
       }
     else if (factorisation)
@@ -376,33 +372,40 @@ namespace thinlayer
     std::optional<unsigned int> iterations;
     if (factorisation)
       {
-        Vector<double> x(vector.size());
+        krylov_solution.reinit(vector.size(), /*omit_zeroing=*/true);
         iterations = gmres(matrix,
-                           x,
+                           krylov_solution,
                            vector,
                            preconditioner,
                            relative_tolerance,
                            max_iterations);
-        vector     = x;
+        vector     = krylov_solution;
       }
     else
       {
-        const IndexSet            &rows = rows_per_rank[mpi::rank()];
-        PETScWrappers::MPI::Vector b(rows, mpi::communicator());
-        PETScWrappers::MPI::Vector x(rows, mpi::communicator());
-        PetscScalar               *entries = nullptr;
-        VecGetArray(b, &entries);
+        if (!distributed_rhs)
+          {
+            const IndexSet &rows = rows_per_rank[mpi::rank()];
+            distributed_rhs =
+              std::make_unique<PETScWrappers::MPI::Vector>(rows,
+                                                           mpi::communicator());
+            distributed_solution =
+              std::make_unique<PETScWrappers::MPI::Vector>(rows,
+                                                           mpi::communicator());
+          }
+        PetscScalar *entries = nullptr;
+        VecGetArray(*distributed_rhs, &entries);
         std::copy(vector.begin(), vector.end(), entries);
-        VecRestoreArray(b, &entries);
+        VecRestoreArray(*distributed_rhs, &entries);
         iterations = gmres(*distributed_matrix,
-                           x,
-                           b,
+                           *distributed_solution,
+                           *distributed_rhs,
                            preconditioner,
                            relative_tolerance,
                            max_iterations);
-        VecGetArray(x, &entries);
+        VecGetArray(*distributed_solution, &entries);
         std::copy(entries, entries + vector.size(), vector.begin());
-        VecRestoreArray(x, &entries);
+        VecRestoreArray(*distributed_solution, &entries);
       }
     if (iterations)
       scatter(correction);

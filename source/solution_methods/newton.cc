@@ -163,11 +163,13 @@ namespace thinlayer
     system->assemble([&analysis](const CellMatrixSink &add) {
       analysis.add_coupled_tangent(add);
     });
+    const bool krylov = this->parameters.newton_corrections ==
+                        SolverParameters::NewtonCorrections::krylov;
+    // Every iteration of a Krylov attempt steps the forcing term on, the
+    // ones that factorise too: it follows the residual's reduction.
+    const double       tolerance = krylov ? next_forcing_term(norms) : 0;
     const unsigned int limit     = this->parameters.krylov_iterations;
-    const double       tolerance = next_forcing_term(norms);
-    if (this->parameters.newton_corrections ==
-          SolverParameters::NewtonCorrections::krylov &&
-        !refactorise && !exact_corrections)
+    if (krylov && !refactorise && !exact_corrections)
       {
         const CoupledSystem::ModeSolve elastic = [&analysis](ModeVectors &v) {
           analysis.elastic_solve(v);

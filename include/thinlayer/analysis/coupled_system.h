@@ -4,6 +4,7 @@
 #include <deal.II/base/index_set.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/petsc_sparse_matrix.h>
+#include <deal.II/lac/petsc_vector.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
@@ -124,6 +125,11 @@ namespace thinlayer
     types::global_dof_index
     index(const unsigned int m, const types::global_dof_index i) const;
 
+    /// Where this rank's @p k-th DoF of mode @p m is in the system's
+    /// vector (vector).
+    types::global_dof_index
+    row(const unsigned int m, const types::global_dof_index k) const;
+
     /// The residual's rows into the system's vector, and the system's
     /// vector back into a correction, with its constrained DoFs set.
     void
@@ -139,6 +145,8 @@ namespace thinlayer
     const types::global_dof_index n;
     /// Where each rank's DoFs start, and how many it has (several ranks).
     std::vector<types::global_dof_index> first_dof, n_owned;
+    /// This rank's DoFs of one mode (several ranks).
+    types::global_dof_index rows_of_a_mode = 0;
     /// Each rank's rows of the system (several ranks).
     std::vector<IndexSet> rows_per_rank;
     /// This rank's rows of every DoF it holds (several ranks).
@@ -161,8 +169,13 @@ namespace thinlayer
     bool held_factor = false;
 
     Vector<double> vector;
-    /// The modes' vectors of an elastic preconditioner's solve.
+    /// The modes' vectors of an elastic preconditioner's solve, and
+    /// GMRES's solution (and right-hand side, on several ranks), kept from
+    /// one solve to the next.
     ModeVectors                                  mode_work;
+    Vector<double>                               krylov_solution;
+    std::unique_ptr<PETScWrappers::MPI::Vector>  distributed_rhs;
+    std::unique_ptr<PETScWrappers::MPI::Vector>  distributed_solution;
     mutable std::vector<types::global_dof_index> renumbered_dofs;
   };
 } // namespace thinlayer

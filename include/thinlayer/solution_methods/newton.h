@@ -71,7 +71,8 @@ namespace thinlayer
     gives_up(const ConvergenceWatch &watch) const override;
 
 
-    /// Resets the forcing term.
+    /// Resets the forcing term, and makes the final attempt's corrections
+    /// exact.
     void
     start_attempt() override;
 
