@@ -161,7 +161,18 @@ namespace thinlayer
     const bool failed       = verdict > 0;
     solver->factorised      = !failed;
     if (!failed)
-      return 0;
+      {
+        // RINFOG(3): the elimination's operations; INFOG(29): the factor's
+        // entries (in millions where negative), each a multiply-add in one
+        // triangular solve, or in two where L D L^T holds L alone.
+        PetscReal flops   = 0;
+        PetscInt  entries = 0;
+        MatMumpsGetRinfog(solver->factor, 3, &flops);
+        MatMumpsGetInfog(solver->factor, 29, &entries);
+        const double n_entries = entries < 0 ? -1e6 * entries : entries;
+        last_cost              = {flops, (symmetric ? 4 : 2) * n_entries};
+        return 0;
+      }
     // MUMPS's analysis stands when only the pivots showed the matrix
     // singular (Newton's tangent at a mechanism): the next factorisation
     // of the same matrix needs only new values. After MUMPS's own failure
@@ -181,6 +192,13 @@ namespace thinlayer
       std::to_string(error_code) +
       "; -8, -9, -13 and -19 mean too little memory, -38 a parallel "
       "ordering this build of MUMPS lacks)");
+  }
+
+
+  FactorCost
+  DistributedFactorisation::cost() const
+  {
+    return solver && solver->factorised ? last_cost : FactorCost();
   }
 
 

@@ -82,6 +82,10 @@ namespace thinlayer
     /// refactorising a matrix on the same pattern (Newton's tangent, every
     /// iteration) reuses it and only redoes the numbers.
     const SparsityPattern *analysed_pattern = nullptr;
+    /// Its size: a pattern at the address of a freed one (a new run in the
+    /// same process) is another pattern.
+    std::size_t analysed_entries = 0;
+    std::size_t analysed_rows    = 0;
     // Reused by every solve, so that it allocates nothing.
     cholmod_dense *x = nullptr, *y = nullptr, *e = nullptr;
   };
@@ -156,6 +160,7 @@ namespace thinlayer
   {
     ++work_counts().factorisations;
     const WorkTimer timer(work_counts().factorisation_seconds);
+    last_cost = FactorCost();
     if (method == Method::umfpack)
       {
         factorize_umfpack(matrix);
@@ -163,7 +168,9 @@ namespace thinlayer
       }
 
     const SparsityPattern *pattern = &matrix.get_sparsity_pattern();
-    if (cholmod->analysed_pattern != pattern)
+    if (cholmod->analysed_pattern != pattern ||
+        cholmod->analysed_entries != pattern->n_nonzero_elements() ||
+        cholmod->analysed_rows != pattern->n_rows())
       cholmod->clear();
     cholmod_common &c = cholmod->common;
     const auto      n = matrix.m();
@@ -198,12 +205,17 @@ namespace thinlayer
       {
         cholmod->factor           = cholmod_l_analyze(A, &c);
         cholmod->analysed_pattern = pattern;
+        cholmod->analysed_entries = pattern->n_nonzero_elements();
+        cholmod->analysed_rows    = pattern->n_rows();
       }
     const bool ok = cholmod->factor != nullptr &&
                     cholmod_l_factorize(A, cholmod->factor, &c) &&
                     c.status == CHOLMOD_OK;
     const int status = c.status;
     cholmod_l_free_sparse(&A, &c);
+    // The symbolic analysis's counts: fl for L L^T, and a multiply-add per
+    // entry of L in each of the two triangular solves.
+    last_cost = ok ? FactorCost{c.fl, 4 * c.lnz} : FactorCost();
     // (min L_jj / max L_jj)^2 of L L^T: the pivot ratio of L D L^T, a pass
     // over the factor's diagonal that a tangent (no minimum) is spared.
     const double pivot_ratio =
@@ -292,6 +304,8 @@ namespace thinlayer
           std::to_string(status) +
           (status == UMFPACK_ERROR_out_of_memory ? ": out of memory)" : ")"));
       }
+    last_cost = {u.info[UMFPACK_FLOPS],
+                 2 * (u.info[UMFPACK_LNZ] + u.info[UMFPACK_UNZ])};
     // min |U_ii| / max |U_ii|.
     const double pivot_ratio = u.info[UMFPACK_RCOND];
     if (pivot_ratio < minimum_pivot_ratio)
@@ -299,6 +313,13 @@ namespace thinlayer
         u.clear();
         throw singular("UMFPACK", pivot_ratio, minimum_pivot_ratio);
       }
+  }
+
+
+  FactorCost
+  FactorisedStiffness::cost() const
+  {
+    return last_cost;
   }
 
 

@@ -6,6 +6,7 @@
 #include <deal.II/lac/petsc_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <thinlayer/solvers/factor_cost.h>
 #include <thinlayer/solvers/singular_matrix.h>
 
 #include <memory>
@@ -56,6 +57,12 @@ namespace thinlayer
     void
     solve(const ArrayView<double> &rows) const;
 
+    /// The operations of the last successful factorisation and of a
+    /// substitution with it, as MUMPS counts them (the same on every
+    /// rank); none before one.
+    FactorCost
+    cost() const;
+
   private:
     /**
      * One attempt of factorize(), with MUMPS's work space as its analysis
@@ -70,6 +77,7 @@ namespace thinlayer
                   const bool                              exact_work_space);
 
     const bool symmetric;
+    FactorCost last_cost;
     /// PETSc's solver state, behind a pointer to keep its headers out.
     struct Solver;
     std::unique_ptr<Solver> solver;

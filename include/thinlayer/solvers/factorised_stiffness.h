@@ -5,6 +5,8 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <thinlayer/solvers/factor_cost.h>
+
 #include <memory>
 
 namespace thinlayer
@@ -84,6 +86,11 @@ namespace thinlayer
     void
     solve(const ArrayView<double> &rhs);
 
+    /// The operations of the last successful factorisation and of a
+    /// substitution with it; none before one.
+    FactorCost
+    cost() const;
+
   private:
     /// factorize() for Method::umfpack.
     void
@@ -97,6 +104,7 @@ namespace thinlayer
     struct Umfpack;
     std::unique_ptr<Cholmod> cholmod;
     std::unique_ptr<Umfpack> umfpack;
+    FactorCost               last_cost;
   };
 } // namespace thinlayer
 
