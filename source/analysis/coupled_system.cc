@@ -211,6 +211,16 @@ namespace thinlayer
   }
 
 
+  FactorCost
+  CoupledSystem::factor_cost() const
+  {
+    if (!held_factor)
+      return FactorCost();
+    return factorisation ? factorisation->cost()
+                         : distributed_factorisation->cost();
+  }
+
+
   types::global_dof_index
   CoupledSystem::row(const unsigned int            m,
                      const types::global_dof_index k) const

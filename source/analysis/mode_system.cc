@@ -34,6 +34,21 @@ namespace thinlayer
   }
 
 
+  FactorCost
+  ModeSystem::elastic_cost() const
+  {
+    if (iterative)
+      return FactorCost();
+    if (distributed_factorisation)
+      return distributed_factorisation->cost();
+    // A spread mode's factor is on its owner alone.
+    const FactorCost local = factorisation.cost();
+    return spread() ? FactorCost{mpi::max(local.factorisation),
+                                 mpi::max(local.substitution)}
+                    : local;
+  }
+
+
   void
   ModeSystem::gather_on_owner(const ModeVector &rhs)
   {

@@ -33,9 +33,9 @@ namespace thinlayer
 
   template <int dim>
   void
-  AcceleratedInitialStressMethod<dim>::give_up_when_slow()
+  AcceleratedInitialStressMethod<dim>::give_up_when_slow(const bool give_up)
   {
-    slow_attempts_given_up = true;
+    slow_attempts_given_up = give_up;
   }
 
 

@@ -32,6 +32,14 @@ namespace thinlayer
 
 
   template <int dim>
+  FactorCost
+  NewtonMethod<dim>::tangent_cost() const
+  {
+    return system ? system->factor_cost() : FactorCost();
+  }
+
+
+  template <int dim>
   unsigned int
   NewtonMethod<dim>::max_iterations() const
   {

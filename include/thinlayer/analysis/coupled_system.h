@@ -90,6 +90,11 @@ namespace thinlayer
     bool
     has_factor() const;
 
+    /// What the held factor cost and what a substitution with it costs;
+    /// nothing known while no factor is held.
+    FactorCost
+    factor_cost() const;
+
     /// @p correction = K_t^-1 @p residual, mode by mode, by the held
     /// factor, with the constrained DoFs set from the constraints.
     void

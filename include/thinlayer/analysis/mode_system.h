@@ -125,6 +125,14 @@ namespace thinlayer
     void
     solve(ModeVector &rhs);
 
+    /**
+     * What this mode's elastic factor costs (the same on every rank; a
+     * collective call where the mode is spread), or nothing known where
+     * an iterative solver takes its place.
+     */
+    FactorCost
+    elastic_cost() const;
+
     /// The first part of solve() for a spread mode: @p rhs whole on its
     /// owner, in whole_rhs. Collective; see IterationAccess::elastic_solve(),
     /// which lets the owners substitute at once.

@@ -33,10 +33,11 @@ namespace thinlayer
      * limit: for a part of a method that has a costlier way to finish the
      * step (NewtonFallbackMethod). On its own the method runs every
      * attempt to its limit, where the growth of the displacement is the
-     * evidence of a mechanism.
+     * evidence of a mechanism. @p give_up: whether to (the default of a
+     * method on its own is not to).
      */
     void
-    give_up_when_slow();
+    give_up_when_slow(const bool give_up);
 
   protected:
     bool

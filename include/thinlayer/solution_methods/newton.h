@@ -39,6 +39,11 @@ namespace thinlayer
     void
     initialize() override;
 
+    /// What the tangent's factor costs: that of the last factorisation,
+    /// nothing known before one.
+    FactorCost
+    tangent_cost() const;
+
   protected:
     bool
     iterate(const double   target,
