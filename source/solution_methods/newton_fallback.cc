@@ -25,10 +25,10 @@ namespace thinlayer
      * How a factorisation's time grows against a substitution's with
      * their operations: as (operations ratio)^0.75. Its dense blocks run at
      * BLAS-3 speed, the faster the larger they are, where a substitution is
-     * bound by memory: a plane-strain tangent (30 substitutions' operations)
-     * factorises in the time of 18, a 3D one (370) in that of 33 to 72,
-     * depending on the processor; the power meets both within a factor
-     * of 1.6, which the rent-or-buy choice tolerates.
+     * bound by memory. A plane-strain tangent's factorisation has some tens
+     * of substitutions' operations and a 3D one some hundreds; the power
+     * meets the times of both, as benchmarks/performance.py prints them,
+     * within a factor of three, which the rent-or-buy choice tolerates.
      */
     constexpr double factorisation_exponent = 0.75;
   } // namespace
