@@ -56,9 +56,9 @@ namespace thinlayer
       "corrections says), with a line search and load-step cut-back; "
       "accelerated with newton "
       "fallback (the default, the one the benchmarks find reliable on every "
-      "scene): accelerated initial stress within a budget of what Newton's "
-      "last step cost, and Newton for a step it cannot converge within "
-      "it.");
+      "scene): accelerated initial stress within a budget of iterations "
+      "set by what a Newton step costs, and Newton for a step it cannot "
+      "converge within it.");
     prm.declare_entry("Anderson depth",
                       "5",
                       Patterns::Integer(1, 50),
