@@ -170,9 +170,10 @@ def scenes(runs, quick):
             missed.append("%s: %s" % (r["scene"], r["most_iterations_away"]))
     why = ("Each scene at its study meshes' finest level (2), by the paper's method on the "
            "file's programme and by the default method. The default method's iterations "
-           "count the accelerated initial-stress attempt (up to its budget, what "
-           "Newton's last step cost; one substitution each) before Newton takes a "
-           "step over. Asked: at most %d "
+           "count the accelerated initial-stress attempt (up to 100 iterations in "
+           "these plane-strain scenes, where a Newton step costs less than the "
+           "accelerated method's whole limit; one substitution each) before Newton "
+           "takes a step over. Asked: at most %d "
            "iterations a step away from collapse (below 90%% of the collapse load). %s" % (
                MOST_ITERATIONS_AWAY,
                "Met on every scene." if not missed else
