@@ -8,10 +8,11 @@
 // is factorised, and only the solvers' own verdicts remain: CHOLMOD refuses a
 // negative pivot, UMFPACK an exactly zero one. The operations each solver
 // counts (FactorisedStiffness::cost()): a substitution with the factor of a
-// tridiagonal matrix of order n (no fill) costs a multiply-add for each
-// entry of L and of U, 4 (2n - 1); factorising a dense matrix of order n
-// costs n^3 / 3 multiply-adds by Cholesky and 2 n^3 / 3 by LU to leading
-// order (within 10% at n = 60), a tridiagonal one O(n).
+// tridiagonal matrix of order n (no fill) costs a multiply-add (two
+// operations) for each of the 2n - 1 entries of L in each of its two
+// triangular solves, 4 (2n - 1); factorising a dense matrix of order n costs
+// n^3 / 3 operations by Cholesky and 2 n^3 / 3 by LU to leading order
+// (within 10% at n = 60), a tridiagonal one O(n).
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
