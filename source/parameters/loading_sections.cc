@@ -72,6 +72,12 @@ namespace thinlayer
   } // namespace
 
 
+  const NameTable<LoadingParameters::StepLength>
+    LoadingParameters::step_length_names = {{StepLength::programme,
+                                             "programme"},
+                                            {StepLength::adaptive, "adaptive"}};
+
+
   void
   LoadingParameters::declare(ParameterHandler &prm)
   {
@@ -99,6 +105,21 @@ namespace thinlayer
       "of its load factor ends the run, the collapse load then bracketed "
       "to it (0.005: 0.5%). 0: the programme as given, the first failed "
       "step ending the run (the paper's way).");
+    prm.declare_entry(
+      "Step length",
+      "programme",
+      Patterns::Selection(step_length_names.pattern()),
+      "With automatic stepping (Collapse resolution > 0): 'programme': no "
+      "step longer than the programme's increment, every target of the "
+      "programme attempted. 'adaptive': the programme gives only the first "
+      "step and where the loading ends; after every easy converged step "
+      "the step doubles, without the programme's bound, after a hard one "
+      "it keeps its length, and after one that took more than half of "
+      "Solver/Maximum iterations it halves. No step reaches past a load "
+      "factor that failed until a state there has converged; one that "
+      "fails twice is bracketed by bisection. The collapse is bracketed to "
+      "the resolution as with the programme. The increments must have one "
+      "sign (a loading, not a cycle).");
     prm.leave_subsection();
   }
 
@@ -155,6 +176,18 @@ namespace thinlayer
                                                file,
                                                outer + "Load increments");
     loading.collapse_resolution = first.collapse_resolution;
+    loading.step_length         = first.step_length;
+    if (loading.step_length == LoadingParameters::StepLength::adaptive &&
+        std::any_of(loading.load_increments.begin(),
+                    loading.load_increments.end(),
+                    [&](const double d) {
+                      return d * loading.load_increments.front() < 0;
+                    }))
+      throw InputError(file,
+                       outer + "Load increments",
+                       "expected increments of one sign with "
+                       "Loading/Step length = adaptive, got '" +
+                         prm.get("Load increments") + "'");
     for (const auto id : opened)
       {
         BoundaryParameters &boundary = boundaries[id];
@@ -194,6 +227,27 @@ namespace thinlayer
                                        file,
                                        "Loading/Load increments");
     collapse_resolution = prm.get_double("Collapse resolution");
+    step_length         = step_length_names.value(prm.get("Step length"));
+    if (step_length == StepLength::adaptive)
+      {
+        if (collapse_resolution == 0)
+          throw InputError(file,
+                           "Loading/Step length",
+                           "expected 'programme' where Loading/Collapse "
+                           "resolution is 0 (the programme run as given); "
+                           "'adaptive' needs automatic stepping");
+        if (std::any_of(load_increments.begin(),
+                        load_increments.end(),
+                        [&](const double d) {
+                          return d * load_increments.front() < 0;
+                        }))
+          throw InputError(file,
+                           "Loading/Step length",
+                           "expected Loading/Load increments of one sign "
+                           "with 'adaptive' (it keeps only the first "
+                           "increment and the end), got '" +
+                             prm.get("Load increments") + "'");
+      }
     prm.leave_subsection();
   }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace thinlayer
 {
@@ -10,6 +11,7 @@ namespace thinlayer
                              const unsigned int       easy_iterations)
     : increments(loading.load_increments)
     , resolution(loading.collapse_resolution)
+    , adaptive(loading.step_length == LoadingParameters::StepLength::adaptive)
     , continue_after_failure(continue_after_failure)
     , easy_iterations(easy_iterations)
     , next_target(0)
@@ -21,6 +23,9 @@ namespace thinlayer
     double sum = 0;
     for (const double d : increments)
       targets.push_back(sum += d);
+    // Adaptive: the end is the only target.
+    if (adaptive)
+      targets = {targets.back()};
   }
 
 
@@ -35,10 +40,16 @@ namespace thinlayer
   LoadStepping::target() const
   {
     // The programme's own target when the step reaches it, so that a run
-    // without cut-backs attempts exactly the programme's load factors.
-    const double remaining = targets[next_target] - accepted;
+    // without cut-backs attempts exactly the programme's load factors; a
+    // failed load factor likewise, where adaptive steps would pass it.
+    const double goal =
+      failures.empty() || std::abs(failures.back().target - accepted) >
+                            std::abs(targets[next_target] - accepted)
+        ? targets[next_target]
+        : failures.back().target;
+    const double remaining = goal - accepted;
     return std::abs(increment) >= std::abs(remaining) * (1 - 1e-12)
-             ? targets[next_target]
+             ? goal
              : accepted + increment;
   }
 
@@ -77,7 +88,7 @@ namespace thinlayer
   {
     if (result.converged)
       {
-        advance(result.iterations <= easy_iterations);
+        advance(result.iterations);
         return Next::accept;
       }
     if (result.non_finite)
@@ -87,13 +98,27 @@ namespace thinlayer
       {
         if (failure_is_final())
           return Next::stop;
-        increment = (target() - accepted) / 2;
+        const double failed = target();
+        if (adaptive)
+          {
+            // A second failure at the same load factor, from nearer: a
+            // limit, not a step too long. (A failure below one that is
+            // bisected is on the bisection.)
+            if (!failures.empty() && failed == failures.back().target)
+              failures.back().bisecting = true;
+            else
+              failures.push_back(
+                {failed,
+                 failed - accepted,
+                 !failures.empty() && failures.back().bisecting});
+          }
+        increment = (failed - accepted) / 2;
         ++step_cuts;
         return Next::retry;
       }
     if (continue_after_failure)
       {
-        advance(false);
+        advance(easy_iterations + 1); // not an easy step
         return Next::accept_failed;
       }
     return Next::stop;
@@ -101,8 +126,9 @@ namespace thinlayer
 
 
   void
-  LoadStepping::advance(const bool easy)
+  LoadStepping::advance(const unsigned int iterations)
   {
+    const bool   easy    = iterations <= easy_iterations;
     const double reached = target();
     // Whether this step was shorter than the programme's: then it grows
     // back towards that.
@@ -112,7 +138,51 @@ namespace thinlayer
     step_cuts = 0;
     if (reached == targets[next_target])
       ++next_target;
+    // A failed load factor converged: its failure came of a step too
+    // long, of which half is the length to go on with (rather than the
+    // short step that reached it). Failures further on still bound the
+    // steps.
+    const bool failure_passed =
+      !failures.empty() && reached == failures.back().target;
+    const double passed_step = failure_passed ? failures.back().step : 0;
+    if (failure_passed)
+      failures.pop_back();
     accepted = reached;
+    if (adaptive)
+      {
+        // Unbounded by the programme: twice as long after an easy step,
+        // half as long after one that took more than twice as many
+        // iterations as an easy one (near the method's budget, where a
+        // longer step would fail or fall back to a dearer method).
+        if (easy)
+          increment *= 2;
+        else if (iterations > 2 * easy_iterations)
+          increment /= 2;
+        if (failure_passed && std::abs(increment) < std::abs(passed_step) / 2)
+          increment = passed_step / 2;
+        // Below a load factor that failed twice, bisect towards it: each
+        // attempt then halves the bracket whether it converges or fails,
+        // where reaching for the failed load factor after every converged
+        // step would fail there once per halving at a limit. Once the
+        // bracket is within the resolution, the failed load factor itself
+        // is tried again with that short step: its failure is the
+        // evidence of a collapse, its convergence shows the failures came
+        // of steps too long. (After its first failure the failed load
+        // factor is tried again from the converged half-way state: where
+        // the step was merely too long, that passes it at once.)
+        if (!failures.empty() && failures.back().bisecting)
+          {
+            const double failed_target = failures.back().target;
+            const double remaining     = failed_target - reached;
+            const double bracket =
+              resolution *
+              std::max(std::abs(failed_target), std::abs(increments.front()));
+            if (std::abs(remaining) > bracket &&
+                std::abs(increment) > std::abs(remaining) / 2)
+              increment = remaining / 2;
+          }
+        return;
+      }
     if (!finished())
       {
         // A step cut short grows back by doubling after an easy one, and

@@ -14,7 +14,9 @@
 // the mesh lacks, one that changes which components are constrained, a gap
 // in the phases' numbers or a Phase 1, a phase that applies nothing, an
 // expression that is no function, a traction on a constrained component,
-// and a load step of 0.
+// and a load step of 0. Adaptive step lengths where the programme is run
+// as given (Collapse resolution = 0), and on a programme, or a phase's,
+// that unloads after it loads.
 #include "../common/bad_input_utilities.h"
 
 using namespace bad_input;
@@ -144,6 +146,23 @@ namespace
     check("a phase's traction on a constrained component",
           phase("Phase 2/Boundary 1/Traction=1; 0"));
     check("a phase's load step of 0", phase("Phase 2/Load increments=0"));
+    const std::string adaptive = "Loading/Step length=adaptive";
+    check("adaptive step lengths with the programme run as given",
+          {"good.prm", "-s", adaptive, "-s", "Loading/Collapse resolution=0"});
+    check("adaptive step lengths on a programme that loads and unloads",
+          {"good.prm",
+           "-s",
+           adaptive,
+           "-s",
+           "Loading/Load increments=0.5, 0.5, -1"});
+    check("adaptive step lengths on a phase that loads and unloads",
+          {"good.prm",
+           "-s",
+           adaptive,
+           "-s",
+           "Phase 2/Boundary 2/Traction=0; -1",
+           "-s",
+           "Phase 2/Load increments=1, -0.5"});
   }
 } // namespace
 

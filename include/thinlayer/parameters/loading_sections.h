@@ -29,6 +29,19 @@ namespace thinlayer
     /// runs the programme as given (LoadStepping).
     double collapse_resolution;
 
+    /// How the step length is chosen with automatic stepping.
+    enum class StepLength
+    {
+      /// Each step at most the programme's increment, its targets all
+      /// attempted.
+      programme,
+      /// The programme's first increment and end only; the steps between
+      /// grow with the ease of the last one (LoadStepping).
+      adaptive
+    };
+    StepLength                         step_length = StepLength::programme;
+    static const NameTable<StepLength> step_length_names;
+
     static void
     declare(ParameterHandler &prm);
     void

@@ -28,6 +28,18 @@ namespace thinlayer
    * always ends the run: going on from a collapsed state would only
    * bracket the same collapse again at every step).
    *
+   * With Loading/Step length = adaptive the programme's targets between
+   * its first step and its end are dropped: the first step is the
+   * programme's first increment, and the step doubles after every easy
+   * step, keeps its length after a hard one and halves after one that
+   * took more than twice an easy one's iterations, unbounded by the
+   * programme's increments. A programme of small steps near collapse then
+   * costs as many steps as the response needs rather than as many as its
+   * author wrote. A load factor whose attempt failed is never passed until
+   * a state there converged (the step reaches it, not beyond): growing
+   * past a failure would only fail again where the failure is a limit.
+   * One that fails again from nearer is bisected (advance()).
+   *
    * The stepping decides only which load factor comes next; whether a
    * failure that ends a run is a collapse is the run's to judge
    * (run_scene()), and so is whether a converged step is to count as one
@@ -94,15 +106,17 @@ namespace thinlayer
 
 
   private:
-    /// Move on after a step to target() was accepted; @p easy: it may
-    /// grow.
+    /// Move on after a step to target() was accepted, which took
+    /// @p iterations: it may grow where they were few.
     void
-    advance(const bool easy);
+    advance(const unsigned int iterations);
 
     const std::vector<double> increments;
     const double              resolution;
-    const bool                continue_after_failure;
-    const unsigned int        easy_iterations;
+    /// Loading/Step length = adaptive.
+    const bool         adaptive;
+    const bool         continue_after_failure;
+    const unsigned int easy_iterations;
     /// The programme's targets: running sums of the increments.
     std::vector<double> targets;
     /// The programme target being walked to.
@@ -114,6 +128,18 @@ namespace thinlayer
     /// Halvings of the current step.
     unsigned int                  step_cuts;
     static constexpr unsigned int max_step_cuts = 60;
+    /// Adaptive: a load factor beyond the accepted one whose attempt
+    /// failed, the length of that step, and whether it failed again from
+    /// nearer (a limit, bracketed by bisection).
+    struct Failure
+    {
+      double target;
+      double step;
+      bool   bisecting;
+    };
+    /// The failures no step has passed yet, the nearest last: no step
+    /// reaches past it.
+    std::vector<Failure> failures;
   };
 } // namespace thinlayer
 
