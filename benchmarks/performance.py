@@ -18,7 +18,11 @@ to the collapse load (2 + pi)c:
   rather than by a factor of every tangent;
 - the default method with adaptive step lengths (Loading/Step length =
   adaptive): the file's first step and end only, the steps between grown
-  from the iterations of the last one.
+  from the iterations of the last one;
+- the default method under work control (Loading/Control = work): after
+  the file's first step each step prescribes the work of the load, the
+  load factor found with the displacements, the collapse reached as the
+  plateau of the load.
 Each row gives the outcome and bracket, the error of the collapse load, the
 work (iterations, factorisations, substitutions, sweeps over the Gauss
 points), the median wall time of --repeat runs and its ratio to the paper's
@@ -30,9 +34,10 @@ too) and performance.png (time against equations, log-log, the ways as
 series, one substitution and one factorisation drawn as the floors).
 Then, with --scenes, the benchmark scenes with thin layers at their study
 meshes' finest level (2): Case 2 at aspect ratios 1000 and 10000, Case 3 at
-10, each by the paper's method on the file's programme and by the default
-method, with the knee beside the collapse and the most iterations an
-accepted step took away from collapse (below 90% of the collapse load, or
+10, each by the paper's method on the file's programme, by the default
+method, and by the default method under work control, with the knee
+beside the collapse and the most iterations an accepted step took away
+from collapse (below 90% of the collapse load, or
 of the last converged load where there is none): performance-scenes.csv
 and .md.
 Then, with --scenes-3d K,K, the 3D scenes on their files' meshes (the rigid
@@ -76,6 +81,7 @@ WAYS = [
     ("default method, Newton's corrections by GMRES on a kept factor",
      DEFAULT + ("Solver/Newton corrections=krylov",)),
     ("default method, adaptive step length", DEFAULT + ("Loading/Step length=adaptive",)),
+    ("default method, work control", DEFAULT + ("Loading/Control=work",)),
 ]
 # The default method's tolerance (the paper's ways set theirs).
 TOLERANCE = "1e-4"
@@ -158,7 +164,7 @@ def chart(rows):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(figsize=(6.4, 4.6))
-    for (label, _), style in zip(WAYS, ("o-", "s--", "^-", "v-", "d:", "x-.")):
+    for (label, _), style in zip(WAYS, ("o-", "s--", "^-", "v-", "d:", "x-.", "P-")):
         shown = [r for r in rows if r["way"] == label]
         ax.plot([r["equations"] for r in shown], [r["wall_median_s"] for r in shown], style,
                 label=label)
@@ -187,7 +193,9 @@ def chart(rows):
 # The thin-layer scenes: (case, aspect ratio) at mesh level 2, and the ways.
 SCENES = [("case2", 1000), ("case2", 10000), ("case3", 10)]
 SCENE_WAYS = [("paper", "paper's method, the scene's programme", ()),
-              ("default", "default method", DEFAULT_METHOD)]
+              ("default", "default method", DEFAULT_METHOD),
+              ("work", "default method, work control",
+               DEFAULT_METHOD + ("Loading/Control=work",))]
 # A step "away from collapse": below this share of the collapse load.
 AWAY = 0.9
 

@@ -140,6 +140,15 @@ namespace thinlayer
                        "prescribed displacement and unit weight (of a "
                        "Fourier body: in harmonic 0, symmetric) is 0; "
                        "expected at least one that is not");
+    for (const auto &system : systems)
+      if (parameters.loading.control == LoadingParameters::Control::work &&
+          system->unit_prescribed_displacement.linfty_norm() > 0)
+        throw InputError(parameters.parameter_file,
+                         "Loading/Control",
+                         "'work' prescribes the work of the loads, but the "
+                         "load factor also scales prescribed displacements "
+                         "here (a Boundary's Displacement); expected 'load', "
+                         "or a loading by tractions, pressures and weight");
 
     if (kinematics.is_fourier())
       return;

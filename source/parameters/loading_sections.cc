@@ -78,6 +78,10 @@ namespace thinlayer
                                             {StepLength::adaptive, "adaptive"}};
 
 
+  const NameTable<LoadingParameters::Control> LoadingParameters::control_names =
+    {{Control::load, "load"}, {Control::work, "work"}};
+
+
   void
   LoadingParameters::declare(ParameterHandler &prm)
   {
@@ -120,6 +124,23 @@ namespace thinlayer
       "fails twice is bracketed by bisection. The collapse is bracketed to "
       "the resolution as with the programme. The increments must have one "
       "sign (a loading, not a cycle).");
+    prm.declare_entry(
+      "Control",
+      "load",
+      Patterns::Selection(control_names.pattern()),
+      "What each load step prescribes. 'load': its load factor, the "
+      "programme's. 'work': after the programme's first step, the work of "
+      "the loads on the step, f^T du, the load factor found with the "
+      "displacements (the indirect continuation of Sysala, Cermak and "
+      "Ligursky): the load factor rises towards the limit as the work "
+      "grows, so the collapse is reached without a step that fails, as the "
+      "plateau of the load (the work doubles at most per step, and the "
+      "step grows as with Step length = adaptive); the run also ends where "
+      "the load factor reaches the programme's end. For a loading by "
+      "tractions, pressures and weight (no prescribed displacement), by "
+      "Solver/Method = newton or the default method (Newton throughout), in "
+      "the Loading section's phase; with automatic stepping (Collapse "
+      "resolution > 0).");
     prm.leave_subsection();
   }
 
@@ -228,6 +249,20 @@ namespace thinlayer
                                        "Loading/Load increments");
     collapse_resolution = prm.get_double("Collapse resolution");
     step_length         = step_length_names.value(prm.get("Step length"));
+    control             = control_names.value(prm.get("Control"));
+    if (control == Control::work && collapse_resolution == 0)
+      throw InputError(file,
+                       "Loading/Control",
+                       "expected 'load' where Loading/Collapse resolution "
+                       "is 0 (the programme run as given); 'work' ends at "
+                       "the plateau of the load, which needs automatic "
+                       "stepping");
+    if (control == Control::work && load_increments.front() < 0)
+      throw InputError(file,
+                       "Loading/Control",
+                       "expected a first load increment > 0 with 'work' (its "
+                       "step sets the scale of the work), got '" +
+                         prm.get("Load increments") + "'");
     if (step_length == StepLength::adaptive)
       {
         if (collapse_resolution == 0)

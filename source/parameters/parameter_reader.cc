@@ -465,6 +465,23 @@ namespace thinlayer
       // work unrecorded (up to 5 x 25 factorisations per failed attempt).
       if (p.loading.collapse_resolution > 0)
         p.solver.max_cut_backs = 0;
+      using Method = SolverParameters::Method;
+      if (p.loading.control == LoadingParameters::Control::work &&
+          p.solver.method != Method::newton &&
+          p.solver.method != Method::accelerated_with_newton_fallback)
+        throw InputError(
+          file,
+          "Loading/Control",
+          "'work' finds the load factor with Newton's "
+          "tangent; expected Solver/Method = newton or the "
+          "default (accelerated with newton fallback), got '" +
+            SolverParameters::method_names.name(p.solver.method) + "'");
+      if (p.loading.control == LoadingParameters::Control::work &&
+          p.strength_reduction.active())
+        throw InputError(file,
+                         "Loading/Control",
+                         "expected 'load' with a strength reduction (its "
+                         "phase raises a factor, not a load)");
       p.monitors.parse(prm, file, p.kinematics);
       check_monitors_and_phases(p);
       p.reference.parse(prm, file, p.mesh);

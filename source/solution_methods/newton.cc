@@ -2,6 +2,7 @@
 #include <thinlayer/solvers/singular_matrix.h>
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 
 namespace thinlayer
@@ -28,6 +29,40 @@ namespace thinlayer
         : FactorisedStiffness::Method::cholmod);
     system->reinit(
       [&analysis](const DofSink &add) { analysis.add_coupled_sparsity(add); });
+    load_rhs      = analysis.new_mode_vectors();
+    load_response = load_rhs;
+  }
+
+
+  template <int dim>
+  bool
+  NewtonMethod<dim>::supports_work_control() const
+  {
+    return true;
+  }
+
+
+  template <int dim>
+  bool
+  NewtonMethod<dim>::correct_load_factor(double &dlambda)
+  {
+    IterationAccess<dim> &analysis = this->analysis;
+    for (unsigned int m = 0; m < analysis.n_modes(); ++m)
+      {
+        const ModeSystem &mode = analysis.get_mode_system(m);
+        load_rhs[m]            = mode.unit_load;
+        mode.condense(load_rhs[m]);
+      }
+    system->solve(load_rhs, load_response);
+    const double along_load = this->work_of(load_response);
+    if (!(along_load > 0) || !std::isfinite(along_load))
+      return false;
+    const double work = this->work_of(analysis.get_step_increment()) +
+                        this->work_of(this->correction);
+    dlambda = (this->step_work - work) / along_load;
+    for (unsigned int m = 0; m < analysis.n_modes(); ++m)
+      this->correction[m].add(dlambda, load_response[m]);
+    return true;
   }
 
 
@@ -93,6 +128,11 @@ namespace thinlayer
         norms = this->evaluate_residual(target, /*tangents=*/true);
         return true;
       }
+    // Under work control the load factor is corrected with the
+    // displacements, and scaled with them by the line search.
+    double dlambda = 0;
+    if (this->work_control && !correct_load_factor(dlambda))
+      return false;
     this->remember_increments();
 
     // Backtracking on |r|_2: halve the step until the residual falls
@@ -107,7 +147,9 @@ namespace thinlayer
             increment             = this->previous_increment[m];
             increment.add(scale, this->correction[m]);
           }
-        norms = this->evaluate_residual(target, /*tangents=*/true);
+        this->load_factor_now = target + scale * dlambda;
+        norms =
+          this->evaluate_residual(this->load_factor_now, /*tangents=*/true);
         if (norms.l2 <= (1 - 1e-4 * scale) * initial || trial == 4)
           break;
         scale /= 2;
@@ -131,8 +173,9 @@ namespace thinlayer
     forcing_term = maximum_forcing_term;
     // The attempt whose failure would end the run solves its corrections
     // exactly throughout: a collapse is where Newton fails, not where an
-    // inexact correction did.
-    exact_corrections = this->final_attempt;
+    // inexact correction did. Under work control every correction is
+    // exact: the load factor's comes from a factor of this tangent.
+    exact_corrections = this->final_attempt || this->work_control;
   }
 
 

@@ -105,6 +105,8 @@ namespace thinlayer
   StepResult
   NewtonFallbackMethod<dim>::solve_step(const double new_load_factor)
   {
+    if (work_control)
+      return newton.solve_step(new_load_factor);
     StepResult first{0, false, 0, 0};
     if (newton_steps_left > 0)
       --newton_steps_left;
@@ -158,6 +160,23 @@ namespace thinlayer
   {
     accelerated.state_rejected();
     newton.state_rejected();
+  }
+
+
+  template <int dim>
+  bool
+  NewtonFallbackMethod<dim>::supports_work_control() const
+  {
+    return true;
+  }
+
+
+  template <int dim>
+  void
+  NewtonFallbackMethod<dim>::set_work_control(const bool on)
+  {
+    newton.set_work_control(on);
+    work_control = on;
   }
 
 

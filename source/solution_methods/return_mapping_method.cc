@@ -40,6 +40,43 @@ namespace thinlayer
     accepted_increment = analysis.get_step_increment();
     accepted_step      = analysis.accepted_load_factor() - accepted_load_factor;
     accepted_load_factor = analysis.accepted_load_factor();
+    accepted_step_work   = work_of(accepted_increment);
+  }
+
+
+  template <int dim>
+  void
+  ReturnMappingMethod<dim>::set_work_control(const bool on)
+  {
+    SolutionMethod<dim>::set_work_control(on);
+    work_control = on;
+  }
+
+
+  template <int dim>
+  double
+  ReturnMappingMethod<dim>::work_of(const ModeVectors &displacements) const
+  {
+    double work = 0;
+    for (unsigned int m = 0; m < analysis.n_modes(); ++m)
+      work += analysis.get_mode_system(m).unit_load * displacements[m];
+    return work;
+  }
+
+
+  template <int dim>
+  void
+  ReturnMappingMethod<dim>::predict_by_work()
+  {
+    const double scale =
+      accepted_step_work > 0 ? step_work / accepted_step_work : 0;
+    for (unsigned int m = 0; m < analysis.n_modes(); ++m)
+      {
+        ModeVector &increment = analysis.get_step_increment()[m];
+        increment             = accepted_increment[m];
+        increment *= scale;
+      }
+    load_factor_now = analysis.accepted_load_factor();
   }
 
 
@@ -180,7 +217,17 @@ namespace thinlayer
   StepResult
   ReturnMappingMethod<dim>::solve_step(const double new_load_factor)
   {
-    StepResult  result{0, false, 0, 0};
+    StepResult result{0, false, 0, 0};
+    // Under work control the argument is the step's work, and the step is
+    // one attempt: the stepping halves the work of one that fails.
+    if (work_control)
+      {
+        step_work          = new_load_factor;
+        result.converged   = attempt(new_load_factor, result);
+        result.load_factor = load_factor_now;
+        result.work        = work_of(analysis.get_step_increment());
+        return result;
+      }
     SubStepping parts(analysis.accepted_load_factor(),
                       new_load_factor,
                       max_cut_backs());
@@ -204,6 +251,7 @@ namespace thinlayer
         else
           this->state_rejected();
       }
+    result.work = work_of(analysis.get_step_increment());
     return result;
   }
 
@@ -212,17 +260,23 @@ namespace thinlayer
   bool
   ReturnMappingMethod<dim>::attempt(const double target, StepResult &result)
   {
-    predict(target);
+    if (work_control)
+      predict_by_work();
+    else
+      {
+        predict(target);
+        load_factor_now = target;
+      }
     start_attempt();
 
-    ResidualNorms norms = starting_residual(target);
+    ResidualNorms norms = starting_residual(load_factor_now);
     watch.start();
     for (unsigned int k = 0; k < max_iterations(); ++k)
       {
         if (interrupted())
           return false;
         ++result.iterations;
-        if (!iterate(target, norms, result))
+        if (!iterate(load_factor_now, norms, result))
           return false;
         result.plastic_points = norms.n_yielding;
         if (converged(norms))

@@ -36,6 +36,24 @@ namespace thinlayer
 
 
   template <int dim>
+  bool
+  SolutionMethod<dim>::supports_work_control() const
+  {
+    return false;
+  }
+
+
+  template <int dim>
+  void
+  SolutionMethod<dim>::set_work_control(const bool on)
+  {
+    AssertThrow(!on || supports_work_control(),
+                ExcMessage("This solution method cannot take steps under "
+                           "work control."));
+  }
+
+
+  template <int dim>
   void
   SolutionMethod<dim>::report_acceptance_to(SolutionMethod<dim> &composite)
   {

@@ -82,11 +82,17 @@ namespace thinlayer
         result.last_converged_load = 1;
         result.load_factor_origin  = 1;
       }
+    // Under work control the programme's first step alone is taken by
+    // its load factor; run_by_work() goes on from its state.
+    const bool by_work = loading.control == LoadingParameters::Control::work;
+    LoadingParameters first_step = loading;
+    if (by_work)
+      first_step.load_increments = {loading.load_increments.front()};
     // An easy step: at most a quarter of the constant-stiffness
     // iteration limit (Newton's steps take a few iterations each).
-    LoadStepping stepping(loading,
+    LoadStepping stepping(by_work ? first_step : loading,
                           p.solver.continue_after_failure,
-                          p.solver.max_iterations / 4);
+                          easy_iterations());
     while (!stepping.finished())
       {
         const Attempt a = attempt(phase.steps_before + stepping.step(),
@@ -157,9 +163,104 @@ namespace thinlayer
           probe_beyond(a);
         break;
       }
+    if (by_work && stepping.finished() && !result.stopped &&
+        result.interrupted_by == 0)
+      run_by_work();
     // A run that stops on a failure holds that attempt's state.
     write_last_state(result.stopped && !result.stopped_on_plateau);
     return result;
+  }
+
+
+  template <int dim>
+  unsigned int
+  Programme<dim>::easy_iterations() const
+  {
+    // Under work control every step is Newton's.
+    return (work_control ? p.solver.max_newton_iterations
+                         : p.solver.max_iterations) /
+           4;
+  }
+
+
+  template <int dim>
+  void
+  Programme<dim>::run_by_work()
+  {
+    constexpr double doubling_margin = 0.05;
+    double           end             = 0;
+    for (const double d : loading.load_increments)
+      end += d;
+    solver.set_work_control(true);
+    work_control   = true;
+    result.by_work = true;
+    // The first step's work sets the scale; the work at most doubles per
+    // step, so that the plateau rule, judged over a doubling of the
+    // displacement, has a state at least every doubling.
+    double step = accepted_work;
+    while (true)
+      {
+        // Up to a little more than the work done so far: along the
+        // plateau the displacement grows with the work, and a step that
+        // doubles both exactly leaves the doubling to round-off.
+        step = std::min(step, (1 + doubling_margin) * accepted_work);
+        const bool final = step <= loading.collapse_resolution * accepted_work;
+        const Attempt a =
+          attempt(phase.steps_before + result.steps_run + 1, step, final);
+        if (interrupted())
+          {
+            result.interrupted_by          = interruption_signal();
+            result.interrupted_load_factor = a.load_factor;
+            solver.reject();
+            break;
+          }
+        const LoadStepping::Next next = a.result.converged
+                                          ? LoadStepping::Next::accept
+                                        : final ? LoadStepping::Next::stop
+                                                : LoadStepping::Next::retry;
+        record(a, next);
+        if (next == LoadStepping::Next::retry)
+          {
+            solver.reject();
+            step /= 2;
+            continue;
+          }
+        ++result.steps_run;
+        if (a.result.converged)
+          {
+            accept(a);
+            if (a.on_plateau)
+              {
+                result.stopped            = true;
+                result.stopped_on_plateau = true;
+                result.bracket_resolved   = true;
+                break;
+              }
+            // The load the programme ends at, reached without a collapse.
+            if (std::abs(a.load_factor) >= std::abs(end) * (1 - 1e-12))
+              break;
+            if (a.result.iterations <= easy_iterations())
+              step *= 2;
+            else if (a.result.iterations > 2 * easy_iterations())
+              step /= 2;
+            continue;
+          }
+        // A step of the resolution's work that fails: no bracket of the
+        // load factor (the steps never asked for one), a failure.
+        if (result.converged)
+          result.first_failed_load = a.load;
+        result.converged          = false;
+        result.stopped            = true;
+        result.against_load       = a.against_load;
+        result.non_finite         = a.result.non_finite;
+        result.failed_load_factor = a.load_factor;
+        result.bracket_resolved   = false;
+        result.stiffness_ratio    = a.stiffness_ratio;
+        result.growth_ratio       = a.result.growth_ratio;
+        break;
+      }
+    solver.set_work_control(false);
+    work_control = false;
   }
 
 
@@ -235,14 +336,18 @@ namespace thinlayer
               false};
     {
       TimerOutput::Scope scope(timer, "load steps");
+      // Under work control the load factor is found by the step: the
+      // accepted one is shown while it runs.
       const StepProgress progress(out,
                                   step,
-                                  load_factor,
+                                  work_control ? analysis.accepted_load_factor()
+                                               : load_factor,
                                   p.output.progress_interval);
       if (phase.strength_reduction)
         analysis.reduce_strength(1 + load_factor);
-      a.result = solver.solve(load_factor, final);
-      a.load   = phase.strength_reduction ? 1 + load_factor : monitors.load();
+      a.result      = solver.solve(load_factor, final);
+      a.load_factor = a.result.load_factor;
+      a.load = phase.strength_reduction ? 1 + load_factor : monitors.load();
       result.displacement = monitors.displacement();
     }
     if (!std::isfinite(a.load) || !std::isfinite(result.displacement.mean))
@@ -258,7 +363,12 @@ namespace thinlayer
     // iterations have found a spurious equilibrium (seen with the
     // default method on Case 3's layer at aspect ratio 10000, at
     // displacements 1e9 times the elastic ones). It is a failed attempt.
-    if (a.result.converged && under_load() && a.stiffness_ratio < 0)
+    // Under work control the work on the increment is positive by
+    // construction, and on a perfectly plastic plateau the load factor
+    // stays where it is to round-off, either way: only a fall beyond the
+    // collapse resolution is against the load there.
+    const double against = work_control ? -loading.collapse_resolution : 0.;
+    if (a.result.converged && under_load() && a.stiffness_ratio < against)
       {
         a.result.converged = false;
         a.against_load     = true;
@@ -393,9 +503,13 @@ namespace thinlayer
   void
   Programme<dim>::accept(const Attempt &a)
   {
+    // A step under work control on the plateau may leave the load factor
+    // where it was: its stiffness is then the last one.
     const double stiffness =
-      (a.load - result.last_converged_load) /
-      (a.load_factor - result.last_converged_load_factor);
+      a.load_factor != result.last_converged_load_factor
+        ? (a.load - result.last_converged_load) /
+            (a.load_factor - result.last_converged_load_factor)
+        : result.last_stiffness;
     if (!result.any_step_converged)
       result.first_stiffness = stiffness;
     if (a.on_mechanism && !result.knee_passed && result.any_step_converged)
@@ -422,6 +536,8 @@ namespace thinlayer
     result.converged_displacement     = result.displacement;
     result.converged_iterations       = result.total_iterations;
     result.any_step_converged         = true;
+    if (std::isfinite(a.result.work))
+      accepted_work += a.result.work;
     if (a.result.max_yield_ratio > 10 * p.solver.tolerance)
       ++result.steps_with_drift;
     solver.accept();

@@ -243,6 +243,16 @@ namespace thinlayer
         s.collapse_load = run.plateau_load;
         s.reason        = plateau(run);
       }
+    else if (run.by_work)
+      s.reason =
+        "a step under work control failed" + at(run.failed_load_factor) +
+        " at the resolution's fraction of the work done, before the load "
+        "reached its plateau: a step that prescribes work asks for no load "
+        "factor, so its failure brackets no collapse (" +
+        evidence(run) +
+        "); where the whole body slides as a rigid mechanism (zero-thickness "
+        "interface elements), its tangent is singular and only Loading/"
+        "Control = load brackets the collapse";
     else if (shows_mechanism(run.stiffness_ratio, run.growth_ratio))
       {
         s.outcome         = "collapse";

@@ -1,5 +1,7 @@
 #include <thinlayer/stepping/step_solver.h>
 
+#include <cmath>
+
 namespace thinlayer
 {
   template <int dim>
@@ -22,9 +24,17 @@ namespace thinlayer
   StepSolver<dim>::solve(const double load_factor, const bool final)
   {
     method->set_final_attempt(final);
-    StepResult       result = method->solve_step(load_factor);
-    const StateCheck check  = analysis.end_attempt(load_factor);
-    result.max_yield_ratio  = check.max_yield_ratio;
+    StepResult result = method->solve_step(load_factor);
+    if (!work_control)
+      result.load_factor = load_factor;
+    else if (!std::isfinite(result.load_factor))
+      {
+        // No load factor to hold the state at: the accepted one's.
+        result.non_finite  = true;
+        result.load_factor = analysis.accepted_load_factor();
+      }
+    const StateCheck check = analysis.end_attempt(result.load_factor);
+    result.max_yield_ratio = check.max_yield_ratio;
     if (!check.finite)
       {
         result.non_finite = true;
@@ -37,6 +47,15 @@ namespace thinlayer
         result.converged       = false;
       }
     return result;
+  }
+
+
+  template <int dim>
+  void
+  StepSolver<dim>::set_work_control(const bool on)
+  {
+    method->set_work_control(on);
+    work_control = on;
   }
 
 

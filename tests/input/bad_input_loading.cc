@@ -16,7 +16,10 @@
 // expression that is no function, a traction on a constrained component,
 // and a load step of 0. Adaptive step lengths where the programme is run
 // as given (Collapse resolution = 0), and on a programme, or a phase's,
-// that unloads after it loads.
+// that unloads after it loads. Work control (Loading/Control = work) with
+// the programme as given, with a method other than Newton's, with a
+// strength reduction to follow, and where the load factor also scales a
+// prescribed displacement.
 #include "../common/bad_input_utilities.h"
 
 using namespace bad_input;
@@ -163,6 +166,23 @@ namespace
            "Phase 2/Boundary 2/Traction=0; -1",
            "-s",
            "Phase 2/Load increments=1, -0.5"});
+    const std::string work = "Loading/Control=work";
+    check("work control with the programme run as given",
+          {"good.prm", "-s", work, "-s", "Loading/Collapse resolution=0"});
+    check("work control by the paper's method",
+          {"good.prm", "-s", work, "-s", "Solver/Method=viscoplastic"});
+    check("work control with a strength reduction to follow",
+          {"good.prm",
+           "-s",
+           work,
+           "-s",
+           "Material 1/Yield criterion=tresca",
+           "-s",
+           "Material 1/Cohesion=1",
+           "-s",
+           "Strength reduction/Materials=1"});
+    check("work control where a displacement is prescribed",
+          {"good.prm", "-s", work, "-s", "Boundary 1/Displacement=0; -0.001"});
   }
 } // namespace
 

@@ -42,6 +42,18 @@ namespace thinlayer
     StepLength                         step_length = StepLength::programme;
     static const NameTable<StepLength> step_length_names;
 
+    /// What each step of the loading prescribes.
+    enum class Control
+    {
+      /// The load factor: the programme's targets.
+      load,
+      /// The work of the load on the step, f^T du: the load factor is an
+      /// unknown of the step (Programme::run_by_work()).
+      work
+    };
+    Control                         control = Control::load;
+    static const NameTable<Control> control_names;
+
     static void
     declare(ParameterHandler &prm);
     void

@@ -44,6 +44,10 @@ namespace thinlayer
     FactorCost
     tangent_cost() const;
 
+    /// Yes: the tangent's factor solves for the load direction too.
+    bool
+    supports_work_control() const override;
+
   protected:
     bool
     iterate(const double   target,
@@ -93,6 +97,19 @@ namespace thinlayer
     solve_correction(const ResidualNorms &norms, StepResult &result);
 
     /**
+     * Under work control: the correction of the load factor, with which
+     * the step's increment does the step's work, and the correction of
+     * the displacements made to go with it. With a = K_t^-1 f (the factor
+     * just made) and du the correction at the present load factor, the
+     * load factor's correction dl makes f^T (u + du + dl a) the step's
+     * work (Sysala et al.'s indirect continuation, a bordered system
+     * solved by two substitutions); du gains dl a. False where f^T a is
+     * not positive (the tangent no longer positive along the load).
+     */
+    bool
+    correct_load_factor(double &dlambda);
+
+    /**
      * The relative tolerance of the next Krylov solve (an inexact Newton
      * method's forcing term): Eisenstat and Walker's choice 2 from the
      * residual's last reduction, at most maximum_forcing_term, and no
@@ -118,6 +135,10 @@ namespace thinlayer
 
     /// The tangent over all modes, and its factors.
     std::unique_ptr<CoupledSystem> system;
+    /// Under work control, per mode: the unit loads condensed, and the
+    /// tangent's response to them.
+    ModeVectors load_rhs;
+    ModeVectors load_response;
   };
 } // namespace thinlayer
 

@@ -77,6 +77,14 @@ namespace thinlayer
     void
     set_final_attempt(const bool final) override;
 
+    /// Yes, by Newton alone: the accelerated method's corrections come of
+    /// the elastic factor, which gives no load factor's correction.
+    bool
+    supports_work_control() const override;
+
+    void
+    set_work_control(const bool on) override;
+
   private:
     /**
      * What Newton's step @p step cost, in iterations of the cheap method:
@@ -103,6 +111,8 @@ namespace thinlayer
     unsigned int budget = 0;
     /// Where Newton is cheap: it has converged a step and takes them all.
     bool newton_only = false;
+    /// Under work control every step is Newton's.
+    bool work_control = false;
     /// Where Newton is dear: what the cheap method's last attempt cost
     /// (one more than its budget where it failed), the steps still to go
     /// to Newton directly, and how many the next failure sends there.

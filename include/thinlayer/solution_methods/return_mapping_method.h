@@ -77,6 +77,12 @@ namespace thinlayer
     void
     state_accepted() override;
 
+    /// Under work control each attempt starts from the secant predictor
+    /// scaled to the step's work, and a derived class that supports it
+    /// corrects load_factor_now with the displacements.
+    void
+    set_work_control(const bool on) override;
+
   protected:
     /**
      * One iteration towards the load factor @p target: from the modes'
@@ -131,6 +137,21 @@ namespace thinlayer
     void
     remember_increments();
 
+    /// The work of the unit loads on @p displacements, sum over the modes
+    /// of f_m^T u_m: what work control prescribes of a step's increment.
+    double
+    work_of(const ModeVectors &displacements) const;
+
+    /// Loading/Control = work (set_work_control()).
+    bool work_control = false;
+    /// Under work control: the work f^T du the attempt's increment is to
+    /// have.
+    double step_work = 0;
+    /// The load factor the attempt's residual is evaluated at: the target
+    /// under load control; under work control an unknown that the
+    /// iterations correct.
+    double load_factor_now = 0;
+
     const SolverParameters &parameters;
     IterationAccess<dim>   &analysis;
     /// Per mode: the correction of the step increment, and the step
@@ -158,6 +179,8 @@ namespace thinlayer
     ModeVectors accepted_increment;
     double      accepted_step        = 0;
     double      accepted_load_factor = 0;
+    /// The work of the loads on accepted_increment.
+    double accepted_step_work = 0;
     /// Per mode: the nodal forces of the stress excess (trial less
     /// returned stresses); and a work vector.
     ModeVectors stress_excess;
@@ -171,6 +194,15 @@ namespace thinlayer
      */
     void
     predict(const double target);
+
+    /**
+     * Under work control: the secant predictor scaled to the step's work,
+     * from the accepted load factor (near the limit a load factor scaled
+     * with the work would start beyond it; the first correction finds
+     * it); none where no step has been accepted yet.
+     */
+    void
+    predict_by_work();
 
     /// Iterations from the accepted state to @p target; true if converged.
     bool

@@ -48,6 +48,23 @@ namespace thinlayer
     virtual StepResult
     solve_step(const double new_load_factor) = 0;
 
+    /**
+     * Whether the method can take steps under work control (Loading/
+     * Control = work): Newton's, whose tangent gives the load factor's
+     * correction with the displacements'.
+     */
+    virtual bool
+    supports_work_control() const;
+
+    /**
+     * From now on (@p on) or no longer, each solve_step() is given the
+     * work of the loads on the step, f^T du, rather than its load factor,
+     * and finds the load factor with the displacements
+     * (StepResult::load_factor).
+     */
+    virtual void
+    set_work_control(const bool on);
+
     /// The body has accepted the current state (a step, or a converged
     /// part of one): what the method keeps of a state is now that of the
     /// accepted one.

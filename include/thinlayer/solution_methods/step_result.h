@@ -36,6 +36,12 @@ namespace thinlayer
     /// (GrowthMonitor; near 2 while it creeps along a mechanism); NaN
     /// otherwise.
     double growth_ratio = std::numeric_limits<double>::quiet_NaN();
+    /// The load factor of the step's state: the one asked for under load
+    /// control, the one found under work control (StepSolver::solve()).
+    double load_factor = std::numeric_limits<double>::quiet_NaN();
+    /// The work of the loads on the step's displacement increment, f^T du
+    /// (summed over the modes), where the method knows it; NaN otherwise.
+    double work = std::numeric_limits<double>::quiet_NaN();
   };
 } // namespace thinlayer
 

@@ -102,6 +102,29 @@ namespace thinlayer
     run();
 
   private:
+    /// Converged steps that took at most this many iterations are easy:
+    /// the next may be longer.
+    unsigned int
+    easy_iterations() const;
+
+    /**
+     * Loading/Control = work, after the programme's first step: each step
+     * prescribes the work of the loads on it, f^T du, and its load factor
+     * is found with its displacements (Sysala et al.'s indirect
+     * continuation). As the work grows the load factor rises towards the
+     * limit, where the displacements grow without it: the collapse is
+     * reached as the plateau of the load (a step that lands there ends
+     * the run), with no attempt beyond the limit to fail. The first
+     * step's work is the scale; a step's work doubles after an easy step,
+     * halves after one over half the iteration limit and after a failure,
+     * and never exceeds the work done so far (the work at most doubles, so
+     * the plateau rule has a state every doubling). A failure at the
+     * resolution's fraction of the work done ends the run, unbracketed;
+     * so does reaching the programme's end.
+     */
+    void
+    run_by_work();
+
     /// The fields (and a Fourier body's revolved view) of the current
     /// state, as step @p step at @p load_factor.
     void
@@ -204,6 +227,10 @@ namespace thinlayer
     /// The states of the curve recorded so far, for Output/Fields
     /// interval.
     unsigned int curve_states = 0;
+    /// The work of the loads on the accepted steps, f^T u (where the
+    /// method says it), and whether steps are under work control.
+    double accepted_work = 0;
+    bool   work_control  = false;
     /// The step and load factor of the last accepted state, if its fields
     /// are not written.
     std::optional<std::pair<unsigned int, double>> unwritten_state;

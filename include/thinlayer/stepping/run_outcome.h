@@ -160,6 +160,10 @@ namespace thinlayer
     /// Under load: the step that ended it converged on the plateau
     /// (plateau_load), at the collapse resolution.
     bool stopped_on_plateau = false;
+    /// The steps prescribed the work of the loads (Loading/Control =
+    /// work): a failed one asked for no load factor, so it brackets
+    /// nothing.
+    bool by_work = false;
     /// The step that ended it converged to a state moving against its load
     /// (negative secant stiffness): no state the body can reach, since
     /// under a load increment an elastic-plastic body does positive work

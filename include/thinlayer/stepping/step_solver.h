@@ -47,6 +47,15 @@ namespace thinlayer
     StepResult
     solve(const double load_factor, const bool final = true);
 
+    /**
+     * From now on (@p on) or no longer, solve() is given the work of the
+     * loads on the step (f^T du) rather than its load factor, and the
+     * load factor is found with the displacements (StepResult::
+     * load_factor; Loading/Control = work).
+     */
+    void
+    set_work_control(const bool on);
+
     /// A new phase has begun (StepAccess::begin_phase()): the method starts
     /// afresh, keeping nothing of the last phase's steps (its predictor).
     void
@@ -65,6 +74,8 @@ namespace thinlayer
     std::unique_ptr<SolutionMethod<dim>> method;
     /// Solver/Tolerance: TOL.
     double tolerance;
+    /// set_work_control().
+    bool work_control = false;
   };
 } // namespace thinlayer
 
