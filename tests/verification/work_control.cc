@@ -17,10 +17,16 @@
 //   collapse: the run reports no collapse it has not found ("not
 //   converged"), never a bracket from a failed step that asked for no
 //   load factor.
+// The same on two ranks (the bordered solve by the distributed factor).
+#include <deal.II/base/mpi.h>
+
+#include <thinlayer/parallel/mpi.h>
+
 #include <cmath>
 #include <cstdio>
 #include <string>
 
+#include "../common/parallel_truths.h"
 #include "../common/run_results.h"
 #include "../common/truths.h"
 
@@ -49,6 +55,8 @@ namespace
         "Mesh/Geometry parameters=half_width=1, width=5, depth=3, "
         "n_footing=6, n_side=10, n_depth=8, growth=1.2");
     run_results::run_prm(prm, settings);
+    // Rank 0 writes the results; every rank reads them once written.
+    MPI_Barrier(thinlayer::mpi::communicator());
     const auto summary = run_results::summary("results");
     const auto bracket = summary["collapse_load_factor_bracket"];
     const bool collapse =
@@ -73,8 +81,10 @@ namespace
 
 
 int
-main()
+main(int argc, char **argv)
 {
+  dealii::Utilities::MPI::MPI_InitFinalize mpi_session(argc, argv, 1);
+  truths::print_on_rank_zero();
   using truths::expect;
   {
     const Run work = run("case1-inclined-adhesive.prm", "work", false);
