@@ -24,10 +24,10 @@ import time
 
 from thinlayer_tools import THINLAYER, TOP, mpirun, run_module
 from thinlayer_tools import overrides as command_line_overrides
-from thinlayer_tools.report import (bearing_capacity, case1, case4, curved, earth_pressure,
-                                    footings, limits, methods, page, parallel, phases, pile,
-                                    pile_lateral, scaling, solid, speed, strength_reduction,
-                                    wall_friction, weight)
+from thinlayer_tools.report import (bearing_capacity, case1, case4, continuation, curved,
+                                    earth_pressure, footings, limits, methods, page, parallel,
+                                    phases, pile, pile_lateral, scaling, solid, speed,
+                                    strength_reduction, wall_friction, weight)
 from thinlayer_tools.report.runs import DEFAULT, PAPER, Runs
 
 ALL_ALPHAS = "alpha = 10, 20, 30, 40, 45, 50, 60, 70, 80"
@@ -104,6 +104,9 @@ def run_list(quick):
              for name, scene, overrides, ranks in parallel.RUNS]
     runs += [(parallel.amg_run_name(name, ranks), scene, overrides + ("Output/Write VTU=false",),
               ranks) for name, scene, overrides, ranks in parallel.AMG_RUNS]
+    # How the stepping reaches a collapse: the programme, adaptive steps,
+    # work control.
+    runs += continuation.run_list(quick)
     # Time and memory against size and ranks.
     runs += scaling.run_list(quick)
     # 3D bodies: Case 1 extruded, the rigid disc both ways.
@@ -211,7 +214,7 @@ def sections(runs, quick):
             + phases.sections(runs, quick) + pile.sections(runs, quick)
             + pile_lateral.sections(runs, quick)
             + curved.sections(runs, quick)
-            + speed.sections(runs, quick)
+            + continuation.sections(runs, quick) + speed.sections(runs, quick)
             + parallel.sections(runs, quick) + scaling.sections(runs, quick)
             + solid.sections(runs, quick))
 
