@@ -69,6 +69,17 @@ namespace thinlayer
     }
 
 
+    /// Whether the increments of a programme all have one sign: a loading
+    /// rather than a cycle.
+    bool
+    of_one_sign(const std::vector<double> &increments)
+    {
+      return std::none_of(increments.begin(),
+                          increments.end(),
+                          [&](const double d) {
+                            return d * increments.front() < 0;
+                          });
+    }
   } // namespace
 
 
@@ -199,11 +210,7 @@ namespace thinlayer
     loading.collapse_resolution = first.collapse_resolution;
     loading.step_length         = first.step_length;
     if (loading.step_length == LoadingParameters::StepLength::adaptive &&
-        std::any_of(loading.load_increments.begin(),
-                    loading.load_increments.end(),
-                    [&](const double d) {
-                      return d * loading.load_increments.front() < 0;
-                    }))
+        !of_one_sign(loading.load_increments))
       throw InputError(file,
                        outer + "Load increments",
                        "expected increments of one sign with "
@@ -271,11 +278,7 @@ namespace thinlayer
                            "expected 'programme' where Loading/Collapse "
                            "resolution is 0 (the programme run as given); "
                            "'adaptive' needs automatic stepping");
-        if (std::any_of(load_increments.begin(),
-                        load_increments.end(),
-                        [&](const double d) {
-                          return d * load_increments.front() < 0;
-                        }))
+        if (!of_one_sign(load_increments))
           throw InputError(file,
                            "Loading/Step length",
                            "expected Loading/Load increments of one sign "
