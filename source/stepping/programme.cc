@@ -198,6 +198,11 @@ namespace thinlayer
     // step, so that the plateau rule, judged over a doubling of the
     // displacement, has a state at least every doubling.
     double step = accepted_work;
+    // The loads did positive work on the first step's elastic-plastic
+    // increment (f^T K^-1 f > 0): the setup refused loadings without loads.
+    AssertThrow(accepted_work > 0 && std::isfinite(accepted_work),
+                ExcMessage("Work control found no positive work of the "
+                           "loads on the programme's first step."));
     while (true)
       {
         // Up to a little more than the work done so far: along the
