@@ -120,9 +120,10 @@ else
 
   # valgrind: a plane-strain scene (the default method, Newton included), a
   # Fourier one, one with zero-thickness interface elements (the mesh
-  # split along a curve, Newton's singular tangent at the mechanism), and
-  # two 3D ones (hexahedra, a layer's surface profile; a mesh split along a
-  # surface and 16-node interface elements), with their VTU output.
+  # split along a curve, Newton's singular tangent at the mechanism), one
+  # under work control (Newton's bordered solve), and two 3D ones
+  # (hexahedra, a layer's surface profile; a mesh split along a surface and
+  # 16-node interface elements), with their VTU output.
   # Two lanes of about a minute each, side by side (one scene per core).
   mkdir -p "$build/valgrind"
   valgrind_scenes() {
@@ -136,7 +137,7 @@ else
       fi
     done
   }
-  valgrind_scenes case1_3d_zero_thickness fourier_cylinder_plastic &
+  valgrind_scenes case1_3d_zero_thickness fourier_cylinder_plastic case2_work_control &
   lane_a=$!
   valgrind_scenes case1_3d_default case2_default_thin case2_zero_thickness &
   lane_b=$!

@@ -18,9 +18,13 @@ namespace thinlayer
     /// One line of progress on screen for an attempt, as it ends. A failed
     /// step's state is no equilibrium, and its numbers depend on rounding:
     /// they go to history.csv (where the mechanism can be seen), not here.
+    /// Under work control (@p from_load_factor finite) a failed attempt's
+    /// load factor is such a number too: the line names the accepted load
+    /// factor the step started from instead.
     void
     print_attempt(const unsigned int       step,
                   const double             load_factor,
+                  const double             from_load_factor,
                   const double             load,
                   const double             displacement,
                   const StepResult        &result,
@@ -31,8 +35,12 @@ namespace thinlayer
                   const bool               print_iterations,
                   std::ostream            &out)
     {
-      out << "  step " << printf("%4.0f", step) << "  load factor "
-          << printf("%10.4g", load_factor);
+      if (!result.converged && std::isfinite(from_load_factor))
+        out << "  step " << printf("%4.0f", step) << "  from load factor "
+            << printf("%10.4g", from_load_factor);
+      else
+        out << "  step " << printf("%4.0f", step) << "  load factor "
+            << printf("%10.4g", load_factor);
       if (result.converged && next == LoadStepping::Next::retry)
         out << (on_plateau ? "  converged on the plateau of the load"
                 : doubled  ? "  converged, more than doubling the "
@@ -456,6 +464,8 @@ namespace thinlayer
     }
     print_attempt(a.step,
                   a.load_factor,
+                  work_control ? analysis.accepted_load_factor()
+                               : std::numeric_limits<double>::quiet_NaN(),
                   a.load,
                   result.displacement.mean,
                   a.result,
