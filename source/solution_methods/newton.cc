@@ -43,16 +43,27 @@ namespace thinlayer
 
 
   template <int dim>
+  void
+  NewtonMethod<dim>::set_work_control(const bool on)
+  {
+    ReturnMappingMethod<dim>::set_work_control(on);
+    // The phase's loads stay as they are while it runs: condensed once.
+    IterationAccess<dim> &analysis = this->analysis;
+    if (on)
+      for (unsigned int m = 0; m < analysis.n_modes(); ++m)
+        {
+          const ModeSystem &mode = analysis.get_mode_system(m);
+          load_rhs[m]            = mode.unit_load;
+          mode.condense(load_rhs[m]);
+        }
+  }
+
+
+  template <int dim>
   bool
   NewtonMethod<dim>::correct_load_factor(double &dlambda)
   {
     IterationAccess<dim> &analysis = this->analysis;
-    for (unsigned int m = 0; m < analysis.n_modes(); ++m)
-      {
-        const ModeSystem &mode = analysis.get_mode_system(m);
-        load_rhs[m]            = mode.unit_load;
-        mode.condense(load_rhs[m]);
-      }
     system->solve(load_rhs, load_response);
     const double along_load = this->work_of(load_response);
     if (!(along_load > 0) || !std::isfinite(along_load))

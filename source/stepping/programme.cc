@@ -185,8 +185,8 @@ namespace thinlayer
   Programme<dim>::easy_iterations() const
   {
     // Under work control every step is Newton's.
-    return (work_control ? p.solver.max_newton_iterations
-                         : p.solver.max_iterations) /
+    return (result.by_work ? p.solver.max_newton_iterations
+                           : p.solver.max_iterations) /
            4;
   }
 
@@ -200,7 +200,6 @@ namespace thinlayer
     for (const double d : loading.load_increments)
       end += d;
     solver.set_work_control(true);
-    work_control   = true;
     result.by_work = true;
     // The first step's work sets the scale; the work at most doubles per
     // step, so that the plateau rule, judged over a doubling of the
@@ -273,7 +272,6 @@ namespace thinlayer
         break;
       }
     solver.set_work_control(false);
-    work_control = false;
   }
 
 
@@ -353,8 +351,9 @@ namespace thinlayer
       // accepted one is shown while it runs.
       const StepProgress progress(out,
                                   step,
-                                  work_control ? analysis.accepted_load_factor()
-                                               : load_factor,
+                                  result.by_work
+                                    ? analysis.accepted_load_factor()
+                                    : load_factor,
                                   p.output.progress_interval);
       if (phase.strength_reduction)
         analysis.reduce_strength(1 + load_factor);
@@ -380,7 +379,7 @@ namespace thinlayer
     // construction, and on a perfectly plastic plateau the load factor
     // stays where it is to round-off, either way: only a fall beyond the
     // collapse resolution is against the load there.
-    const double against = work_control ? -loading.collapse_resolution : 0.;
+    const double against = result.by_work ? -loading.collapse_resolution : 0.;
     if (a.result.converged && under_load() && a.stiffness_ratio < against)
       {
         a.result.converged = false;
@@ -464,8 +463,8 @@ namespace thinlayer
     }
     print_attempt(a.step,
                   a.load_factor,
-                  work_control ? analysis.accepted_load_factor()
-                               : std::numeric_limits<double>::quiet_NaN(),
+                  result.by_work ? analysis.accepted_load_factor()
+                                 : std::numeric_limits<double>::quiet_NaN(),
                   a.load,
                   result.displacement.mean,
                   a.result,

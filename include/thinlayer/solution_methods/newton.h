@@ -48,6 +48,10 @@ namespace thinlayer
     bool
     supports_work_control() const override;
 
+    /// Also condenses the phase's unit loads for correct_load_factor().
+    void
+    set_work_control(const bool on) override;
+
   protected:
     bool
     iterate(const double   target,
@@ -135,8 +139,8 @@ namespace thinlayer
 
     /// The tangent over all modes, and its factors.
     std::unique_ptr<CoupledSystem> system;
-    /// Under work control, per mode: the unit loads condensed, and the
-    /// tangent's response to them.
+    /// Under work control, per mode: the unit loads condensed (by
+    /// set_work_control()), and the tangent's response to them.
     ModeVectors load_rhs;
     ModeVectors load_response;
   };

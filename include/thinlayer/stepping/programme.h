@@ -228,9 +228,9 @@ namespace thinlayer
     /// interval.
     unsigned int curve_states = 0;
     /// The work of the loads on the accepted steps, f^T u (where the
-    /// method says it), and whether steps are under work control.
+    /// method says it). Whether the steps are under work control is
+    /// result.by_work.
     double accepted_work = 0;
-    bool   work_control  = false;
     /// The step and load factor of the last accepted state, if its fields
     /// are not written.
     std::optional<std::pair<unsigned int, double>> unwritten_state;
