@@ -55,7 +55,7 @@ import argparse
 import math
 import os
 
-from thinlayer_tools import cases, results
+from thinlayer_tools import cases, results, speed_targets
 from thinlayer_tools.report.runs import DEFAULT as DEFAULT_METHOD, PAPER
 from thinlayer_tools.report.speed import fit_exponent
 
@@ -75,9 +75,9 @@ DEFAULT = DEFAULT_METHOD + ("Loading/Collapse resolution=0.005",)
 DEFAULT_SEVEN = DEFAULT + (cases.PAPER_FIXED_STEPS[1],)
 # label, entries.
 WAYS = [
-    ("paper's method, 7 fixed steps", PAPER_FIXED),
+    (speed_targets.PAPER_FIXED, PAPER_FIXED),
     ("paper's method, automatic stepping", PAPER_AUTOMATIC),
-    ("default method, automatic stepping", DEFAULT),
+    (speed_targets.DEFAULT, DEFAULT),
     ("default method, 7 steps cut back", DEFAULT_SEVEN),
     ("default method, Newton's corrections by GMRES on a kept factor",
      DEFAULT + ("Solver/Newton corrections=krylov",)),
@@ -157,7 +157,15 @@ def table(rows):
         exponent = fit_exponent(points)
         lines.append("| %s | %s | %d |" % (label, "%.2f" % exponent if exponent else "-",
                                            len(points)))
+    lines += targets(speed_targets.prandtl(rows, fit_exponent))
     page.write(common.OUT, "performance", common.TITLES["performance"], lines, mode="a")
+
+
+def targets(verdicts):
+    """The targets' verdicts as markdown lines, printed too."""
+    lines = ["", "Targets:", ""] + speed_targets.table(verdicts)
+    print("\n".join(lines), flush=True)
+    return lines
 
 
 def chart(rows):
@@ -194,7 +202,7 @@ def chart(rows):
 # The thin-layer scenes: (case, aspect ratio) at mesh level 2, and the ways.
 SCENES = [("case2", 1000), ("case2", 10000), ("case3", 10)]
 SCENE_WAYS = [("paper", "paper's method, the scene's programme", ()),
-              ("default", "default method", DEFAULT_METHOD),
+              ("default", speed_targets.SCENE_DEFAULT, DEFAULT_METHOD),
               ("work", "default method, work control",
                DEFAULT_METHOD + ("Loading/Control=work",))]
 # A step "away from collapse": below this share of the collapse load.
@@ -242,6 +250,9 @@ def measure_scenes(repeat):
             "%.4f" % r["knee_load"] if r["knee_load"] == r["knee_load"] else "-",
             r["total_iterations"], r["factorisations"], r["substitutions"],
             r["most_iterations_away"], r["wall_median_s"], r["peak_memory_mb"]))
+    page.write(common.OUT, "performance-scenes", common.TITLES["performance-scenes"],
+               targets(speed_targets.scenes(rows)),
+               mode="a")
     return rows
 
 
@@ -256,7 +267,8 @@ def measure_scenes(repeat):
 SCENES_3D = [("prm/circular-footing-rigid-3d.prm", 60.0, 0.2, False),
              ("prm/case3-circular-footing-3d-zero-thickness.prm", 120.0, None, True),
              ("prm/case3-circular-footing-3d.prm", None, None, True)]
-WAYS_3D = [("default method", DEFAULT_METHOD + ("Solver/Newton corrections=factorised",)),
+WAYS_3D = [(speed_targets.SCENE_DEFAULT,
+            DEFAULT_METHOD + ("Solver/Newton corrections=factorised",)),
            ("default method, Newton's corrections by GMRES on a kept factor",
             DEFAULT_METHOD + ("Solver/Newton corrections=krylov",)),
            ("accelerated initial stress alone",
@@ -326,6 +338,9 @@ def measure_scenes_3d(repeat, which):
                       r["substitutions"], r["sweeps"], number(r["ms_per_factorisation"], "%.0f"),
                       r["ms_per_substitution"], r["wall_median_s"], r["peak_memory_mb"],
                       r["peak_kb_per_dof"], r["verdict"]))
+    page.write(common.OUT, "performance-3d", common.TITLES["performance-3d"],
+               targets(speed_targets.scenes(rows, iterations=False) +
+                       speed_targets.large_3d(rows)), mode="a")
     return rows
 
 

@@ -149,6 +149,7 @@ TITLES = {
     "table1": "Table 1 by the default method",
     "performance": "Time to answer on Prandtl's footing",
     "performance-scenes": "Time to answer on the thin-layer scenes",
+    "performance-3d": "Time to answer on the 3D scenes",
 }
 
 
