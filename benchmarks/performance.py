@@ -48,7 +48,10 @@ the default method with adaptive step lengths; under work control, on the
 scenes under load), with the Krylov iterations,
 the peak memory per DoF and each target's verdict (the rigid footing in
 60 s with at most one factorisation per five Newton iterations, Case 3 in
-120 s): performance-3d.csv and .md.
+120 s): performance-3d.csv and .md, and performance-3d.png (the time of
+every way on every scene, the targets drawn, the ways that missed the
+scene's answer hatched).
+Under each table the targets' verdicts (thinlayer_tools.speed_targets).
 Results are measurements, not tests: quote them with the machine.
 """
 import argparse
@@ -338,10 +341,56 @@ def measure_scenes_3d(repeat, which):
                       r["substitutions"], r["sweeps"], number(r["ms_per_factorisation"], "%.0f"),
                       r["ms_per_substitution"], r["wall_median_s"], r["peak_memory_mb"],
                       r["peak_kb_per_dof"], r["verdict"]))
+    chart_3d(rows)
     page.write(common.OUT, "performance-3d", common.TITLES["performance-3d"],
                targets(speed_targets.scenes(rows, iterations=False) +
                        speed_targets.large_3d(rows)), mode="a")
     return rows
+
+
+def chart_3d(rows):
+    """performance-3d.png: the median wall time of every way on every 3D
+    scene, bars grouped by scene, each scene's time target drawn; a way
+    that did not reach the scene's answer (speed_targets.scene_answer())
+    is hatched."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.patches
+    import matplotlib.pyplot as plt
+    scenes = list(dict.fromkeys(r["scene"] for r in rows))
+    fig, ax = plt.subplots(figsize=(9.6, 4.6))
+    width = 0.8 / len(WAYS_3D)
+    seen = set()
+    for k, (label, _) in enumerate(WAYS_3D):
+        for i, scene in enumerate(scenes):
+            here = [r for r in rows if r["scene"] == scene]
+            row = next((r for r in here if r["way"] == label), None)
+            if row is None:
+                continue
+            answer = speed_targets.scene_answer(here)
+            reached = answer is not None and speed_targets.same_answer(answer)(row)
+            ax.bar(i + (k - (len(WAYS_3D) - 1) / 2) * width, row["wall_median_s"], width,
+                   color="C%d" % k, hatch=None if reached else "//", edgecolor="black",
+                   linewidth=0.5, label=label if i == 0 or k not in seen else None)
+            seen.add(k)
+    for i, scene in enumerate(scenes):
+        target = next((t for p, t, _, _ in SCENES_3D
+                       if os.path.splitext(os.path.basename(p))[0] == scene), None)
+        if target is not None:
+            ax.plot([i - 0.45, i + 0.45], [target, target], "k--", linewidth=1)
+    ax.plot([], [], "k--", linewidth=1, label="target")
+    ax.add_artist(matplotlib.patches.Rectangle((0, 0), 0, 0, facecolor="white", hatch="//",
+                                               edgecolor="black", linewidth=0.5,
+                                               label="no answer (hatched)"))
+    ax.set_xticks(range(len(scenes)))
+    ax.set_xticklabels(scenes, fontsize=7)
+    ax.set_yscale("log")
+    ax.set_ylabel("wall time to the answer [s] (median)")
+    ax.set_title("3D scenes: time to answer per way", fontsize=9)
+    ax.grid(alpha=0.3, which="both", axis="y")
+    ax.legend(fontsize=6, loc="upper left", bbox_to_anchor=(1.01, 1))
+    fig.tight_layout()
+    fig.savefig(os.path.join(common.OUT, "performance-3d.png"), dpi=100)
 
 
 def performance(sizes, repeat, skip=None, scenes=False, scenes_3d=None):

@@ -201,8 +201,12 @@ def scenes_3d(runs, quick):
                speed_targets.LARGE_DOFS, speed_targets.LARGE_SECONDS,
                speed_targets.LARGE_KB_PER_DOF,
                "Met." if not missed else "Missed: " + "; ".join(missed) + "."))
+    chart = os.path.join(runs.directory, "benchmarks", "performance-3d.png")
+    shown = [(figures.embed(chart), "Median wall time of every way on every 3D scene "
+              "(log scale); dashed: the scene's time target; hatched: a way that did not "
+              "reach the scene's answer.")] if os.path.isfile(chart) else []
     return Section("time-to-answer-3d", title, "(not in the paper)",
-                   "beyond" if not missed else "differs", why, rows=table,
+                   "beyond" if not missed else "differs", why, rows=table, figures=shown,
                    cost="%.0f s of runs" % sum(
                        float(r["wall_median_s"]) * int(r["runs"]) for r in rows),
                    paper_value="(not in the paper)",
