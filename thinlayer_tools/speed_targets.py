@@ -21,6 +21,9 @@ MOST_ITERATIONS_AWAY = 8
 # Two runs of a scene give the same answer when they end alike and their
 # collapse loads differ by no more than the scenes' collapse resolution.
 SAME_ANSWER = 0.005
+# Outcomes that answer nothing: a run stopped from outside, or one whose
+# last step failed without a bracket.
+NO_ANSWER = ("interrupted", "not converged")
 # The 3D scene of at least this many DoFs, on two ranks: its time and peak
 # memory per DoF.
 LARGE_DOFS = 250000
@@ -125,7 +128,7 @@ def same_answer(reference):
     """Whether a row ends as @p reference does, its collapse load within
     SAME_ANSWER of @p reference's."""
     def reaches(row):
-        if row["outcome"] != reference["outcome"]:
+        if row["outcome"] != reference["outcome"] or row["outcome"] in NO_ANSWER:
             return False
         a, b = value(row, "collapse_load"), value(reference, "collapse_load")
         if not (math.isfinite(a) and math.isfinite(b)):

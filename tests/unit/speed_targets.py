@@ -110,6 +110,9 @@ scene = [scene_row("paper", "collapse", 0.98, 2), scene_row("default method", "c
 check(t.scenes(scene)[0]["measured"].startswith("collapse 1.0000; the answer collapse 1.0000"),
       "two ways apart, one each: the higher load (a converged state, the better lower bound)")
 
+scene = [scene_row("default method", "interrupted", None, 900)]
+check([v["verdict"] for v in t.scenes(scene)[:2]] == ["missed", "missed"],
+      "an interrupted run alone answers nothing")
 large = t.large_3d([{"scene": "s", "way": "default method", "dofs": 40000}])
 check(len(large) == 1 and large[0]["verdict"] == "missed" and large[0]["measured"] == "not run",
       "no scene of 250k DoFs: missed, not run")

@@ -17,9 +17,11 @@ DEFAULT = speed_targets.DEFAULT
 def benchmark_arguments(quick):
     """benchmarks/performance.py's arguments: 512 cells once for --quick
     (it exercises the script in CI's half hour), else 2048 to 32768 cells,
-    the thin-layer scenes and the 3D scenes, medians of three."""
+    the thin-layer scenes and the 3D scenes, medians of three, and the
+    large 3D scene once."""
     return ["--cells", "512", "--repeat", "1"] if quick else \
-        ["--cells", "2048,8192,32768", "--repeat", "3", "--scenes", "--scenes-3d", "0,1,2,3,4"]
+        ["--cells", "2048,8192,32768", "--repeat", "3", "--scenes", "--scenes-3d", "0,1,2,3,4",
+         "--large-3d"]
 
 
 def read(directory):
