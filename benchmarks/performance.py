@@ -172,10 +172,8 @@ def table(rows):
 
 
 def targets(verdicts):
-    """The targets' verdicts as markdown lines, printed too."""
-    lines = ["", "Targets:", ""] + speed_targets.table(verdicts)
-    print("\n".join(lines), flush=True)
-    return lines
+    """The targets' verdicts as markdown lines (page.write() prints them)."""
+    return ["", "Targets:", ""] + speed_targets.table(verdicts)
 
 
 def chart(rows):

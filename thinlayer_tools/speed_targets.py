@@ -169,7 +169,7 @@ def scenes(rows, iterations=True, default_label=SCENE_DEFAULT):
             % (100 * SAME_ANSWER), scene,
             "%s %s; the answer %s %s (%s)" % (default["outcome"], figure(default),
                                               answer["outcome"], figure(answer),
-                                              "; ".join(agreeing)),
+                                              "; ".join(agreeing) or "no way"),
             reaches(default)))
         verdicts.append(fastest_method(here, default_label, reaches, scene))
         if iterations and "most_iterations_away" in default:
