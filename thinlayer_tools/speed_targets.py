@@ -21,6 +21,11 @@ MOST_ITERATIONS_AWAY = 8
 # Two runs of a scene give the same answer when they end alike and their
 # collapse loads differ by no more than the scenes' collapse resolution.
 SAME_ANSWER = 0.005
+# Two times closer than this share are the same time: medians of three runs
+# of one computation on the 2-core machines differ by up to some percent
+# (the 3D rigid footing by the default method and by accelerated initial
+# stress alone do the same 2263 iterations).
+TIME_NOISE = 0.05
 # Outcomes that answer nothing: a run stopped from outside, or one whose
 # last step failed without a bracket.
 NO_ANSWER = ("interrupted", "not converged")
@@ -70,7 +75,8 @@ def fastest(rows, reaches):
 
 def fastest_method(rows, default_label, reaches, where):
     """The default way (@p default_label) against the fastest way of
-    another method that reaches the answer; the fastest way of all named."""
+    another method that reaches the answer, equal within TIME_NOISE; the
+    fastest way of all named."""
     default = next((r for r in rows if r["way"] == default_label), None)
     if default is None:
         return None
@@ -84,7 +90,8 @@ def fastest_method(rows, default_label, reaches, where):
         "%s, %.2f s" % (rival["way"], value(rival, "wall_median_s")) if rival else "none answers")
     if best is not None and best is not default:
         measured += "; fastest way: %s, %.2f s" % (best["way"], value(best, "wall_median_s"))
-    met = reaches(default) and (rival is None or seconds <= value(rival, "wall_median_s"))
+    met = reaches(default) and (
+        rival is None or seconds <= (1 + TIME_NOISE) * value(rival, "wall_median_s"))
     return verdict("the default method is the fastest method to the answer", where,
                    measured, met)
 

@@ -6,7 +6,7 @@ speed_targets), on rows made up so that each verdict is known.
   of (2 + pi)c (1.000 - 1.005 does, the paper's 1.00 - 1.02 does not), a
   plateau when it does; a run that did not end in collapse never does.
 - The default method is the fastest method when no other method's way to
-  the answer is faster; the default method's own other ways (another
+  the answer is faster by more than 5% (the medians' noise); the default method's own other ways (another
   stepping) do not count against it, and a faster way that missed the
   answer does not either.
 - Times growing as equations^1.1 meet the exponent target of 1.15, as
@@ -68,6 +68,9 @@ check(by_target(verdicts, "equations^")[0]["verdict"] == "missed",
 rows[1]["wall_median_s"] = 5.0
 check(by_target(t.prandtl(rows, fit_exponent), "fastest method")[0]["verdict"] == "missed",
       "the paper's automatic stepping in 5 s beats the default's 6 s")
+rows[1]["wall_median_s"] = 5.75
+check(by_target(t.prandtl(rows, fit_exponent), "fastest method")[0]["verdict"] == "met",
+      "6 s against 5.75 s is within the 5% the machines' medians vary by")
 
 for power, expected in ((1.1, "met"), (1.2, "missed")):
     sized = [prandtl_row(t.DEFAULT, 1.0, 1.005, 1e-3 * e ** power, cells=c, equations=e)
