@@ -291,6 +291,24 @@ WAYS_3D = [(speed_targets.SCENE_DEFAULT,
 UNDER_LOAD_ONLY = {4}
 
 
+def row_3d(scene, way, summary, seconds, runs, peak, verdict):
+    """A row of performance-3d.csv: @p way on @p scene, from the run's
+    @p summary, its (median) wall @p seconds over @p runs, @p peak MB."""
+    return {
+        "scene": scene, "equations": summary["equations"], "dofs": summary["dofs"],
+        "way": way, "outcome": summary["outcome"],
+        "collapse_load": results.collapse_load(summary),
+        "relative_error": results.collapse_error(summary),
+        "total_iterations": summary["total_iterations"],
+        "factorisations": summary["factorisations"],
+        "krylov_iterations": summary.get("krylov_iterations", 0),
+        "substitutions": summary["substitutions"], "sweeps": summary["sweeps"],
+        "ms_per_factorisation": 1e3 * (summary["seconds_per_factorisation"] or math.nan),
+        "ms_per_substitution": 1e3 * summary["seconds_per_substitution"],
+        "wall_median_s": seconds, "runs": runs, "peak_memory_mb": peak,
+        "peak_kb_per_dof": 1024 * peak / summary["dofs"], "verdict": verdict}
+
+
 def measure_scenes_3d(repeat, which, large=False):
     """Every way of WAYS_3D (numbered in @p which) on every 3D scene; with
     @p large, the large scene too (measure_large_3d())."""
@@ -316,19 +334,8 @@ def measure_scenes_3d(repeat, which, large=False):
                     "met" if per_iteration <= factorisation_target else "missed",
                     per_iteration))
             targets_s[name] = seconds_target
-            rows.append({
-                "scene": name, "equations": summary["equations"], "dofs": summary["dofs"],
-                "way": label, "outcome": summary["outcome"],
-                "collapse_load": results.collapse_load(summary),
-                "relative_error": results.collapse_error(summary),
-                "total_iterations": newton, "factorisations": summary["factorisations"],
-                "krylov_iterations": summary.get("krylov_iterations", 0),
-                "substitutions": summary["substitutions"], "sweeps": summary["sweeps"],
-                "ms_per_factorisation": 1e3 * (summary["seconds_per_factorisation"] or math.nan),
-                "ms_per_substitution": 1e3 * summary["seconds_per_substitution"],
-                "wall_median_s": median, "runs": repeat, "peak_memory_mb": peak,
-                "peak_kb_per_dof": 1024 * peak / summary["dofs"],
-                "verdict": "; ".join(verdicts) or "no target set"})
+            rows.append(row_3d(name, label, summary, median, repeat, peak,
+                               "; ".join(verdicts) or "no target set"))
             print(rows[-1], flush=True)
     if large:
         rows.append(measure_large_3d())
@@ -406,21 +413,10 @@ def measure_large_3d():
     summary, seconds = run_until(LARGE_PRM, LARGE_GEOMETRY, LARGE_RANKS, directory,
                                  WAYS_3D[0][1], speed_targets.LARGE_SECONDS)
     peak = LARGE_RANKS * summary["peak_memory_mb_per_rank"]
-    row = {
-        "scene": "circular-footing-rigid-3d, %d DoFs, %d ranks" % (summary["dofs"], LARGE_RANKS),
-        "equations": summary["equations"], "dofs": summary["dofs"], "way": WAYS_3D[0][0],
-        "outcome": summary["outcome"], "collapse_load": results.collapse_load(summary),
-        "relative_error": results.collapse_error(summary),
-        "total_iterations": summary["total_iterations"],
-        "factorisations": summary["factorisations"],
-        "krylov_iterations": summary.get("krylov_iterations", 0),
-        "substitutions": summary["substitutions"], "sweeps": summary["sweeps"],
-        "ms_per_factorisation": 1e3 * (summary["seconds_per_factorisation"] or math.nan),
-        "ms_per_substitution": 1e3 * summary["seconds_per_substitution"],
-        "wall_median_s": seconds, "runs": 1, "peak_memory_mb": peak,
-        "peak_kb_per_dof": 1024 * peak / summary["dofs"],
-        "verdict": "stopped at %.0f s" % speed_targets.LARGE_SECONDS
-        if summary["outcome"] == "interrupted" else "-"}
+    row = row_3d("circular-footing-rigid-3d, %d DoFs, %d ranks" % (summary["dofs"], LARGE_RANKS),
+                 WAYS_3D[0][0], summary, seconds, 1, peak,
+                 "stopped at %.0f s" % speed_targets.LARGE_SECONDS
+                 if summary["outcome"] == "interrupted" else "-")
     print(row, flush=True)
     return row
 

@@ -35,12 +35,10 @@ namespace thinlayer
                   const bool               print_iterations,
                   std::ostream            &out)
     {
-      if (!result.converged && std::isfinite(from_load_factor))
-        out << "  step " << printf("%4.0f", step) << "  from load factor "
-            << printf("%10.4g", from_load_factor);
-      else
-        out << "  step " << printf("%4.0f", step) << "  load factor "
-            << printf("%10.4g", load_factor);
+      const bool from = !result.converged && std::isfinite(from_load_factor);
+      out << "  step " << printf("%4.0f", step)
+          << (from ? "  from load factor " : "  load factor ")
+          << printf("%10.4g", from ? from_load_factor : load_factor);
       if (result.converged && next == LoadStepping::Next::retry)
         out << (on_plateau ? "  converged on the plateau of the load"
                 : doubled  ? "  converged, more than doubling the "
