@@ -23,8 +23,8 @@ MOST_ITERATIONS_AWAY = 8
 SAME_ANSWER = 0.005
 # Two times closer than this share are the same time: medians of three runs
 # of one computation on the 2-core machines differ by up to some percent
-# (the 3D rigid footing by the default method and by accelerated initial
-# stress alone do the same 2263 iterations).
+# (where the default method's budget never buys Newton, it and accelerated
+# initial stress alone do the same iterations).
 TIME_NOISE = 0.05
 # Outcomes that answer nothing: a run stopped from outside, or one whose
 # last step failed without a bracket.
