@@ -236,6 +236,11 @@ namespace thinlayer
 
       const WorkCounts      work_before = work_counts();
       const ProgrammeResult run         = phases.run(writer, summary);
+      {
+        // The fields still being written are part of the run's time.
+        TimerOutput::Scope scope(timer, "output");
+        writer.finish();
+      }
 
       summary.converged           = run.converged;
       summary.last_converged_load = run.last_converged_load;

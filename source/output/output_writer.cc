@@ -19,7 +19,9 @@
 #include <filesystem>
 #include <iomanip>
 #include <limits>
+#include <memory>
 #include <sstream>
+#include <tuple>
 
 namespace thinlayer
 {
@@ -40,6 +42,26 @@ namespace thinlayer
     }
 
 
+    /// Which of a VTU file's data rows make a vector field, and its name.
+    using VectorRanges = std::vector<
+      std::tuple<unsigned int,
+                 unsigned int,
+                 std::string,
+                 DataComponentInterpretation::DataComponentInterpretation>>;
+
+
+    /// The revolved view's vector field: its displacement.
+    VectorRanges
+    displacement_vector()
+    {
+      return {std::make_tuple(
+        0u,
+        2u,
+        std::string("displacement"),
+        DataComponentInterpretation::component_is_part_of_vector)};
+    }
+
+
     /// Throw a WriteError naming the file @p name if @p stream failed.
     void
     check_written(const std::ostream &stream, const std::string &name)
@@ -50,6 +72,39 @@ namespace thinlayer
           (errno != 0 ? std::strerror(errno) : "the stream failed"));
     }
   } // namespace
+
+
+  /// Types of the fields' jobs; named, since the jobs' types use them.
+  namespace fields_output
+  {
+    /**
+     * What a VTU file of DataOut's holds once its patches are built: a copy
+     * that depends on nothing of the analysis, for a BackgroundWriter's job.
+     */
+    template <int dim>
+    struct VtuContent
+    {
+      std::vector<DataOutBase::Patch<dim, dim>> patches;
+      std::vector<std::string>                  names;
+      VectorRanges                              vectors;
+    };
+
+
+    /// DataOut whose built patches can be taken away (DataOut keeps its
+    /// names and vector ranges protected).
+    template <int dim>
+    class DetachableDataOut : public DataOut<dim>
+    {
+    public:
+      VtuContent<dim>
+      detach()
+      {
+        return {std::move(this->patches),
+                this->get_dataset_names(),
+                this->get_nonscalar_data_ranges()};
+      }
+    };
+  } // namespace fields_output
 
 
   OutputWriter::OutputWriter(const OutputParameters &parameters,
@@ -130,7 +185,7 @@ namespace thinlayer
                                          "stress_xz",
                                          "stress_yz"};
 
-    DataOut<dim> data_out;
+    fields_output::DetachableDataOut<dim> data_out;
     data_out.attach_dof_handler(dof_handler);
     // In-plane displacement as a vector; u_theta (Fourier) as a scalar. At
     // the monitored angle, which for Fourier is where the field is cut.
@@ -192,23 +247,29 @@ namespace thinlayer
                            vtu_subdivisions,
                            DataOut<dim>::curved_inner_cells);
 
-    data_out.set_flags(fast_vtk_flags());
     std::ostringstream base;
     base << "fields-" << std::setw(4) << std::setfill('0') << step;
-    std::ostringstream vtu;
-    data_out.write_vtu(vtu);
-    const std::string record =
-      write_vtu_or_pieces(base.str(),
-                          vtu.str(),
-                          [&](std::ostream                   &pvtu,
-                              const std::vector<std::string> &piece_names) {
-                            data_out.write_pvtu_record(pvtu, piece_names);
-                          });
     auto &records = on_curve ? pvd_records : attempt_records;
-    records.emplace_back(load_factor, record);
+    records.emplace_back(load_factor, record_name(base.str()));
     std::ostringstream pvd;
     DataOutBase::write_pvd_record(pvd, records);
-    write_file(on_curve ? "fields.pvd" : "attempts.pvd", pvd.str());
+    const auto content =
+      std::make_shared<const fields_output::VtuContent<dim>>(data_out.detach());
+    write_in_background(
+      base.str(),
+      [content](std::ostream &out) {
+        DataOutBase::write_vtu(content->patches,
+                               content->names,
+                               content->vectors,
+                               fast_vtk_flags(),
+                               out);
+      },
+      [content](std::ostream &out, const std::vector<std::string> &pieces) {
+        DataOutBase::write_pvtu_record(
+          out, pieces, content->names, content->vectors, fast_vtk_flags());
+      },
+      on_curve ? "fields.pvd" : "attempts.pvd",
+      pvd.str());
   }
 
 
@@ -265,37 +326,31 @@ namespace thinlayer
     const bool pieces = mpi::n_ranks() > 1;
     if (!writes && !pieces)
       return;
-    const CellFields   fields(analysis);
-    const RevolvedView view =
+    const CellFields fields(analysis);
+    RevolvedView     view =
       revolved_view(analysis, fields, analysis.displacements(), slices);
-    const std::vector<
-      std::tuple<unsigned int,
-                 unsigned int,
-                 std::string,
-                 DataComponentInterpretation::DataComponentInterpretation>>
-                       vectors = {std::make_tuple(
-        0u,
-        2u,
-        std::string("displacement"),
-        DataComponentInterpretation::component_is_part_of_vector)};
-    std::ostringstream vtu;
-    DataOutBase::write_vtu(
-      view.patches, view.names, vectors, fast_vtk_flags(), vtu);
-
     std::ostringstream base;
     base << "revolved-" << std::setw(4) << std::setfill('0') << step;
-    const std::string record = write_vtu_or_pieces(
-      base.str(),
-      vtu.str(),
-      [&](std::ostream &pvtu, const std::vector<std::string> &piece_names) {
-        DataOutBase::write_pvtu_record(
-          pvtu, piece_names, view.names, vectors, fast_vtk_flags());
-      });
     auto &records = on_curve ? revolved_records : revolved_attempt_records;
-    records.emplace_back(load_factor, record);
+    records.emplace_back(load_factor, record_name(base.str()));
     std::ostringstream pvd;
     DataOutBase::write_pvd_record(pvd, records);
-    write_file(on_curve ? "revolved.pvd" : "revolved-attempts.pvd", pvd.str());
+    const auto content = std::make_shared<const RevolvedView>(std::move(view));
+    write_in_background(
+      base.str(),
+      [content](std::ostream &out) {
+        DataOutBase::write_vtu(content->patches,
+                               content->names,
+                               displacement_vector(),
+                               fast_vtk_flags(),
+                               out);
+      },
+      [content](std::ostream &out, const std::vector<std::string> &pieces) {
+        DataOutBase::write_pvtu_record(
+          out, pieces, content->names, displacement_vector(), fast_vtk_flags());
+      },
+      on_curve ? "revolved.pvd" : "revolved-attempts.pvd",
+      pvd.str());
   }
 
 
@@ -373,52 +428,87 @@ namespace thinlayer
 
 
   std::string
-  OutputWriter::write_vtu_or_pieces(
-    const std::string &base,
-    const std::string &vtu,
-    const std::function<void(std::ostream &, const std::vector<std::string> &)>
-      &write_record)
+  OutputWriter::record_name(const std::string &base) const
   {
-    if (mpi::n_ranks() == 1)
-      {
-        write_file(base + ".vtu", vtu);
-        return base + ".vtu";
-      }
-    // Pieces as deal.II's parallel codes name them (step-40), listed in one
-    // .pvtu written once every piece is in place.
-    std::vector<std::string> piece_names;
-    for (unsigned int r = 0; r < mpi::n_ranks(); ++r)
-      piece_names.push_back(base + "." + Utilities::int_to_string(r, 4) +
-                            ".vtu");
-    write_piece(piece_names[mpi::rank()], vtu);
-    std::ostringstream pvtu;
-    write_record(pvtu, piece_names);
-    write_file(base + ".pvtu", pvtu.str());
-    return base + ".pvtu";
+    return base + (mpi::n_ranks() > 1 ? ".pvtu" : ".vtu");
   }
 
 
   void
-  OutputWriter::write_piece(const std::string &name,
-                            const std::string &content) const
+  OutputWriter::write_in_background(
+    const std::string                  &base,
+    std::function<void(std::ostream &)> write_vtu,
+    std::function<void(std::ostream &, const std::vector<std::string> &)>
+                       write_record,
+    const std::string &pvd_name,
+    const std::string &pvd)
   {
-    // Every rank learns whether every piece was written, so that all
-    // stop with the error (the rank that met it names the file) and no
-    // record lists a piece that is missing.
-    std::string error;
+    agree_on_write_errors();
+    // Pieces as deal.II's parallel codes name them (step-40), listed in
+    // one .pvtu by rank 0. The names are made here: a job may not ask MPI.
+    std::vector<std::string> piece_names;
+    if (mpi::n_ranks() > 1)
+      for (unsigned int r = 0; r < mpi::n_ranks(); ++r)
+        piece_names.push_back(base + "." + Utilities::int_to_string(r, 4) +
+                              ".vtu");
+    const std::string own =
+      piece_names.empty() ? base + ".vtu" : piece_names[mpi::rank()];
+    background.submit([this,
+                       base,
+                       own,
+                       piece_names,
+                       write_vtu    = std::move(write_vtu),
+                       write_record = std::move(write_record),
+                       pvd_name,
+                       pvd]() {
+      std::ostringstream vtu;
+      write_vtu(vtu);
+      write_own_file(own, vtu.str());
+      if (!writes)
+        return;
+      if (!piece_names.empty())
+        {
+          std::ostringstream pvtu;
+          write_record(pvtu, piece_names);
+          write_own_file(base + ".pvtu", pvtu.str());
+        }
+      write_own_file(pvd_name, pvd);
+    });
+  }
+
+
+  void
+  OutputWriter::agree_on_write_errors()
+  {
+    if (mpi::n_ranks() == 1)
+      {
+        background.rethrow_error();
+        return;
+      }
+    // Every rank learns whether every piece so far was written, so that
+    // all stop with the error (the rank that met it names the file).
+    if (mpi::sum(background.failed() ? 1U : 0U) == 0)
+      return;
+    if (background.failed())
+      background.rethrow_error();
+    throw WriteError(
+      "another rank could not write its piece of the fields in " + directory);
+  }
+
+
+  void
+  OutputWriter::finish()
+  {
+    // The last jobs end before the collective check sees them.
     try
       {
-        write_own_file(name, content);
+        background.wait();
       }
-    catch (const WriteError &e)
+    catch (const WriteError &)
       {
-        error = e.what();
+        // agree_on_write_errors() throws it on every rank.
       }
-    if (mpi::sum(error.empty() ? 0U : 1U) > 0)
-      throw WriteError(error.empty() ? "another rank could not write its "
-                                       "piece of the fields beside " +
-                                         name
-                                     : error);
+    agree_on_write_errors();
   }
 
 

@@ -4,6 +4,7 @@
 #include <deal.II/base/data_out_base.h>
 
 #include <thinlayer/analysis/analysis_view.h>
+#include <thinlayer/output/background_writer.h>
 #include <thinlayer/parameters/parameters.h>
 #include <thinlayer/postprocess/displacement_measure.h>
 #include <thinlayer/postprocess/layer_profile.h>
@@ -55,6 +56,11 @@ namespace thinlayer
    * every file but the fields: each rank writes the piece of its own cells
    * as fields-NNNN.RRRR.vtu, listed in fields-NNNN.pvtu (which fields.pvd
    * lists), as deal.II's parallel codes write them.
+   *
+   * The fields (write_fields(), write_revolved_view()) are encoded and
+   * written by a BackgroundWriter while the stepping goes on: the stepping
+   * builds their patches from the analysis and hands them over. finish()
+   * waits for them.
    */
   class OutputWriter
   {
@@ -134,23 +140,44 @@ namespace thinlayer
     write_file(const std::string &name, const std::string &content) const;
 
 
-  private:
     /**
-     * A step's VTU text @p vtu as BASE.vtu on one rank; on several, this
-     * rank's part as the piece BASE.RRRR.vtu and, by rank 0, BASE.pvtu
-     * listing every rank's piece (its text from @p write_record). Returns
-     * the name a .pvd record lists. Every rank calls it.
+     * Wait for the fields still being written, and learn, on every rank,
+     * whether every rank wrote its files (every rank calls it): a failed
+     * write throws a WriteError that names the file, on every rank. A run
+     * calls it before its summary, which must come last.
      */
-    std::string
-    write_vtu_or_pieces(
-      const std::string &base,
-      const std::string &vtu,
-      const std::function<
-        void(std::ostream &, const std::vector<std::string> &)> &write_record);
-
-    /// This rank's piece @p name of a step's fields (every rank calls it).
     void
-    write_piece(const std::string &name, const std::string &content) const;
+    finish();
+
+
+  private:
+    /// What fields.pvd lists for the fields of BASE: BASE.vtu on one rank,
+    /// BASE.pvtu on several.
+    std::string
+    record_name(const std::string &base) const;
+
+    /**
+     * Write a step's fields off the stepping's path: @p write_vtu's text as
+     * BASE.vtu on one rank; on several, this rank's part as the piece
+     * BASE.RRRR.vtu and, by rank 0, BASE.pvtu listing every rank's piece
+     * (its text from @p write_record); then, by rank 0, @p pvd as the file
+     * @p pvd_name. Both functions run on the BackgroundWriter's thread and
+     * must hold copies of what they write. Every rank calls it, and first
+     * learns whether an earlier write failed anywhere.
+     */
+    void
+    write_in_background(
+      const std::string                  &base,
+      std::function<void(std::ostream &)> write_vtu,
+      std::function<void(std::ostream &, const std::vector<std::string> &)>
+                         write_record,
+      const std::string &pvd_name,
+      const std::string &pvd);
+
+    /// Throw on every rank if any rank's background writes failed so far
+    /// (every rank calls it).
+    void
+    agree_on_write_errors();
 
     /// A file written by this rank, whichever it is.
     void
@@ -169,6 +196,9 @@ namespace thinlayer
     std::vector<std::pair<double, std::string>> revolved_attempt_records;
     std::map<std::string, std::vector<std::pair<double, std::string>>>
       profile_records;
+    /// The fields' files being written. Last, so that it is destroyed
+    /// first: its jobs use the members above.
+    BackgroundWriter background;
   };
 } // namespace thinlayer
 
