@@ -1,13 +1,21 @@
 #!/usr/bin/python3
 """The linear solvers against each other on the elastic stiffness: the
-direct factorisation (CHOLMOD on one rank, MUMPS on several) and conjugate
-gradients preconditioned by algebraic multigrid (Solver/Linear solver =
-amg cg, PETSc's GAMG with the rigid-body motions). Scenes: Prandtl's
-footing at growing meshes (cells graded at the same proportions), the
-footing on 3840 cells graded 1.15 per cell (cells of aspect ratio up to
-~100 near the footing's edge), and Case 1's column at mesh
-level 3 with a thin layer as stiff as the blocks at aspect ratios 1 to
-1000, and ten times stiffer at 10.
+direct factorisation (CHOLMOD on one rank, MUMPS on several), MUMPS with
+block low-rank compression (several ranks), and conjugate gradients
+preconditioned by algebraic multigrid (Solver/Linear solver = amg cg,
+PETSc's GAMG with the rigid-body motions). Scenes: Prandtl's footing at
+growing meshes (cells graded at the same proportions), the footing on 3840
+cells graded 1.15 per cell (cells of aspect ratio up to ~100 near the
+footing's edge), Case 1's column at mesh level 3 with a thin layer as
+stiff as the blocks at aspect ratios 1 to 1000, and ten times stiffer at
+10, and the 3D rigid circular footing at about 40,000 and 120,000 DoFs
+(without amg cg, whose set-up there takes longer than the rest of the
+benchmark).
+
+Under each scene and rank count with more than one factorisation, the
+verdict on Solver/Linear solver = automatic: whether the solver it picks
+(CHOLMOD on one rank, block low-rank on several) is the fastest per solve,
+times within 5% counting as equal.
 
 Each run is one elastic load step; per run: the set-up time (assembly,
 factorisation or multigrid set-up, and the ten solves that time one),
@@ -19,7 +27,8 @@ listed as failed.
 
     /usr/bin/python3 -m benchmarks.linear_solvers [--repeat 3] [--ranks 1,2] [--large] [--only TEXT]
 
---large adds Prandtl at 131072 cells; --only runs the scenes whose label
+--large adds Prandtl at 131072 cells and the 3D footing at about 259,000
+DoFs; --only runs the scenes whose label
 contains TEXT ("131072"). Writes output/benchmarks/
 linear_solvers.csv and linear_solvers.md and prints the table.
 """
@@ -36,25 +45,56 @@ from thinlayer_tools.cases import PARAMETER_FILES, PRANDTL_SIZES, geometry
 from benchmarks import page
 
 OUT = os.path.join(TOP, "output", "benchmarks")
-SOLVERS = (("direct", "cholmod"), ("AMG-CG", "amg cg"))
+SOLVERS = (("direct", "cholmod"), ("direct, block low-rank", "block low-rank"),
+           ("AMG-CG", "amg cg"))
+# What Solver/Linear solver = automatic picks, by ranks.
+AUTOMATIC = {True: "direct", False: "direct, block low-rank"}
+# Solve times within this fraction count as equal (speed_targets.TIME_NOISE).
+NOISE = 0.05
+FOOTING_3D = "prm/circular-footing-rigid-3d.prm"
+FOOTING_3D_MESHES = (
+    (None, "about 40,000 DoFs"),
+    ("sector=90, footing=0, half_width=1, width=5, depth=3, n_around=5, n_footing=6, "
+     "n_side=24, n_depth=28, growth=1.2", "about 120,000 DoFs"))
+FOOTING_3D_LARGE = ("sector=90, footing=0, half_width=1, width=5, depth=3, n_around=6, "
+                    "n_footing=8, n_side=32, n_depth=38, growth=1.14", "about 259,000 DoFs")
 
 
 def scenes(large):
-    """(label, parameter file, entries) of every scene."""
+    """(label, parameter file, entries, whether amg cg runs) of every
+    scene."""
     sizes = [2048, 8192, 32768] + ([131072] if large else [])
     for cells in sizes:
         yield ("Prandtl, %d cells" % cells, PARAMETER_FILES["prandtl"],
                ("Mesh/Geometry parameters=" + PRANDTL_SIZES[cells],
-                "Loading/Load increments=0.1"))
+                "Loading/Load increments=0.1"), True)
     yield ("Prandtl, 3840 cells graded 1.15", PARAMETER_FILES["prandtl"],
            ("Mesh/Geometry parameters=half_width=1, width=5, depth=3, n_footing=32, "
-            "n_side=48, n_depth=48, growth=1.15", "Loading/Load increments=0.1"))
+            "n_side=48, n_depth=48, growth=1.15", "Loading/Load increments=0.1"), True)
     for ar, stiffness in ((1, 1), (10, 1), (100, 1), (1000, 1), (10, 10)):
         label = "Case 1, layer AR %d%s" % (ar, ", 10x stiffer" if stiffness > 1 else "")
         yield (label, PARAMETER_FILES["case1"],
                ("Mesh/Geometry parameters=" + geometry("case1", 3, ar),
                 "Material 2/Young's modulus=%g" % (1e5 * stiffness),
-                "Loading/Load increments=0.1", "Loading/Collapse resolution=0"))
+                "Loading/Load increments=0.1", "Loading/Collapse resolution=0"), True)
+    for mesh, size in FOOTING_3D_MESHES + ((FOOTING_3D_LARGE,) if large else ()):
+        yield ("3D rigid footing, " + size, FOOTING_3D,
+               (("Mesh/Geometry parameters=" + mesh,) if mesh else ()) +
+               ("Loading/Load increments=0.01", "Loading/Collapse resolution=0"), False)
+
+
+def automatic_verdict(rows):
+    """The verdict on Solver/Linear solver = automatic for @p rows (one
+    scene on one rank count): whether its pick is the fastest per solve."""
+    timed = [r for r in rows if isinstance(r["solve_s"], float)]
+    picked = [r for r in timed if r["solver"].split(" (")[0] == AUTOMATIC[r["ranks"] == 1]]
+    if len(timed) < 2 or not picked:
+        return None
+    fastest = min(timed, key=lambda r: r["solve_s"])
+    wins = picked[0]["solve_s"] <= (1 + NOISE) * fastest["solve_s"]
+    return "automatic picks %s, %.4f s per solve; fastest %s, %.4f s: %s" % (
+        picked[0]["solver"], picked[0]["solve_s"], fastest["solver"], fastest["solve_s"],
+        "met" if wins else "missed")
 
 
 def run_once(ranks, parameter_file, entries, solver, directory):
@@ -86,11 +126,15 @@ def main():
     page.configure(args)
     os.makedirs(OUT, exist_ok=True)
     rows = []
-    for label, parameter_file, entries in scenes(args.large):
+    verdicts = []
+    for label, parameter_file, entries, amg in scenes(args.large):
         if args.only not in label:
             continue
         for ranks in (int(r) for r in args.ranks.split(",")):
+            first = len(rows)
             for name, solver in SOLVERS:
+                if (solver == "block low-rank" and ranks == 1) or (solver == "amg cg" and not amg):
+                    continue
                 directory = os.path.join(OUT, "runs", "linear-solver")
                 runs = [run_once(ranks, parameter_file, entries, solver, directory)
                         for _ in range(args.repeat)]
@@ -113,6 +157,10 @@ def main():
                         "note": ""})
                 print(row, flush=True)
                 rows.append(row)
+            verdict = automatic_verdict(rows[first:])
+            if verdict:
+                verdicts.append((label, ranks, verdict))
+                print(verdicts[-1], flush=True)
 
     with open(os.path.join(OUT, "linear_solvers.csv"), "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=list(rows[0]))
@@ -131,6 +179,9 @@ def main():
             number(r["setup_s"], "%.2f"), number(r["solve_s"], "%.4f"),
             number(r["cg_iterations"], "%.0f"), number(r["peak_mb_per_rank"], "%.0f"),
             r["note"]))
+    lines += ["", "Solver/Linear solver = automatic:", "",
+              "| scene | ranks | verdict |", "|---|---|---|"]
+    lines += ["| %s | %d | %s |" % v for v in verdicts]
     page.write(OUT, "linear_solvers", "Linear solvers", lines)
 
 

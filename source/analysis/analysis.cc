@@ -51,6 +51,7 @@ namespace thinlayer
     , current_lambda(0)
     , pending(false)
     , substitution_time(0)
+    , linear_solver(choose_linear_solver(parameters.solver, mpi::n_ranks()))
   {
     AssertThrow(kinematics.mesh_dimension() == dim,
                 ExcMessage("The kinematics' mesh dimension is the mesh's."));

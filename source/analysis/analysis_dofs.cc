@@ -81,14 +81,16 @@ namespace thinlayer
       make_serendipity_constraints(dof_handler, element_constraints);
     element_constraints.close();
 
-    const auto linear_solver =
-      parameters.solver.linear_solver == SolverParameters::LinearSolver::cholmod
-        ? FactorisedStiffness::Method::cholmod
-        : FactorisedStiffness::Method::umfpack;
+    // UMFPACK where asked for; CHOLMOD otherwise (a harmonic factorised
+    // whole on one of several ranks too).
+    const auto factor_method =
+      linear_solver.kind == LinearSolverChoice::Kind::umfpack
+        ? FactorisedStiffness::Method::umfpack
+        : FactorisedStiffness::Method::cholmod;
     systems.clear();
     for (unsigned int m = 0; m < kinematics.n_modes(); ++m)
       {
-        systems.push_back(std::make_unique<ModeSystem>(linear_solver));
+        systems.push_back(std::make_unique<ModeSystem>(factor_method));
         make_mode_constraints(dof_handler,
                               kinematics,
                               m,

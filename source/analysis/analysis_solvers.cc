@@ -245,8 +245,7 @@ namespace thinlayer
   Analysis<dim>::factorise_stiffness()
   {
     check_supports_and_load();
-    if (parameters.solver.linear_solver ==
-        SolverParameters::LinearSolver::amg_cg)
+    if (linear_solver.kind == LinearSolverChoice::Kind::amg_cg)
       {
         set_up_iterative_solvers();
         return;
@@ -259,6 +258,11 @@ namespace thinlayer
     const bool spread = parameters.solver.spread_harmonics &&
                         mpi::n_ranks() > 1 &&
                         kinematics.n_modes() >= mpi::n_ranks();
+    if (spread)
+      linear_solver.description =
+        "CHOLMOD for the harmonics' elastic stiffness, each whole on one "
+        "rank (Spread harmonics over ranks); for Newton's tangents " +
+        linear_solver.description;
     for (unsigned int m = 0; m < kinematics.n_modes(); ++m)
       {
         ModeSystem &mode = *systems[m];
@@ -296,7 +300,7 @@ namespace thinlayer
               {
                 mode.distributed_factorisation =
                   std::make_unique<DistributedFactorisation>(
-                    /*symmetric=*/true);
+                    /*symmetric=*/true, linear_solver.block_low_rank_tolerance);
                 mode.distributed_factorisation->factorize(
                   *mode.distributed_stiffness, owned_per_rank);
                 // MUMPS holds its own copy of the entries; the matrix is

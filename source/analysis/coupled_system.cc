@@ -21,7 +21,8 @@ namespace thinlayer
     const types::global_dof_index                         n_dofs,
     const std::vector<IndexSet>                          &owned_per_rank,
     const bool                                            symmetric,
-    const FactorisedStiffness::Method                     method)
+    const FactorisedStiffness::Method                     method,
+    const double block_low_rank_tolerance)
     : n_modes(mode_constraints.size())
     , n(n_dofs)
     , identity(owned_per_rank.empty() || mode_constraints.size() == 1)
@@ -50,7 +51,8 @@ namespace thinlayer
             rows_per_rank.push_back(rows);
           }
         distributed_factorisation =
-          std::make_unique<DistributedFactorisation>(symmetric);
+          std::make_unique<DistributedFactorisation>(symmetric,
+                                                     block_low_rank_tolerance);
         rows_of_a_mode = n_owned[mpi::rank()];
       }
 

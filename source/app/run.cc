@@ -84,8 +84,16 @@ namespace thinlayer
               << (p.kinematics.antisymmetric ? "antisymmetric" : "symmetric")
               << "), " << p.kinematics.station_angles.size() << " stations\n";
         }
-      if (mpi::n_ranks() > 1)
-        out << "  " << mpi::n_ranks() << " MPI ranks\n";
+      // The linear algebra where it is not one rank's plain choice.
+      const LinearSolverChoice &linear_solver = analysis.get_linear_solver();
+      if (mpi::n_ranks() > 1 ||
+          linear_solver.kind != LinearSolverChoice::Kind::cholmod)
+        {
+          out << "  ";
+          if (mpi::n_ranks() > 1)
+            out << mpi::n_ranks() << " MPI ranks; ";
+          out << "linear solver: " << linear_solver.description << '\n';
+        }
       if (!warnings.empty())
         out << "  " << warnings << '\n';
       out.flush(); // progress: lines reach a file or pipe as they come
@@ -168,10 +176,11 @@ namespace thinlayer
       s.element  = element_name(p);
       s.gauss_points_per_direction =
         p.discretisation.gauss_points_per_direction;
-      s.cells     = scene.triangulation().n_active_cells();
-      s.dofs      = analysis.n_dofs();
-      s.equations = analysis.n_equations();
-      s.method    = SolverParameters::method_names.name(p.solver.method);
+      s.cells         = scene.triangulation().n_active_cells();
+      s.dofs          = analysis.n_dofs();
+      s.equations     = analysis.n_equations();
+      s.method        = SolverParameters::method_names.name(p.solver.method);
+      s.linear_solver = analysis.get_linear_solver().description;
     }
   } // namespace
 

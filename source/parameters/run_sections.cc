@@ -1,6 +1,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <thinlayer/base/input_error.h>
+#include <thinlayer/parallel/mpi.h>
 #include <thinlayer/parameters/parameter_checks.h>
 #include <thinlayer/parameters/parameters.h>
 
@@ -35,9 +36,12 @@ namespace thinlayer
       {ConvergenceCriterion::residual, "residual"}};
 
   const NameTable<SolverParameters::LinearSolver>
-    SolverParameters::linear_solver_names = {{LinearSolver::cholmod, "cholmod"},
-                                             {LinearSolver::umfpack, "umfpack"},
-                                             {LinearSolver::amg_cg, "amg cg"}};
+    SolverParameters::linear_solver_names = {
+      {LinearSolver::automatic, "automatic"},
+      {LinearSolver::cholmod, "cholmod"},
+      {LinearSolver::umfpack, "umfpack"},
+      {LinearSolver::block_low_rank, "block low-rank"},
+      {LinearSolver::amg_cg, "amg cg"}};
 
 
   void
@@ -130,20 +134,34 @@ namespace thinlayer
                       Patterns::Integer(1),
                       "Iterations per load step; a step that reaches the "
                       "limit has failed (collapse).");
-    prm.declare_entry("Linear solver",
-                      "cholmod",
-                      Patterns::Selection(linear_solver_names.pattern()),
-                      "The solver of the elastic stiffness: cholmod (sparse "
-                      "Cholesky, the stiffness being symmetric positive "
-                      "definite) or umfpack (LU), factorised once per "
-                      "analysis (on several ranks both mean MUMPS); or amg "
-                      "cg (conjugate gradients preconditioned by PETSc's "
-                      "algebraic multigrid, GAMG, with the rigid-body "
-                      "motions), for a scene whose factors do not fit in "
-                      "memory: every solve then iterates, slowly where a "
-                      "thin layer is much stiffer than the soil (the manual's "
-                      "page on running a scene). "
-                      "Newton's tangent is factorised whatever this says.");
+    prm.declare_entry(
+      "Linear solver",
+      "automatic",
+      Patterns::Selection(linear_solver_names.pattern()),
+      "The solver of the elastic stiffness and of Newton's tangents. "
+      "automatic (the default): cholmod on one rank, block low-rank on "
+      "several (benchmarks/linear_solvers.py measures why); cholmod "
+      "(sparse Cholesky, the stiffness being symmetric positive definite) "
+      "or umfpack (LU), factorised once per analysis; on several ranks "
+      "both mean MUMPS without compression; block low-rank: MUMPS with its "
+      "block low-rank compression (several ranks only), which shortens a "
+      "3D factorisation and its substitutions; amg cg (conjugate gradients "
+      "preconditioned by PETSc's algebraic multigrid, GAMG, with the "
+      "rigid-body motions), for a scene whose factors do not fit in "
+      "memory: every solve then iterates, slowly where a thin layer is "
+      "much stiffer than the soil (the manual's page on running a scene), "
+      "and Newton's tangent is still factorised. The run reports its "
+      "choice (summary.json's linear_solver).");
+    prm.declare_entry("Block low-rank tolerance",
+                      "1e-8",
+                      Patterns::Double(0),
+                      "Block low-rank compression: blocks of the factor are "
+                      "stored as products of low rank up to this fraction "
+                      "of the matrix's norm (MUMPS's CNTL(7)). The default "
+                      "leaves the solution as the uncompressed factor's to "
+                      "round-off; larger values compress more, and the "
+                      "factor becomes a preconditioner that the iterations "
+                      "correct.");
     prm.declare_entry("Linear solver tolerance",
                       "1e-10",
                       Patterns::Double(0),
@@ -237,6 +255,20 @@ namespace thinlayer
                        "experiment rounds that method's displacements and "
                        "body loads)");
     linear_solver = linear_solver_names.value(prm.get("Linear solver"));
+    if (linear_solver == LinearSolver::block_low_rank && mpi::n_ranks() == 1)
+      throw InputError(file,
+                       "Solver/Linear solver",
+                       "block low-rank is MUMPS's, which thinlayer runs on "
+                       "several ranks (mpirun); on one rank expected "
+                       "automatic, cholmod, umfpack or amg cg");
+    block_low_rank_tolerance =
+      positive(prm, "Block low-rank tolerance", file, "Solver");
+    if (!(block_low_rank_tolerance < 1))
+      throw InputError(file,
+                       "Solver/Block low-rank tolerance",
+                       "expected a value in (0, 1), a fraction of the "
+                       "matrix's norm; got " +
+                         prm.get("Block low-rank tolerance"));
     linear_solver_tolerance =
       positive(prm, "Linear solver tolerance", file, "Solver");
     if (!(linear_solver_tolerance < 1))

@@ -158,5 +158,11 @@ namespace thinlayer
         refuse_if_given(entry,
                         "unless Linear solver = amg cg (a factorisation "
                         "solves exactly, without iterations)");
+    using LinearSolver = SolverParameters::LinearSolver;
+    if (p.solver.linear_solver != LinearSolver::automatic &&
+        p.solver.linear_solver != LinearSolver::block_low_rank)
+      refuse_if_given("Solver/Block low-rank tolerance",
+                      "unless Linear solver = automatic or block low-rank "
+                      "(it is for MUMPS's compressed factor)");
   }
 } // namespace thinlayer

@@ -19,14 +19,17 @@ namespace thinlayer
       mode_constraints.push_back(&analysis.get_mode_system(m).constraints);
     // A non-associated flow rule makes the tangent unsymmetric. The
     // tangent is factorised with amg cg too (by CHOLMOD where symmetric).
-    system = std::make_unique<CoupledSystem>(
-      mode_constraints,
-      analysis.get_dof_handler().n_dofs(),
-      analysis.get_owned_per_rank(),
-      analysis.all_laws_associated(),
-      this->parameters.linear_solver == SolverParameters::LinearSolver::umfpack
-        ? FactorisedStiffness::Method::umfpack
-        : FactorisedStiffness::Method::cholmod);
+    const LinearSolverChoice &linear_solver = analysis.get_linear_solver();
+    system =
+      std::make_unique<CoupledSystem>(mode_constraints,
+                                      analysis.get_dof_handler().n_dofs(),
+                                      analysis.get_owned_per_rank(),
+                                      analysis.all_laws_associated(),
+                                      linear_solver.kind ==
+                                          LinearSolverChoice::Kind::umfpack
+                                        ? FactorisedStiffness::Method::umfpack
+                                        : FactorisedStiffness::Method::cholmod,
+                                      linear_solver.block_low_rank_tolerance);
     system->reinit(
       [&analysis](const DofSink &add) { analysis.add_coupled_sparsity(add); });
     load_rhs      = analysis.new_mode_vectors();

@@ -34,6 +34,7 @@ namespace thinlayer
            const PetscInt64             id,
            const std::vector<IndexSet> &owned_per_rank,
            const bool                   symmetric,
+           const double                 block_low_rank_tolerance,
            const bool                   exact_work_space)
       : matrix_id(id)
     {
@@ -57,6 +58,13 @@ namespace thinlayer
       // held for nothing, a fifth of the factor's.
       if (exact_work_space)
         MatMumpsSetIcntl(factor, 14, 0);
+      // Block low-rank factorisation and solution (ICNTL(35) = 2), the
+      // blocks' dropping threshold CNTL(7).
+      if (block_low_rank_tolerance > 0)
+        {
+          MatMumpsSetIcntl(factor, 35, 2);
+          MatMumpsSetCntl(factor, 7, block_low_rank_tolerance);
+        }
     }
 
     ~Solver()
@@ -70,17 +78,22 @@ namespace thinlayer
   namespace
   {
     /// MUMPS's codes for a work space that its analysis estimated too
-    /// small (INFOG(1)): -8 and -14 integer, -9 real.
+    /// small (INFOG(1)): -8 and -14 integer, -9 real, -20 a reception
+    /// buffer between ranks (met with block low-rank compression).
     bool
     work_space_too_small(const PetscInt error_code)
     {
-      return error_code == -8 || error_code == -9 || error_code == -14;
+      return error_code == -8 || error_code == -9 || error_code == -14 ||
+             error_code == -20;
     }
   } // namespace
 
 
-  DistributedFactorisation::DistributedFactorisation(const bool symmetric)
+  DistributedFactorisation::DistributedFactorisation(
+    const bool   symmetric,
+    const double block_low_rank_tolerance)
     : symmetric(symmetric)
+    , block_low_rank_tolerance(block_low_rank_tolerance)
   {}
 
 
@@ -94,8 +107,12 @@ namespace thinlayer
   {
     ++work_counts().factorisations;
     const WorkTimer timer(work_counts().factorisation_seconds);
-    const PetscInt  error_code =
-      try_factorize(matrix, owned_per_rank, /*exact_work_space=*/symmetric);
+    // Compression makes MUMPS's estimate of its work space a guess: it
+    // keeps its own margin then.
+    const PetscInt error_code = try_factorize(matrix,
+                                              owned_per_rank,
+                                              /*exact_work_space=*/symmetric &&
+                                                block_low_rank_tolerance == 0);
     // In parallel MUMPS schedules its work as it goes, and may need more
     // than its estimate: then once more with its own margin.
     if (work_space_too_small(error_code))
@@ -115,8 +132,12 @@ namespace thinlayer
     PetscObjectGetId(reinterpret_cast<PetscObject>(A), &id);
     const bool new_pattern = !solver || solver->matrix_id != id;
     if (new_pattern)
-      solver = std::make_unique<Solver>(
-        A, id, owned_per_rank, symmetric, exact_work_space);
+      solver = std::make_unique<Solver>(A,
+                                        id,
+                                        owned_per_rank,
+                                        symmetric,
+                                        block_low_rank_tolerance,
+                                        exact_work_space);
 
     // A singular matrix is an answer (a mechanism, missing supports), not
     // an error for PETSc to print: it is read off the factor.

@@ -3,7 +3,8 @@
 // body free to rotate, Fourier entries in plane strain, a point given for
 // a boundary average, a repeated component or parameter, a sweep that
 // names a parameter twice, sweeps itself or has more runs than the cap,
-// expectations of the run that cannot be met or mean nothing)
+// expectations of the run that cannot be met or mean nothing, MUMPS's
+// compression asked of one rank or tuned for a solver without it)
 // are refused with one clear message naming the file and the entry, a
 // non-zero exit, and the previous run and a file of the user's beside it
 // kept byte for byte. And a truth: Reference/Variables binds the Analytic
@@ -364,6 +365,16 @@ namespace
            "Solver/Linear solver=umfpack",
            "-s",
            "Solver/Linear solver tolerance=1e-6"});
+    check("block low-rank on one rank",
+          {"good.prm", "-s", "Solver/Linear solver=block low-rank"});
+    check("Block low-rank tolerance with cholmod",
+          {"good.prm",
+           "-s",
+           "Solver/Linear solver=cholmod",
+           "-s",
+           "Solver/Block low-rank tolerance=1e-6"});
+    check("Block low-rank tolerance of 1",
+          {"good.prm", "-s", "Solver/Block low-rank tolerance=1"});
     // The valid scene as the r-z plane of a Fourier body.
     write("fourier.prm",
           "subsection Mesh\n  set File = good.geo\nend\n"

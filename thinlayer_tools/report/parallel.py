@@ -68,8 +68,8 @@ def load(summary):
 
 
 def sections(runs, quick):
-    table = [["scene (run)", "kinematics", "ranks", "outcome", "collapse load",
-              "last converged load vs 1 rank", "wall s", "peak MB per rank"]]
+    table = [["scene (run)", "kinematics", "ranks", "linear solver (summary.json)", "outcome",
+              "collapse load", "last converged load vs 1 rank", "wall s", "peak MB per rank"]]
     agree, seconds = True, 0.0
     # (row label, run, the one-rank direct run it is compared with)
     compared = []
@@ -85,7 +85,7 @@ def sections(runs, quick):
         if run != one_rank_run:
             seconds += s["wall_seconds"]
         table.append([label, s["kinematics"], "%d" % s.get("ranks", 1),
-                      s["outcome"] + ("" if same else " (DIFFERS)"),
+                      s.get("linear_solver", "-"), s["outcome"] + ("" if same else " (DIFFERS)"),
                       "%.6g" % load(s) if results.collapse_detected(s) else "-",
                       "%.1e" % difference, "%.2f" % s["wall_seconds"],
                       "%.0f" % s["peak_memory_mb_per_rank"]])
@@ -95,9 +95,11 @@ def sections(runs, quick):
            "cells' point states, the constraint lines of the DoFs it holds and its own DoFs' "
            "entries of the vectors (with ghosts for its cells' other DoFs), the forces added "
            "into their owners, the elastic stiffness distributed by rows and factorised once "
-           "by MUMPS (a Fourier scene with at least as many harmonics as ranks: each harmonic "
+           "by MUMPS, with its block low-rank compression to 1e-8 of the matrix's norm "
+           "(Solver/Linear solver = automatic; the table names each run's solver) "
+           "(a Fourier scene with at least as many harmonics as ranks: each harmonic "
            "gathered and factorised whole on one rank, the ranks substituting at once), "
-           "Newton's tangent distributed by rows and refactorised by MUMPS; the outputs read "
+           "Newton's tangent distributed by rows and refactorised by MUMPS the same way; the outputs read "
            "each rank's own cells and rank 0 writes what one file holds. The runs "
            "marked AMG-CG solve the elastic stiffness by conjugate gradients with algebraic "
            "multigrid (Solver/Linear solver = amg cg, to a residual of 1e-10) instead of "

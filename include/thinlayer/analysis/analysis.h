@@ -221,6 +221,9 @@ namespace thinlayer
     double
     linear_iterations_per_solve() const override;
 
+    const LinearSolverChoice &
+    get_linear_solver() const override;
+
     /// @}
     /// @name IterationAccess: what a solution method does
     /// @{
@@ -424,6 +427,8 @@ namespace thinlayer
     double current_lambda;
     bool   pending;
     double substitution_time;
+    /// Solver/Linear solver on this run's ranks.
+    LinearSolverChoice linear_solver;
   };
 } // namespace thinlayer
 

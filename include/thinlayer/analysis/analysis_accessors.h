@@ -238,6 +238,14 @@ namespace thinlayer
   {
     return substitution_time;
   }
+
+
+  template <int dim>
+  inline const LinearSolverChoice &
+  Analysis<dim>::get_linear_solver() const
+  {
+    return linear_solver;
+  }
 } // namespace thinlayer
 
 #endif

@@ -9,6 +9,7 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/vector.h>
 
+#include <thinlayer/analysis/linear_solver_choice.h>
 #include <thinlayer/analysis/mode_system.h>
 #include <thinlayer/analysis/rigid_body_modes.h>
 #include <thinlayer/discretisation/kinematics.h>
@@ -245,6 +246,11 @@ namespace thinlayer
     /// solve so far (all modes); NaN with factors.
     virtual double
     linear_iterations_per_solve() const = 0;
+
+    /// The linear algebra of the elastic stiffness and the tangents, and
+    /// what the run reports of it.
+    virtual const LinearSolverChoice &
+    get_linear_solver() const = 0;
 
     /// @}
   };

@@ -48,13 +48,16 @@ namespace thinlayer
      * @p owned_per_rank (empty on one rank). @p symmetric: the tangent is
      * symmetric (every flow rule associated), factorised by Cholesky
      * (CHOLMOD where @p method says so, MUMPS's L D L^T) rather than LU.
+     * @p block_low_rank_tolerance: MUMPS's compression
+     * (DistributedFactorisation), 0 for none.
      */
     CoupledSystem(
       const std::vector<const AffineConstraints<double> *> &mode_constraints,
       const types::global_dof_index                         n_dofs,
       const std::vector<IndexSet>                          &owned_per_rank,
       const bool                                            symmetric,
-      const FactorisedStiffness::Method                     method);
+      const FactorisedStiffness::Method                     method,
+      const double block_low_rank_tolerance = 0);
 
     ~CoupledSystem();
 

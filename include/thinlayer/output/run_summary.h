@@ -133,6 +133,8 @@ namespace thinlayer
     /// The mean wall time of those factorisations (NaN: none).
     double      seconds_per_factorisation;
     std::string method;
+    /// The linear algebra used, and why (LinearSolverChoice).
+    std::string linear_solver;
     double      seconds_per_substitution;
     /// With an iterative linear solver, its mean iterations per solve
     /// (NaN with factors).
@@ -226,6 +228,7 @@ namespace thinlayer
       visitor("krylov_iterations", krylov_iterations);
       visitor("seconds_per_factorisation", seconds_per_factorisation);
       visitor("method", method);
+      visitor("linear_solver", linear_solver);
       visitor("seconds_per_substitution", seconds_per_substitution);
       visitor("linear_iterations_per_solve", linear_iterations_per_solve);
       visitor("seconds_per_iteration", seconds_per_iteration);

@@ -58,11 +58,14 @@ namespace thinlayer
     };
 
     /// The solver of the constant stiffness: direct on one rank (MUMPS on
-    /// several), or iterative.
+    /// several), or iterative; automatic chooses by the ranks
+    /// (choose_linear_solver()).
     enum class LinearSolver
     {
+      automatic,
       cholmod,
       umfpack,
+      block_low_rank,
       amg_cg
     };
 
@@ -99,6 +102,8 @@ namespace thinlayer
     /// stability finding).
     bool         single_precision;
     LinearSolver linear_solver;
+    /// MUMPS's block low-rank compression: its blocks' dropping threshold.
+    double block_low_rank_tolerance;
     /// AMG-CG: the residual reduction of a solve, and its iteration limit.
     double       linear_solver_tolerance;
     unsigned int linear_solver_iterations;
