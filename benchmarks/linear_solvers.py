@@ -12,10 +12,11 @@ stiff as the blocks at aspect ratios 1 to 1000, and ten times stiffer at
 (without amg cg, whose set-up there takes longer than the rest of the
 benchmark).
 
-Under each scene and rank count with more than one factorisation, the
-verdict on Solver/Linear solver = automatic: whether the solver it picks
-(CHOLMOD on one rank, block low-rank on several) is the fastest per solve,
-times within 5% counting as equal.
+Under the table, per scene and rank count with more than one solver, the
+verdict on Solver/Linear solver = automatic
+(thinlayer_tools.speed_targets.automatic_solver): whether the solver it
+picks (CHOLMOD on one rank, block low-rank on several) is the fastest per
+solve, times within 5% counting as equal.
 
 Each run is one elastic load step; per run: the set-up time (assembly,
 factorisation or multigrid set-up, and the ten solves that time one),
@@ -26,10 +27,11 @@ does not converge in Solver/Linear solver iterations (here 20000) is
 listed as failed.
 
     /usr/bin/python3 -m benchmarks.linear_solvers [--repeat 3] [--ranks 1,2] [--large] [--only TEXT]
+        [--output DIR]
 
 --large adds Prandtl at 131072 cells and the 3D footing at about 259,000
-DoFs; --only runs the scenes whose label
-contains TEXT ("131072"). Writes output/benchmarks/
+DoFs; --only runs the scenes whose label contains TEXT ("131072"; "A|B"
+for either). Writes output/benchmarks/ (or --output)
 linear_solvers.csv and linear_solvers.md and prints the table.
 """
 import argparse
@@ -39,7 +41,7 @@ import os
 import statistics
 import subprocess
 
-from thinlayer_tools import THINLAYER, TOP, mpirun
+from thinlayer_tools import THINLAYER, TOP, mpirun, speed_targets
 from thinlayer_tools.cases import PARAMETER_FILES, PRANDTL_SIZES, geometry
 
 from benchmarks import page
@@ -47,10 +49,6 @@ from benchmarks import page
 OUT = os.path.join(TOP, "output", "benchmarks")
 SOLVERS = (("direct", "cholmod"), ("direct, block low-rank", "block low-rank"),
            ("AMG-CG", "amg cg"))
-# What Solver/Linear solver = automatic picks, by ranks.
-AUTOMATIC = {True: "direct", False: "direct, block low-rank"}
-# Solve times within this fraction count as equal (speed_targets.TIME_NOISE).
-NOISE = 0.05
 FOOTING_3D = "prm/circular-footing-rigid-3d.prm"
 FOOTING_3D_MESHES = (
     (None, "about 40,000 DoFs"),
@@ -83,29 +81,16 @@ def scenes(large):
                ("Loading/Load increments=0.01", "Loading/Collapse resolution=0"), False)
 
 
-def automatic_verdict(rows):
-    """The verdict on Solver/Linear solver = automatic for @p rows (one
-    scene on one rank count): whether its pick is the fastest per solve."""
-    timed = [r for r in rows if isinstance(r["solve_s"], float)]
-    picked = [r for r in timed if r["solver"].split(" (")[0] == AUTOMATIC[r["ranks"] == 1]]
-    if len(timed) < 2 or not picked:
-        return None
-    fastest = min(timed, key=lambda r: r["solve_s"])
-    wins = picked[0]["solve_s"] <= (1 + NOISE) * fastest["solve_s"]
-    return "automatic picks %s, %.4f s per solve; fastest %s, %.4f s: %s" % (
-        picked[0]["solver"], picked[0]["solve_s"], fastest["solver"], fastest["solve_s"],
-        "met" if wins else "missed")
-
-
 def run_once(ranks, parameter_file, entries, solver, directory):
     command = mpirun(ranks) + [THINLAYER, os.path.join(TOP, parameter_file),
                                "-s", "Mesh/Maximum cells=200000",
                                "-s", "Solver/Method=viscoplastic",
                                "-s", "Solver/Linear solver=" + solver,
-                               "-s", "Solver/Linear solver iterations=20000",
                                "-s", "Output/Directory=" + directory,
                                "-s", "Output/Write VTU=false",
                                "-s", "Output/Print timing=false"]
+    if solver == "amg cg":
+        command += ["-s", "Solver/Linear solver iterations=20000"]
     for entry in entries:
         command += ["-s", entry]
     done = subprocess.run(command, capture_output=True, text=True)
@@ -116,22 +101,24 @@ def run_once(ranks, parameter_file, entries, solver, directory):
 
 
 def main():
+    global OUT
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeat", type=int, default=3)
     parser.add_argument("--ranks", default="1")
     parser.add_argument("--large", action="store_true")
-    parser.add_argument("--only", default="", help="run the scenes whose label contains this")
+    parser.add_argument("--only", default="",
+                        help="run the scenes whose label contains this (or one of A|B)")
+    parser.add_argument("--output", default=OUT, help="the results directory (default %(default)s)")
     page.add_argument(parser)
     args = parser.parse_args()
     page.configure(args)
+    OUT = os.path.abspath(args.output)
     os.makedirs(OUT, exist_ok=True)
     rows = []
-    verdicts = []
     for label, parameter_file, entries, amg in scenes(args.large):
-        if args.only not in label:
+        if not any(part in label for part in args.only.split("|")):
             continue
         for ranks in (int(r) for r in args.ranks.split(",")):
-            first = len(rows)
             for name, solver in SOLVERS:
                 if (solver == "block low-rank" and ranks == 1) or (solver == "amg cg" and not amg):
                     continue
@@ -142,7 +129,7 @@ def main():
                        "solver": name if ranks == 1 or name != "direct" else "direct (MUMPS)"}
                 if any("failed" in r for r in runs):
                     row.update({"equations": "", "setup_s": "", "solve_s": "",
-                                "cg_iterations": "", "peak_mb_per_rank": "",
+                                "cg_iterations": "", "peak_mb_per_rank": "", "wall_s": "",
                                 "note": next(r["failed"] for r in runs if "failed" in r)})
                 else:
                     s = runs[-1]
@@ -154,13 +141,10 @@ def main():
                         "cg_iterations": s["linear_iterations_per_solve"],
                         "peak_mb_per_rank": statistics.median(
                             r["peak_memory_mb_per_rank"] for r in runs),
+                        "wall_s": sum(r["wall_seconds"] for r in runs),
                         "note": ""})
                 print(row, flush=True)
                 rows.append(row)
-            verdict = automatic_verdict(rows[first:])
-            if verdict:
-                verdicts.append((label, ranks, verdict))
-                print(verdicts[-1], flush=True)
 
     with open(os.path.join(OUT, "linear_solvers.csv"), "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=list(rows[0]))
@@ -179,9 +163,7 @@ def main():
             number(r["setup_s"], "%.2f"), number(r["solve_s"], "%.4f"),
             number(r["cg_iterations"], "%.0f"), number(r["peak_mb_per_rank"], "%.0f"),
             r["note"]))
-    lines += ["", "Solver/Linear solver = automatic:", "",
-              "| scene | ranks | verdict |", "|---|---|---|"]
-    lines += ["| %s | %d | %s |" % v for v in verdicts]
+    lines += ["", "Targets:", ""] + speed_targets.table(speed_targets.automatic_solver(rows))
     page.write(OUT, "linear_solvers", "Linear solvers", lines)
 
 

@@ -193,6 +193,16 @@ def run_performance(directory, quick):
         sys.exit("reproduce: the time-to-answer benchmark failed")
 
 
+def run_linear_solvers(directory, quick):
+    """benchmarks/linear_solvers.py's solvers against each other into
+    DIR/benchmarks."""
+    arguments = ["--output", os.path.join(directory, "benchmarks")] + \
+        speed.linear_solvers_arguments(quick)
+    print("benchmark: python3 -m benchmarks.linear_solvers " + " ".join(arguments), flush=True)
+    if run_module("benchmarks.linear_solvers", arguments).returncode != 0:
+        sys.exit("reproduce: the linear-solver benchmark failed")
+
+
 def run_fourier_vs_3d(directory, quick):
     """benchmarks/fourier_vs_3d.py's Case 3 by harmonics and in 3D into
     DIR/benchmarks."""
@@ -248,6 +258,7 @@ def main():
             f.write("%d\n" % jobs)
         run_benchmark(work, arguments.quick)
         run_performance(work, arguments.quick)
+        run_linear_solvers(work, arguments.quick)
         run_fourier_vs_3d(work, arguments.quick)
     runs = Runs(work)
     print("report: drawing the figures", flush=True)

@@ -214,6 +214,41 @@ def large_3d(rows):
     return verdicts
 
 
+# What Solver/Linear solver = automatic picks (benchmarks/linear_solvers.py's
+# labels): on one rank, and on several.
+AUTOMATIC_ONE_RANK = "direct"
+AUTOMATIC_SEVERAL_RANKS = "direct, block low-rank"
+
+
+def automatic_solver(rows):
+    """Whether Solver/Linear solver = automatic picks the fastest solver per
+    solve on each scene and rank count of benchmarks/linear_solvers.py's
+    @p rows (times within TIME_NOISE equal); one verdict per group with
+    more than one solver timed."""
+    verdicts = []
+    groups = {}
+    for r in rows:
+        groups.setdefault((r["scene"], int(r["ranks"])), []).append(r)
+    for (scene, ranks), group in groups.items():
+        pick = AUTOMATIC_ONE_RANK if ranks == 1 else AUTOMATIC_SEVERAL_RANKS
+        picked = next((r for r in group if r["solver"].split(" (")[0] == pick), None)
+        timed = [r for r in group if math.isfinite(value(r, "solve_s"))]
+        if len(group) < 2 or picked is None:
+            continue
+        target = "automatic picks the fastest solver per solve"
+        where = "%s, %d rank%s" % (scene, ranks, "" if ranks == 1 else "s")
+        if picked not in timed:
+            verdicts.append(verdict(target, where, "%s failed" % picked["solver"], False))
+            continue
+        best = min(timed, key=lambda r: value(r, "solve_s"))
+        verdicts.append(verdict(
+            target, where, "%s %.4f s; fastest %s %.4f s" % (
+                picked["solver"], value(picked, "solve_s"), best["solver"],
+                value(best, "solve_s")),
+            value(picked, "solve_s") <= (1 + TIME_NOISE) * value(best, "solve_s")))
+    return verdicts
+
+
 def table(verdicts):
     """Markdown lines of @p verdicts."""
     lines = ["| target | where | measured | verdict |", "|---|---|---|---|"]

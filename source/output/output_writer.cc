@@ -491,8 +491,7 @@ namespace thinlayer
       return;
     if (background.failed())
       background.rethrow_error();
-    throw WriteError(
-      "another rank could not write its piece of the fields in " + directory);
+    throw WriteError("another rank could not write its piece of the fields");
   }
 
 
@@ -504,9 +503,9 @@ namespace thinlayer
       {
         background.wait();
       }
-    catch (const WriteError &)
+    catch (...)
       {
-        // agree_on_write_errors() throws it on every rank.
+        // agree_on_write_errors() throws it, on every rank.
       }
     agree_on_write_errors();
   }

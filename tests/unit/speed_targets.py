@@ -15,6 +15,9 @@ speed_targets), on rows made up so that each verdict is known.
   way that stopped early is outvoted; the higher of two lone loads; a way
   with no collapse load sets none); the default method reaches it or not.
 - No large 3D scene run is a missed target, never a met one.
+- Solver/Linear solver = automatic picks the fastest solver per solve when
+  no other is faster by more than 5%; its pick failing misses; one solver
+  alone gives no verdict.
 
     /usr/bin/python3 tests/unit/speed_targets.py TOP
 """
@@ -123,3 +126,23 @@ large = t.large_3d([{"scene": "big", "way": "default method", "dofs": 260000,
                      "outcome": "collapse", "collapse_load": 6.1, "wall_median_s": 800,
                      "peak_kb_per_dof": 12}])
 check([v["verdict"] for v in large] == ["met", "missed"], "800 s met, 12 kB per DoF missed")
+
+
+def solver_row(scene, ranks, solver, solve_s):
+    return {"scene": scene, "ranks": str(ranks), "solver": solver,
+            "solve_s": "" if solve_s is None else str(solve_s)}
+
+
+rows = [solver_row("a", 1, "direct", 0.010), solver_row("a", 1, "AMG-CG", 0.200),
+        solver_row("a", 2, "direct (MUMPS)", 0.0100), solver_row("a", 2, "direct, block low-rank", 0.0104),
+        solver_row("a", 2, "AMG-CG", 0.1),
+        solver_row("b", 2, "direct (MUMPS)", 0.100), solver_row("b", 2, "direct, block low-rank", 0.110),
+        solver_row("c", 2, "direct (MUMPS)", 0.1), solver_row("c", 2, "direct, block low-rank", None)]
+verdicts = t.automatic_solver(rows)
+check([(v["where"], v["verdict"]) for v in verdicts] ==
+      [("a, 1 rank", "met"), ("a, 2 ranks", "met"), ("b, 2 ranks", "missed"),
+       ("c, 2 ranks", "missed")],
+      "automatic's pick: fastest on one rank met, 4% slower on two met (noise), 10% slower "
+      "missed, failed missed")
+check(t.automatic_solver([solver_row("d", 1, "direct", 0.01)]) == [],
+      "one solver alone: no verdict")
