@@ -176,41 +176,33 @@ def run_all(runs, directory, jobs=1):
 
 
 def run_benchmark(directory, quick):
-    """benchmarks/run.py's speed-against-accuracy matrix into DIR/benchmarks."""
-    arguments = ["--output", os.path.join(directory, "benchmarks")]
-    arguments += ["--quick", "--repeat", "1"] if quick else ["--repeat", "3"]
-    print("benchmark: python3 -m benchmarks.run " + " ".join(arguments), flush=True)
-    if run_module("benchmarks.run", arguments).returncode != 0:
-        sys.exit("reproduce: the benchmark failed")
+    """benchmarks/run.py's speed-against-accuracy matrix."""
+    run_into(directory, "run", ["--quick", "--repeat", "1"] if quick else ["--repeat", "3"],
+             "speed-against-accuracy")
+
+
+def run_into(directory, module, arguments, what):
+    """python3 -m benchmarks.MODULE with @p arguments into DIR/benchmarks;
+    the reproduction stops, naming @p what, if it fails."""
+    arguments = ["--output", os.path.join(directory, "benchmarks")] + arguments
+    print("benchmark: python3 -m benchmarks.%s %s" % (module, " ".join(arguments)), flush=True)
+    if run_module("benchmarks." + module, arguments).returncode != 0:
+        sys.exit("reproduce: the %s benchmark failed" % what)
 
 
 def run_performance(directory, quick):
-    """benchmarks/performance.py's time to answer into DIR/benchmarks."""
-    arguments = ["--output", os.path.join(directory, "benchmarks")] + \
-        speed.benchmark_arguments(quick)
-    print("benchmark: python3 -m benchmarks.performance " + " ".join(arguments), flush=True)
-    if run_module("benchmarks.performance", arguments).returncode != 0:
-        sys.exit("reproduce: the time-to-answer benchmark failed")
+    """benchmarks/performance.py's time to answer."""
+    run_into(directory, "performance", speed.benchmark_arguments(quick), "time-to-answer")
 
 
 def run_linear_solvers(directory, quick):
-    """benchmarks/linear_solvers.py's solvers against each other into
-    DIR/benchmarks."""
-    arguments = ["--output", os.path.join(directory, "benchmarks")] + \
-        speed.linear_solvers_arguments(quick)
-    print("benchmark: python3 -m benchmarks.linear_solvers " + " ".join(arguments), flush=True)
-    if run_module("benchmarks.linear_solvers", arguments).returncode != 0:
-        sys.exit("reproduce: the linear-solver benchmark failed")
+    """benchmarks/linear_solvers.py's solvers against each other."""
+    run_into(directory, "linear_solvers", speed.linear_solvers_arguments(quick), "linear-solver")
 
 
 def run_fourier_vs_3d(directory, quick):
-    """benchmarks/fourier_vs_3d.py's Case 3 by harmonics and in 3D into
-    DIR/benchmarks."""
-    arguments = ["--output", os.path.join(directory, "benchmarks")] + \
-        solid.benchmark_arguments(quick)
-    print("benchmark: python3 -m benchmarks.fourier_vs_3d " + " ".join(arguments), flush=True)
-    if run_module("benchmarks.fourier_vs_3d", arguments).returncode != 0:
-        sys.exit("reproduce: the Fourier-or-3D benchmark failed")
+    """benchmarks/fourier_vs_3d.py's Case 3 by harmonics and in 3D."""
+    run_into(directory, "fourier_vs_3d", solid.benchmark_arguments(quick), "Fourier-or-3D")
 
 
 def sections(runs, quick):

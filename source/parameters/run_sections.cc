@@ -29,6 +29,27 @@ namespace thinlayer
       {NewtonCorrections::factorised, "factorised"},
       {NewtonCorrections::krylov, "krylov"}};
 
+  namespace
+  {
+    /// The Solver entry @p name, a value in (0, 1): @p meaning says what
+    /// fraction it is.
+    double
+    fraction(const ParameterHandler &prm,
+             const std::string      &name,
+             const std::string      &file,
+             const std::string      &meaning)
+    {
+      const double value = positive(prm, name, file, "Solver");
+      if (!(value < 1))
+        throw InputError(file,
+                         "Solver/" + name,
+                         "expected a value in (0, 1), " + meaning + "; got " +
+                           prm.get(name));
+      return value;
+    }
+  } // namespace
+
+
   const NameTable<SolverParameters::ConvergenceCriterion>
     SolverParameters::criterion_names = {
       {ConvergenceCriterion::body_loads, "body loads"},
@@ -261,22 +282,16 @@ namespace thinlayer
                        "block low-rank is MUMPS's, which thinlayer runs on "
                        "several ranks (mpirun); on one rank expected "
                        "automatic, cholmod, umfpack or amg cg");
-    block_low_rank_tolerance =
-      positive(prm, "Block low-rank tolerance", file, "Solver");
-    if (!(block_low_rank_tolerance < 1))
-      throw InputError(file,
-                       "Solver/Block low-rank tolerance",
-                       "expected a value in (0, 1), a fraction of the "
-                       "matrix's norm; got " +
-                         prm.get("Block low-rank tolerance"));
+    block_low_rank_tolerance = fraction(prm,
+                                        "Block low-rank tolerance",
+                                        file,
+                                        "a fraction of the matrix's norm");
     linear_solver_tolerance =
-      positive(prm, "Linear solver tolerance", file, "Solver");
-    if (!(linear_solver_tolerance < 1))
-      throw InputError(file,
-                       "Solver/Linear solver tolerance",
-                       "expected a value in (0, 1), the fraction of the "
-                       "right-hand side's residual a solve reaches; got " +
-                         prm.get("Linear solver tolerance"));
+      fraction(prm,
+               "Linear solver tolerance",
+               file,
+               "the fraction of the right-hand side's residual a solve "
+               "reaches");
     linear_solver_iterations = prm.get_integer("Linear solver iterations");
     spread_harmonics         = prm.get_bool("Spread harmonics over ranks");
     prm.leave_subsection();
