@@ -15,8 +15,9 @@ benchmark).
 Under the table, per scene and rank count with more than one solver, the
 verdict on Solver/Linear solver = automatic
 (thinlayer_tools.speed_targets.automatic_solver): whether the solver it
-picks (CHOLMOD on one rank, block low-rank on several) is the fastest per
-solve, times within 5% counting as equal.
+picks (CHOLMOD on one rank; on several, block low-rank for a 3D mesh and
+MUMPS uncompressed for a plane one) is the fastest per solve, times within
+5% counting as equal.
 
 Each run is one elastic load step; per run: the set-up time (assembly,
 factorisation or multigrid set-up, and the ten solves that time one),
@@ -130,6 +131,7 @@ def main():
                 if any("failed" in r for r in runs):
                     row.update({"equations": "", "setup_s": "", "solve_s": "",
                                 "cg_iterations": "", "peak_mb_per_rank": "", "wall_s": "",
+                                "kinematics": "",
                                 "note": next(r["failed"] for r in runs if "failed" in r)})
                 else:
                     s = runs[-1]
@@ -142,6 +144,7 @@ def main():
                         "peak_mb_per_rank": statistics.median(
                             r["peak_memory_mb_per_rank"] for r in runs),
                         "wall_s": sum(r["wall_seconds"] for r in runs),
+                        "kinematics": s["kinematics"],
                         "note": ""})
                 print(row, flush=True)
                 rows.append(row)

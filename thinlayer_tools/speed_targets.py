@@ -215,22 +215,33 @@ def large_3d(rows):
 
 
 # What Solver/Linear solver = automatic picks (benchmarks/linear_solvers.py's
-# labels): on one rank, and on several.
+# labels): on one rank, and on several for a 3D mesh and a plane one.
 AUTOMATIC_ONE_RANK = "direct"
-AUTOMATIC_SEVERAL_RANKS = "direct, block low-rank"
+AUTOMATIC_SEVERAL_RANKS_3D = "direct, block low-rank"
+AUTOMATIC_SEVERAL_RANKS_PLANE = "direct"
+
+
+def automatic_pick(ranks, kinematics):
+    """The solver automatic picks on @p ranks for a scene of @p kinematics
+    (summary.json's: "3d", "plane strain" or "fourier")."""
+    if ranks == 1:
+        return AUTOMATIC_ONE_RANK
+    return AUTOMATIC_SEVERAL_RANKS_3D if kinematics == "3d" else AUTOMATIC_SEVERAL_RANKS_PLANE
 
 
 def automatic_solver(rows):
     """Whether Solver/Linear solver = automatic picks the fastest solver per
     solve on each scene and rank count of benchmarks/linear_solvers.py's
     @p rows (times within TIME_NOISE equal); one verdict per group with
-    more than one solver timed."""
+    more than one solver. A row's kinematics is its scene's (any row of the
+    group that ran gives it)."""
     verdicts = []
     groups = {}
     for r in rows:
         groups.setdefault((r["scene"], int(r["ranks"])), []).append(r)
     for (scene, ranks), group in groups.items():
-        pick = AUTOMATIC_ONE_RANK if ranks == 1 else AUTOMATIC_SEVERAL_RANKS
+        kinematics = next((r["kinematics"] for r in group if r.get("kinematics")), "")
+        pick = automatic_pick(ranks, kinematics)
         picked = next((r for r in group if r["solver"].split(" (")[0] == pick), None)
         timed = [r for r in group if math.isfinite(value(r, "solve_s"))]
         if len(group) < 2 or picked is None:

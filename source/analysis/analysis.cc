@@ -51,7 +51,8 @@ namespace thinlayer
     , current_lambda(0)
     , pending(false)
     , substitution_time(0)
-    , linear_solver(choose_linear_solver(parameters.solver, mpi::n_ranks()))
+    , linear_solver(
+        choose_linear_solver(parameters.solver, mpi::n_ranks(), dim))
   {
     AssertThrow(kinematics.mesh_dimension() == dim,
                 ExcMessage("The kinematics' mesh dimension is the mesh's."));

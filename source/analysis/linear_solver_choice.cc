@@ -5,7 +5,8 @@ namespace thinlayer
 {
   LinearSolverChoice
   choose_linear_solver(const SolverParameters &parameters,
-                       const unsigned int      n_ranks)
+                       const unsigned int      n_ranks,
+                       const unsigned int      dimension)
   {
     using Given             = SolverParameters::LinearSolver;
     using Kind              = LinearSolverChoice::Kind;
@@ -39,12 +40,20 @@ namespace thinlayer
               choice.kind        = Kind::cholmod;
               choice.description = "CHOLMOD (automatic: one rank)";
             }
-          else
+          else if (dimension == 3)
             {
               choice.kind = Kind::mumps;
               choice.block_low_rank_tolerance =
                 parameters.block_low_rank_tolerance;
-              choice.description = compression + " (automatic: " + ranks + ")";
+              choice.description =
+                compression + " (automatic: " + ranks + ", a 3D mesh)";
+            }
+          else
+            {
+              choice.kind = Kind::mumps;
+              choice.description =
+                "MUMPS (automatic: " + ranks +
+                ", a plane mesh, its fronts too small to compress)";
             }
           return choice;
         case Given::cholmod:

@@ -160,8 +160,9 @@ namespace thinlayer
       "automatic",
       Patterns::Selection(linear_solver_names.pattern()),
       "The solver of the elastic stiffness and of Newton's tangents. "
-      "automatic (the default): cholmod on one rank, block low-rank on "
-      "several (benchmarks/linear_solvers.py measures why); cholmod "
+      "automatic (the default): cholmod on one rank; on several, block "
+      "low-rank for a 3D mesh and MUMPS uncompressed for a plane one "
+      "(benchmarks/linear_solvers.py measures why); cholmod "
       "(sparse Cholesky, the stiffness being symmetric positive definite) "
       "or umfpack (LU), factorised once per analysis; on several ranks "
       "both mean MUMPS without compression; block low-rank: MUMPS with its "

@@ -248,8 +248,9 @@ def linear_solvers(runs, quick):
            "rank, MUMPS on several, without and with its block low-rank compression to 1e-8 "
            "of the matrix's norm) or solved by conjugate gradients with PETSc's GAMG (not on "
            "the 3D footing, whose multigrid set-up outlasts the rest of this benchmark). "
-           "Solver/Linear solver = automatic picks CHOLMOD on one rank and the compressed "
-           "MUMPS factor on several; the verdict asks whether that pick is the fastest per "
+           "Solver/Linear solver = automatic picks CHOLMOD on one rank and, on several, the "
+           "compressed MUMPS factor for a 3D mesh and the uncompressed one for a plane mesh "
+           "(whose fronts are too small to compress); the verdict asks whether that pick is the fastest per "
            "solve, times within %.0f%% counting as equal: %s.%s" % (
                100 * speed_targets.TIME_NOISE, verdict_text(verdicts),
                " Prandtl on 2048 cells once (--quick); the full report runs Prandtl on 8192 "

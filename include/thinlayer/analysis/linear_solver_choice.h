@@ -36,24 +36,28 @@ namespace thinlayer
 
 
   /**
-   * What Solver/Linear solver means on @p n_ranks ranks.
+   * What Solver/Linear solver means on @p n_ranks ranks for a mesh of
+   * @p dimension.
    *
-   * automatic: CHOLMOD on one rank, MUMPS with block low-rank compression
-   * (Solver/Block low-rank tolerance) on several. benchmarks/
-   * linear_solvers.py measures the choice: on one rank CHOLMOD is the one
-   * direct solver; on several, compression leaves a plane-strain factor as
-   * it is (its fronts are too small to compress) and shortens the
-   * factorisation and the substitutions of a 3D one, whose fronts are
-   * large, with the same solution to its tolerance. Conjugate gradients
+   * automatic: CHOLMOD on one rank; on several, MUMPS, with block low-rank
+   * compression (Solver/Block low-rank tolerance) for a 3D mesh.
+   * benchmarks/linear_solvers.py measures the choice: on one rank CHOLMOD
+   * is the one direct solver; on several, compression shortens the
+   * factorisation and the substitutions of a 3D factor, whose fronts are
+   * large, with the same solution to its tolerance, and leaves a plane
+   * (plane-strain or Fourier) factor as it is, its fronts too small to
+   * compress, for a little more time per substitution. Conjugate gradients
    * with algebraic multigrid are never chosen: thin layers and distorted
    * cells make them iterate far longer than a factor takes, and Newton
    * factorises its tangents whatever the choice.
+   *
    * Block low-rank on one rank is refused by SolverParameters::parse()
    * (MUMPS runs on several here).
    */
   LinearSolverChoice
   choose_linear_solver(const SolverParameters &parameters,
-                       const unsigned int      n_ranks);
+                       const unsigned int      n_ranks,
+                       const unsigned int      dimension);
 } // namespace thinlayer
 
 #endif
