@@ -179,11 +179,12 @@ namespace thinlayer
                       Patterns::Double(0),
                       "Block low-rank compression: blocks of the factor are "
                       "stored as products of low rank up to this fraction "
-                      "of the matrix's norm (MUMPS's CNTL(7)). The default "
-                      "leaves the solution as the uncompressed factor's to "
-                      "round-off; larger values compress more, and the "
-                      "factor becomes a preconditioner that the iterations "
-                      "correct.");
+                      "of the matrix's norm (MUMPS's CNTL(7)). A solve "
+                      "then errs by about this tolerance times the matrix's "
+                      "condition number, which the iterations correct, as "
+                      "they test the true out-of-balance force; larger "
+                      "values compress more, and the factor becomes a "
+                      "preconditioner that the iterations correct.");
     prm.declare_entry("Linear solver tolerance",
                       "1e-10",
                       Patterns::Double(0),
