@@ -45,7 +45,7 @@ rough circular footing, Case 3 with interface elements and with its thin
 layer) by the ways numbered K (the default method; the same with Newton's
 corrections by GMRES on a kept factor; accelerated initial stress alone;
 the default method with adaptive step lengths; under work control, on the
-scenes under load), with the Krylov iterations,
+scenes under load; Newton's method alone), with the Krylov iterations,
 the peak memory per DoF and each target's verdict (the rigid footing in
 60 s with at most one factorisation per five Newton iterations, Case 3 in
 120 s): performance-3d.csv and .md, and performance-3d.png (the time of
@@ -269,8 +269,8 @@ def measure_scenes(repeat):
 # work control applies), and the ways: the default method (Newton's
 # tangent factorised at every iteration, whatever the file says), the same
 # with Newton's corrections by GMRES on kept factors, the accelerated
-# method alone, the default method with adaptive step lengths, and under
-# work control.
+# method alone, the default method with adaptive step lengths, under work
+# control, and Newton's method alone (a factorisation per iteration).
 SCENES_3D = [("prm/circular-footing-rigid-3d.prm", 60.0, 0.2, False),
              ("prm/case3-circular-footing-3d-zero-thickness.prm", 120.0, None, True),
              ("prm/case3-circular-footing-3d.prm", None, None, True)]
@@ -286,7 +286,9 @@ WAYS_3D = [(speed_targets.SCENE_DEFAULT,
                               "Loading/Step length=adaptive")),
            ("default method, work control",
             DEFAULT_METHOD + ("Solver/Newton corrections=factorised",
-                              "Loading/Control=work"))]
+                              "Loading/Control=work")),
+           ("Newton's method alone",
+            ("Solver/Method=newton", "Solver/Convergence criterion=default"))]
 # The ways that need a scene under load.
 UNDER_LOAD_ONLY = {4}
 
@@ -498,7 +500,7 @@ def main():
                         "method, 1: the same with Newton's corrections by GMRES on a kept "
                         "factor, 2: accelerated initial stress alone, 3: the default method "
                         "with adaptive step lengths, 4: under work control, on the scenes "
-                        "under load), e.g. 0,1; --cells '' "
+                        "under load, 5: Newton's method alone), e.g. 0,1; --cells '' "
                         "runs them alone")
     parser.add_argument("--large-3d", action="store_true",
                         help="also the large 3D scene (the rigid footing at about 259,000 DoFs on "
