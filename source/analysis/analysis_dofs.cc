@@ -77,8 +77,9 @@ namespace thinlayer
         relevant_dofs = complete_index_set(dof_handler.n_dofs());
         element_constraints.clear();
       }
-    if (parameters.discretisation.serendipity)
-      make_serendipity_constraints(dof_handler, element_constraints);
+    make_element_constraints(dof_handler,
+                             parameters.discretisation.serendipity,
+                             element_constraints);
     element_constraints.close();
 
     // UMFPACK where asked for; CHOLMOD otherwise (a harmonic factorised

@@ -1,4 +1,5 @@
 #include <deal.II/base/geometry_info.h>
+#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe.h>
 
 #include <thinlayer/discretisation/serendipity_constraints.h>
@@ -140,10 +141,30 @@ namespace thinlayer
   }
 
 
+  template <int dim>
+  void
+  make_element_constraints(const DoFHandler<dim>     &dof_handler,
+                           const bool                 serendipity,
+                           AffineConstraints<double> &constraints)
+  {
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    if (serendipity)
+      make_serendipity_constraints(dof_handler, constraints);
+  }
+
+
   template void
   make_serendipity_constraints(const DoFHandler<2> &,
                                AffineConstraints<double> &);
   template void
   make_serendipity_constraints(const DoFHandler<3> &,
                                AffineConstraints<double> &);
+  template void
+  make_element_constraints(const DoFHandler<2> &,
+                           const bool,
+                           AffineConstraints<double> &);
+  template void
+  make_element_constraints(const DoFHandler<3> &,
+                           const bool,
+                           AffineConstraints<double> &);
 } // namespace thinlayer

@@ -73,8 +73,8 @@ namespace thinlayer
    * rules.
    *
    * Discretisation: FE_Q(2) per component, reduced to the 8-node
-   * serendipity element by make_serendipity_constraints() (or kept as Q9),
-   * 2x2 or 3x3 Gauss points, and a quadratic mapping (identical to the
+   * serendipity element by make_element_constraints() (or kept as Q9), with
+   * the hanging nodes of a refined mesh constrained, 2x2 or 3x3 Gauss points, and a quadratic mapping (identical to the
    * bilinear one on gmsh's straight-sided cells, curved where the
    * triangulation has a curved manifold).
    */

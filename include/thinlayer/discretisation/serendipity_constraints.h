@@ -26,13 +26,31 @@ namespace thinlayer
    * space (the xi^2 eta^2 mode in 2D), so the constrained space equals the
    * isoparametric Q8/Q20 on parallelograms and parallelepipeds.
    *
-   * Lines are only added for DoFs not yet constrained; call this before
-   * adding hanging-node and Dirichlet constraints, then close().
+   * Lines are only added for DoFs not yet constrained: call this after
+   * adding hanging-node constraints (make_element_constraints()) and
+   * before the Dirichlet ones, then close().
    */
   template <int dim>
   void
   make_serendipity_constraints(const DoFHandler<dim>     &dof_handler,
                                AffineConstraints<double> &constraints);
+
+  /**
+   * The constraints of the element's space on a mesh that may have hanging
+   * nodes (a refined mesh): the hanging-node lines of the Q2 space, then,
+   * where @p serendipity, the centre lines above for the centres that are
+   * not hanging themselves. The space is conforming and serendipity on
+   * every cell: a hanging side (a child's face in 3D) takes the trace of
+   * its coarse neighbour, a serendipity function of the coarse side, and
+   * the serendipity space is closed under the affine map onto a half side
+   * (a quarter face), so the child's side is serendipity too, its centre
+   * the value the centre rule gives it.
+   */
+  template <int dim>
+  void
+  make_element_constraints(const DoFHandler<dim>     &dof_handler,
+                           const bool                 serendipity,
+                           AffineConstraints<double> &constraints);
 } // namespace thinlayer
 
 #endif
