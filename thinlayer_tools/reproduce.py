@@ -24,9 +24,9 @@ import time
 
 from thinlayer_tools import THINLAYER, TOP, mpirun, run_module
 from thinlayer_tools import overrides as command_line_overrides
-from thinlayer_tools.report import (bearing_capacity, case1, case4, continuation, curved,
-                                    earth_pressure, footings, limits, methods, page, parallel,
-                                    phases, pile, pile_lateral, scaling, solid, speed,
+from thinlayer_tools.report import (adaptivity, bearing_capacity, case1, case4, continuation,
+                                    curved, earth_pressure, footings, limits, methods, page,
+                                    parallel, phases, pile, pile_lateral, scaling, solid, speed,
                                     strength_reduction, wall_friction, weight)
 from thinlayer_tools.report.runs import DEFAULT, PAPER, Runs
 
@@ -200,6 +200,12 @@ def run_linear_solvers(directory, quick):
     run_into(directory, "linear_solvers", speed.linear_solvers_arguments(quick), "linear-solver")
 
 
+def run_adaptivity(directory, quick):
+    """benchmarks/adaptivity.py's cycles against uniform refinement."""
+    run_into(directory, "adaptivity", adaptivity.benchmark_arguments(quick),
+             "adaptive-refinement")
+
+
 def run_fourier_vs_3d(directory, quick):
     """benchmarks/fourier_vs_3d.py's Case 3 by harmonics and in 3D."""
     run_into(directory, "fourier_vs_3d", solid.benchmark_arguments(quick), "Fourier-or-3D")
@@ -218,7 +224,7 @@ def sections(runs, quick):
             + curved.sections(runs, quick)
             + continuation.sections(runs, quick) + speed.sections(runs, quick)
             + parallel.sections(runs, quick) + scaling.sections(runs, quick)
-            + solid.sections(runs, quick))
+            + solid.sections(runs, quick) + adaptivity.sections(runs, quick))
 
 
 def main():
@@ -252,6 +258,7 @@ def main():
         run_performance(work, arguments.quick)
         run_linear_solvers(work, arguments.quick)
         run_fourier_vs_3d(work, arguments.quick)
+        run_adaptivity(work, arguments.quick)
     runs = Runs(work)
     print("report: drawing the figures", flush=True)
     items = sections(runs, arguments.quick)

@@ -1,5 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
+#include <thinlayer/app/adaptive_run.h>
 #include <thinlayer/app/command_line.h>
 #include <thinlayer/app/run.h>
 #include <thinlayer/app/sweep.h>
@@ -151,7 +152,9 @@ namespace thinlayer
         SweepResult      result;
         if (parameters.sweep.values.empty())
           {
-            const RunSummary summary = run_scene(parameters, out);
+            const RunSummary summary = parameters.adaptivity.active()
+                                         ? run_adaptive(parameters, out)
+                                         : run_scene(parameters, out);
             result.missed_references =
               check_reference(parameters.reference, summary).passed ? 0 : 1;
           }

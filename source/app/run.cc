@@ -182,75 +182,15 @@ namespace thinlayer
       s.method        = SolverParameters::method_names.name(p.solver.method);
       s.linear_solver = analysis.get_linear_solver().description;
     }
-  } // namespace
 
 
-  namespace
-  {
-    /**
-     * The run itself; @p open_directory gives the directory to write into,
-     * called once all input has been checked.
-     */
-    template <int dim>
-    RunSummary
-    run(const Parameters                   &p,
-        const std::function<std::string()> &open_directory,
-        std::ostream                       &out)
+    /// How the load programme ended, and its work, in the summary.
+    void
+    record_run(const Parameters      &p,
+               const ProgrammeResult &run,
+               const WorkCounts      &work,
+               RunSummary            &summary)
     {
-      Timer        wall_clock;
-      TimerOutput  timer(out, TimerOutput::never, TimerOutput::wall_times);
-      const double program_memory_mb = mpi::resident_memory_mb();
-
-      out << "thinlayer: " << file_name(p.parameter_file) << '\n';
-      for (const std::string &warning : p.warnings)
-        out << "  warning: " << warning << '\n';
-      out << "  meshing " << file_name(p.mesh.file) << std::endl;
-      const Scene<dim> scene = [&]() {
-        TimerOutput::Scope scope(timer, "mesh");
-        return Scene<dim>(p, out);
-      }();
-
-      Analysis<dim> analysis(p, scene.triangulation());
-      {
-        TimerOutput::Scope scope(timer, "setup and factorisation");
-        out << "  setting up: assembling and factorising the stiffness"
-            << std::endl;
-        analysis.setup();
-      }
-      // The stepping owns the solution method; Newton's sparsity and its
-      // cells' elastic matrices are set up here.
-      std::unique_ptr<StepSolver<dim>> solver;
-      {
-        TimerOutput::Scope scope(timer, "setup and factorisation");
-        solver = std::make_unique<StepSolver<dim>>(p.solver, analysis);
-      }
-      const Monitors<dim> monitors(p.monitors, analysis, p.parameter_file);
-      std::vector<LayerProfile<dim>> layers;
-      for (const types::material_id id : p.layers.material_ids)
-        layers.emplace_back(analysis, id, p.parameter_file);
-
-      RunSummary summary;
-      describe_model(p, scene, analysis, summary);
-      summary.warnings = analysis.warnings();
-
-      // The initial state is checked (and set) before anything is written.
-      Phases<dim> phases(p, analysis, *solver, monitors, layers, timer, out);
-      phases.prepare(summary);
-
-      // Everything the user gave us has been checked: only now write.
-      OutputWriter writer(p.output, open_directory());
-      writer.write_file("mesh.msh", scene.mesh_text());
-      writer.write_file("parameters.prm", p.effective_parameters);
-      print_model(p, scene, analysis, summary.warnings, out);
-
-      const WorkCounts      work_before = work_counts();
-      const ProgrammeResult run         = phases.run(writer, summary);
-      {
-        // The fields still being written are part of the run's time.
-        TimerOutput::Scope scope(timer, "output");
-        writer.finish();
-      }
-
       summary.converged           = run.converged;
       summary.last_converged_load = run.last_converged_load;
       summary.first_failed_load   = run.first_failed_load;
@@ -277,7 +217,6 @@ namespace thinlayer
       summary.steps_with_drift       = run.steps_with_drift;
       summary.total_iterations       = run.total_iterations;
       summary.converged_iterations   = run.converged_iterations;
-      const WorkCounts work          = work_counts().since(work_before);
       summary.factorisations         = work.factorisations;
       summary.substitutions          = work.substitutions;
       summary.sweeps                 = work.sweeps;
@@ -285,31 +224,127 @@ namespace thinlayer
       if (work.factorisations > 0)
         summary.seconds_per_factorisation =
           work.factorisation_seconds / work.factorisations;
-      print_outcome(p, run, summary, out);
-      if (const ReferenceCheck check = check_reference(p.reference, summary);
-          check.checked)
-        out << "  reference check " << check.description << '\n';
-      summary.timing = timer.get_summary_data(TimerOutput::total_wall_time);
-      summary.seconds_per_substitution = analysis.substitution_seconds();
-      summary.linear_iterations_per_solve =
-        analysis.linear_iterations_per_solve();
-      summary.seconds_per_iteration =
-        run.total_iterations > 0
-          ? summary.timing["load steps"] / run.total_iterations
-          : 0.;
-      summary.wall_seconds      = wall_clock.wall_time();
-      summary.ranks             = mpi::n_ranks();
-      summary.peak_memory_mb    = mpi::peak_memory_mb();
-      summary.program_memory_mb = program_memory_mb;
-      writer.write_file("summary.json", summary.json());
+    }
+  } // namespace
 
-      if (p.output.print_timing)
-        {
-          out << "  wall time " << printf("%.3f", wall_clock.wall_time())
-              << " s\n";
-          timer.print_summary();
-        }
-      return summary;
+
+  void
+  print_run_header(const Parameters &p, std::ostream &out)
+  {
+    out << "thinlayer: " << file_name(p.parameter_file) << '\n';
+    for (const std::string &warning : p.warnings)
+      out << "  warning: " << warning << '\n';
+    out << "  meshing " << file_name(p.mesh.file) << std::endl;
+  }
+
+
+  RunClock::RunClock(std::ostream &out)
+    : timer(out, TimerOutput::never, TimerOutput::wall_times)
+    , program_memory_mb(mpi::resident_memory_mb())
+  {}
+
+
+  template <int dim>
+  RunSummary
+  run_on_scene(const Parameters                   &p,
+               const Scene<dim>                   &scene,
+               RunClock                           &clock,
+               const std::function<std::string()> &open_directory,
+               std::ostream                       &out,
+               const std::function<void(const AnalysisView<dim> &)> &read)
+  {
+    TimerOutput  &timer = clock.timer;
+    Analysis<dim> analysis(p, scene.triangulation());
+    {
+      TimerOutput::Scope scope(timer, "setup and factorisation");
+      out << "  setting up: assembling and factorising the stiffness"
+          << std::endl;
+      analysis.setup();
+    }
+    // The stepping owns the solution method; Newton's sparsity and its
+    // cells' elastic matrices are set up here.
+    std::unique_ptr<StepSolver<dim>> solver;
+    {
+      TimerOutput::Scope scope(timer, "setup and factorisation");
+      solver = std::make_unique<StepSolver<dim>>(p.solver, analysis);
+    }
+    const Monitors<dim> monitors(p.monitors, analysis, p.parameter_file);
+    std::vector<LayerProfile<dim>> layers;
+    for (const types::material_id id : p.layers.material_ids)
+      layers.emplace_back(analysis, id, p.parameter_file);
+
+    RunSummary summary;
+    describe_model(p, scene, analysis, summary);
+    summary.warnings = analysis.warnings();
+
+    // The initial state is checked (and set) before anything is written.
+    Phases<dim> phases(p, analysis, *solver, monitors, layers, timer, out);
+    phases.prepare(summary);
+
+    // Everything the user gave us has been checked: only now write.
+    OutputWriter writer(p.output, open_directory());
+    writer.write_file("mesh.msh", scene.mesh_text());
+    writer.write_file("parameters.prm", p.effective_parameters);
+    print_model(p, scene, analysis, summary.warnings, out);
+
+    const WorkCounts      work_before = work_counts();
+    const ProgrammeResult run         = phases.run(writer, summary);
+    {
+      // The fields still being written are part of the run's time.
+      TimerOutput::Scope scope(timer, "output");
+      writer.finish();
+    }
+    if (read)
+      read(analysis);
+
+    record_run(p, run, work_counts().since(work_before), summary);
+    print_outcome(p, run, summary, out);
+    if (const ReferenceCheck check = check_reference(p.reference, summary);
+        check.checked)
+      out << "  reference check " << check.description << '\n';
+    summary.timing = timer.get_summary_data(TimerOutput::total_wall_time);
+    summary.seconds_per_substitution = analysis.substitution_seconds();
+    summary.linear_iterations_per_solve =
+      analysis.linear_iterations_per_solve();
+    summary.seconds_per_iteration =
+      run.total_iterations > 0
+        ? summary.timing["load steps"] / run.total_iterations
+        : 0.;
+    summary.wall_seconds      = clock.wall_clock.wall_time();
+    summary.ranks             = mpi::n_ranks();
+    summary.peak_memory_mb    = mpi::peak_memory_mb();
+    summary.program_memory_mb = clock.program_memory_mb;
+    writer.write_file("summary.json", summary.json());
+
+    if (p.output.print_timing)
+      {
+        out << "  wall time " << printf("%.3f", clock.wall_clock.wall_time())
+            << " s\n";
+        timer.print_summary();
+      }
+    return summary;
+  }
+
+
+  namespace
+  {
+    /**
+     * The run itself; @p open_directory gives the directory to write into,
+     * called once all input has been checked.
+     */
+    template <int dim>
+    RunSummary
+    run(const Parameters                   &p,
+        const std::function<std::string()> &open_directory,
+        std::ostream                       &out)
+    {
+      RunClock clock(out);
+      print_run_header(p, out);
+      const Scene<dim> scene = [&]() {
+        TimerOutput::Scope scope(clock.timer, "mesh");
+        return Scene<dim>(p, out);
+      }();
+      return run_on_scene(p, scene, clock, open_directory, out, {});
     }
 
 
@@ -355,6 +390,22 @@ namespace thinlayer
     out << "  results in " << p.output.directory << std::endl;
     return summary;
   }
+
+
+  template RunSummary
+  run_on_scene(const Parameters &,
+               const Scene<2> &,
+               RunClock &,
+               const std::function<std::string()> &,
+               std::ostream &,
+               const std::function<void(const AnalysisView<2> &)> &);
+  template RunSummary
+  run_on_scene(const Parameters &,
+               const Scene<3> &,
+               RunClock &,
+               const std::function<std::string()> &,
+               std::ostream &,
+               const std::function<void(const AnalysisView<3> &)> &);
 
 
   RunSummary

@@ -1,3 +1,5 @@
+#include <deal.II/grid/grid_out.h>
+
 #include <thinlayer/base/file_utilities.h>
 #include <thinlayer/base/input_error.h>
 #include <thinlayer/mesh/curved_geometry.h>
@@ -307,10 +309,29 @@ namespace thinlayer
 
 
   template <int dim>
-  const std::string &
+  Triangulation<dim> &
+  Scene<dim>::triangulation_to_refine()
+  {
+    refined = true;
+    return tria;
+  }
+
+
+  template <int dim>
+  std::string
   Scene<dim>::mesh_text() const
   {
-    return msh;
+    if (!refined)
+      return msh;
+    // The refined mesh's active cells, with their material ids and the
+    // boundary ids of their faces as gmsh's physical groups (gmsh's format
+    // 1, deal.II's), to 12 digits.
+    std::ostringstream text;
+    text.precision(12);
+    GridOut out;
+    out.set_flags(GridOutFlags::Msh(/*write_faces=*/true));
+    out.write_msh(tria, text);
+    return text.str();
   }
 
 

@@ -524,6 +524,15 @@ namespace thinlayer
   OutputWriter::write_own_file(const std::string &name,
                                const std::string &content) const
   {
+    write_whole_file(directory, name, content);
+  }
+
+
+  void
+  write_whole_file(const std::string &directory,
+                   const std::string &name,
+                   const std::string &content)
+  {
     // Write beside, then rename: a reader never sees half a file.
     const std::string path = directory + "/" + name;
     errno                  = 0;

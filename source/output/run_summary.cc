@@ -64,6 +64,38 @@ namespace thinlayer
              {"final_displacement", number(phase.final_displacement)}});
         object[name] = array;
       }
+
+      /// The cycles of an adaptive run; null for a single run.
+      void
+      operator()(const std::string &name, const AdaptivitySummary &adaptivity)
+      {
+        if (adaptivity.cycles.empty())
+          {
+            object[name] = nullptr;
+            return;
+          }
+        nlohmann::ordered_json cycles = nlohmann::ordered_json::array();
+        for (const CycleSummary &c : adaptivity.cycles)
+          cycles.push_back({{"cycle", c.cycle},
+                            {"refined_cells", c.refined_cells},
+                            {"cells", c.cells},
+                            {"dofs", c.dofs},
+                            {"equations", c.equations},
+                            {"outcome", c.outcome},
+                            {"collapse_load", number(c.collapse_load)},
+                            {"relative_error", number(c.relative_error)},
+                            {"wall_seconds", number(c.wall_seconds)}});
+        object[name] = {{"indicator", adaptivity.indicator},
+                        {"marking", adaptivity.marking},
+                        {"cycles", cycles},
+                        {"stop_reason", adaptivity.stop_reason},
+                        {"extrapolated_collapse_load",
+                         number(adaptivity.extrapolated_collapse_load)},
+                        {"extrapolated_relative_error",
+                         number(adaptivity.extrapolated_relative_error)},
+                        {"estimated_error", number(adaptivity.estimated_error)},
+                        {"rate", number(adaptivity.rate)}};
+      }
     };
 
 
@@ -130,6 +162,10 @@ namespace thinlayer
 
       void
       operator()(const std::string &, const std::vector<PhaseSummary> &)
+      {}
+
+      void
+      operator()(const std::string &, const AdaptivitySummary &)
       {}
     };
   } // namespace

@@ -376,6 +376,7 @@ namespace thinlayer
       MonitorParameters::declare(prm);
       ReferenceParameters::declare(prm);
       SweepParameters::declare(prm);
+      AdaptivityParameters::declare(prm);
       OutputParameters::declare(prm);
       for (const auto id : material_ids)
         MaterialParameters::declare(prm, id);
@@ -486,6 +487,8 @@ namespace thinlayer
       check_monitors_and_phases(p);
       p.reference.parse(prm, file, p.mesh);
       p.sweep.parse(prm, file);
+      p.adaptivity.parse(prm, file);
+      check_adaptivity(p);
       p.output.parse(prm, file);
       if (p.output.view_slices > 0 && !p.kinematics.fourier)
         throw InputError(file,

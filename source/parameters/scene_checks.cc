@@ -158,11 +158,44 @@ namespace thinlayer
         refuse_if_given(entry,
                         "unless Linear solver = amg cg (a factorisation "
                         "solves exactly, without iterations)");
+    if (!p.adaptivity.active())
+      for (const char *entry : {"Adaptivity/Indicator",
+                                "Adaptivity/Marking",
+                                "Adaptivity/Marking fraction",
+                                "Adaptivity/Stop tolerance",
+                                "Adaptivity/Maximum DoFs"})
+        refuse_if_given(entry,
+                        "with Adaptivity/Cycles = 0 (it is for the "
+                        "refinement cycles)");
+    else if (p.adaptivity.marking == AdaptivityParameters::Marking::uniform)
+      refuse_if_given("Adaptivity/Marking fraction",
+                      "with Adaptivity/Marking = uniform (every cell is "
+                      "refined)");
     using LinearSolver = SolverParameters::LinearSolver;
     if (p.solver.linear_solver != LinearSolver::automatic &&
         p.solver.linear_solver != LinearSolver::block_low_rank)
       refuse_if_given("Solver/Block low-rank tolerance",
                       "unless Linear solver = automatic or block low-rank "
                       "(it is for MUMPS's compressed factor)");
+  }
+
+
+  void
+  check_adaptivity(const Parameters &p)
+  {
+    if (!p.adaptivity.active())
+      return;
+    if (!p.sweep.values.empty())
+      throw InputError(p.parameter_file,
+                       "Adaptivity/Cycles",
+                       "refinement cycles within a sweep are not supported; "
+                       "expected 0 with Sweep/Values set (or no sweep)");
+    if (!p.layers.material_ids.empty())
+      throw InputError(p.parameter_file,
+                       "Adaptivity/Cycles",
+                       "a refined layer is more than one cell thick, and "
+                       "the profiles of Layers/Material ids read a layer "
+                       "one cell thick; expected 0 with layer profiles (or "
+                       "no profiles)");
   }
 } // namespace thinlayer

@@ -4,7 +4,8 @@
 // a boundary average, a repeated component or parameter, a sweep that
 // names a parameter twice, sweeps itself or has more runs than the cap,
 // expectations of the run that cannot be met or mean nothing, MUMPS's
-// compression asked of one rank or tuned for a solver without it)
+// compression asked of one rank or tuned for a solver without it,
+// refinement entries without cycles or beside a sweep)
 // are refused with one clear message naming the file and the entry, a
 // non-zero exit, and the previous run and a file of the user's beside it
 // kept byte for byte. And a truth: Reference/Variables binds the Analytic
@@ -375,6 +376,34 @@ namespace
            "Solver/Block low-rank tolerance=1e-6"});
     check("Block low-rank tolerance of 1",
           {"good.prm", "-s", "Solver/Block low-rank tolerance=1"});
+    check("an adaptivity entry without cycles",
+          {"good.prm", "-s", "Adaptivity/Indicator=plastic strain"});
+    check("a marking fraction of 0",
+          {"good.prm",
+           "-s",
+           "Adaptivity/Cycles=2",
+           "-s",
+           "Adaptivity/Marking fraction=0"});
+    check("a marking fraction with uniform refinement",
+          {"good.prm",
+           "-s",
+           "Adaptivity/Cycles=2",
+           "-s",
+           "Adaptivity/Marking=uniform",
+           "-s",
+           "Adaptivity/Marking fraction=0.3"});
+    check("refinement cycles with layer profiles",
+          {"good.prm",
+           "-s",
+           "Adaptivity/Cycles=2",
+           "-s",
+           "Layers/Material ids=2"});
+    check("refinement cycles within a sweep",
+          {"good.prm",
+           "-s",
+           "Adaptivity/Cycles=2",
+           "-s",
+           "Sweep/Values=height = 2, 3"});
     // The valid scene as the r-z plane of a Fourier body.
     write("fourier.prm",
           "subsection Mesh\n  set File = good.geo\nend\n"

@@ -1,10 +1,16 @@
 #ifndef thinlayer_app_run_h
 #define thinlayer_app_run_h
 
+#include <deal.II/base/timer.h>
+
+#include <thinlayer/analysis/analysis_view.h>
+#include <thinlayer/mesh/scene.h>
 #include <thinlayer/output/run_summary.h>
 #include <thinlayer/parameters/parameters.h>
 
+#include <functional>
 #include <ostream>
+#include <string>
 
 namespace thinlayer
 {
@@ -31,6 +37,39 @@ namespace thinlayer
   run_scene_in(const Parameters  &parameters,
                const std::string &directory,
                std::ostream      &out);
+
+  /// The run's first lines: the parameter file, its warnings, the mesh.
+  void
+  print_run_header(const Parameters &parameters, std::ostream &out);
+
+  /**
+   * The clocks of one run: its wall time and its sections (TimerOutput),
+   * from before its mesh was made, and the memory the program held then.
+   */
+  struct RunClock
+  {
+    explicit RunClock(std::ostream &out);
+
+    Timer       wall_clock;
+    TimerOutput timer;
+    double      program_memory_mb;
+  };
+
+  /**
+   * The run of run_scene() on a mesh already made, @p scene (an adaptive
+   * cycle's refined mesh), timed by @p clock, into the directory
+   * @p open_directory gives once all input has been checked. @p read, where
+   * given, is shown the analysis at the run's end, before it is gone (the
+   * cycles read their refinement indicator off it).
+   */
+  template <int dim>
+  RunSummary
+  run_on_scene(const Parameters                   &parameters,
+               const Scene<dim>                   &scene,
+               RunClock                           &clock,
+               const std::function<std::string()> &open_directory,
+               std::ostream                       &out,
+               const std::function<void(const AnalysisView<dim> &)> &read);
 } // namespace thinlayer
 
 #endif

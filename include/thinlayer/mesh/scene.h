@@ -40,13 +40,24 @@ namespace thinlayer
     const Triangulation<dim> &
     triangulation() const;
 
-    /// The mesh in gmsh's format, as read (kept with the results).
-    const std::string &
+    /**
+     * The mesh, to be refined in place between the cycles of an adaptive
+     * run; the analysis of the previous cycle must be gone, for it refers
+     * to the cells.
+     */
+    Triangulation<dim> &
+    triangulation_to_refine();
+
+    /// The mesh in gmsh's format (kept with the results): as read, or once
+    /// refined, the refined mesh's cells with their material and boundary
+    /// ids.
+    std::string
     mesh_text() const;
 
   private:
     Triangulation<dim> tria;
     std::string        msh;
+    bool               refined = false;
   };
 
   /**

@@ -200,6 +200,17 @@ namespace thinlayer
     /// first: its jobs use the members above.
     BackgroundWriter background;
   };
+
+
+  /**
+   * @p content as the file @p name in @p directory, written beside it and
+   * renamed into place, so that a reader never sees half a file. Throws a
+   * WriteError that names the file where the write fails.
+   */
+  void
+  write_whole_file(const std::string &directory,
+                   const std::string &name,
+                   const std::string &content);
 } // namespace thinlayer
 
 #endif

@@ -30,6 +30,50 @@ namespace thinlayer
 
 
   /**
+   * One cycle of an adaptive run: its mesh and what the load path gave on
+   * it.
+   */
+  struct CycleSummary
+  {
+    unsigned int cycle = 0;
+    /// The cells flagged to make this cycle's mesh from the last one (0
+    /// for the mesh as given).
+    unsigned int refined_cells = 0;
+    unsigned int cells         = 0;
+    unsigned int dofs          = 0;
+    unsigned int equations     = 0;
+    std::string  outcome;
+    double       collapse_load  = std::numeric_limits<double>::quiet_NaN();
+    double       relative_error = std::numeric_limits<double>::quiet_NaN();
+    double       wall_seconds   = std::numeric_limits<double>::quiet_NaN();
+  };
+
+
+  /**
+   * The cycles of an adaptive run (Adaptivity section) and where they lead:
+   * the collapse load extrapolated from the last three cycles where their
+   * changes show a rate, P = P_inf + C DoFs^(-rate).
+   */
+  struct AdaptivitySummary
+  {
+    std::string               indicator;
+    std::string               marking;
+    std::vector<CycleSummary> cycles;
+    /// Why no further cycle ran.
+    std::string stop_reason;
+    double      extrapolated_collapse_load =
+      std::numeric_limits<double>::quiet_NaN();
+    /// The extrapolated load against the reference load.
+    double extrapolated_relative_error =
+      std::numeric_limits<double>::quiet_NaN();
+    /// The last cycle's collapse load against the extrapolated one: its
+    /// estimated discretisation error.
+    double estimated_error = std::numeric_limits<double>::quiet_NaN();
+    double rate            = std::numeric_limits<double>::quiet_NaN();
+  };
+
+
+  /**
    * The figures of one run: what it was (model, discretisation, size), how
    * it ended (collapse load against the reference, iterations) and what it
    * cost. This is the one list of them: summary.json and the rows of
@@ -153,6 +197,8 @@ namespace thinlayer
     std::string warnings;
     /// Wall seconds per timer section.
     std::map<std::string, double> timing;
+    /// The cycles of an adaptive run (none for a single run).
+    AdaptivitySummary adaptivity;
 
     RunSummary();
 
@@ -177,7 +223,7 @@ namespace thinlayer
     /**
      * Calls @p visitor(name, value) for every figure in order, value being
      * a double, an unsigned int, a bool, a std::string, a map of names
-     * to doubles, or the list of phases.
+     * to doubles, the list of phases or the adaptive cycles.
      */
     template <typename Visitor>
     void
@@ -240,6 +286,7 @@ namespace thinlayer
       visitor("timing", timing);
       // Last, so that the run's own figures come first.
       visitor("phases", phases);
+      visitor("adaptivity", adaptivity);
     }
   };
 } // namespace thinlayer

@@ -1,6 +1,7 @@
 #ifndef thinlayer_parameters_parameters_h
 #define thinlayer_parameters_parameters_h
 
+#include <thinlayer/parameters/adaptivity_section.h>
 #include <thinlayer/parameters/interface_sections.h>
 #include <thinlayer/parameters/loading_sections.h>
 #include <thinlayer/parameters/reference_section.h>
@@ -27,7 +28,8 @@ namespace thinlayer
    * Patterns::Selection, its parsing and the name written into results.
    *
    * The sections are declared in scene_sections.h, interface_sections.h,
-   * run_sections.h, reference_section.h and sweep_section.h, each implemented
+   * run_sections.h, reference_section.h, sweep_section.h and
+   * adaptivity_section.h, each implemented
    * in the source file of its name; ParameterReader (parameter_reader.h) reads
    * a file into Parameters.
    */
@@ -65,6 +67,7 @@ namespace thinlayer
     MonitorParameters                   monitors;
     ReferenceParameters                 reference;
     SweepParameters                     sweep;
+    AdaptivityParameters                adaptivity;
     OutputParameters                    output;
   };
 } // namespace thinlayer

@@ -33,6 +33,14 @@ namespace thinlayer
   check_initial_state(const Parameters &p);
 
   /**
+   * What the refinement cycles cannot be combined with: a sweep (each of
+   * whose runs would be a series of cycles) and layer profiles (which read
+   * a layer one cell thick).
+   */
+  void
+  check_adaptivity(const Parameters &p);
+
+  /**
    * Entries the user gave that mean nothing in this scene: accepted
    * silently, they would let a user believe they had an effect. @p given
    * are the entries given a value other than their default (one at its
