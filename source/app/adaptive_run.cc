@@ -206,10 +206,9 @@ namespace thinlayer
           out << "  cycle " << cycle;
           if (cycle > 0)
             out << ": " << refined << " cells refined"
-                << (adaptivity.marking ==
-                        AdaptivityParameters::Marking::uniform ?
-                      std::string(" (uniform)") :
-                      " by " + a.indicator);
+                << (adaptivity.marking == AdaptivityParameters::Marking::uniform
+                      ? std::string(" (uniform)")
+                      : " by " + a.indicator);
           out << std::endl;
           last = run_on_scene<dim>(
             p,
@@ -256,8 +255,8 @@ namespace thinlayer
                        p.discretisation.serendipity);
           if (refined == 0)
             {
-              a.stop_reason = "no cell was marked after cycle " +
-                              std::to_string(cycle);
+              a.stop_reason =
+                "no cell was marked after cycle " + std::to_string(cycle);
               break;
             }
           if (dofs > adaptivity.max_dofs)
