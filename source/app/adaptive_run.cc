@@ -8,7 +8,6 @@
 #include <thinlayer/base/text_format.h>
 #include <thinlayer/mesh/scene.h>
 #include <thinlayer/output/output_writer.h>
-#include <thinlayer/output/results_directory.h>
 #include <thinlayer/parallel/mpi.h>
 
 #include <algorithm>
@@ -320,30 +319,14 @@ namespace thinlayer
   RunSummary
   run_adaptive(const Parameters &p, std::ostream &out)
   {
-    std::unique_ptr<ResultsDirectory> results;
-    RunSummary                        summary;
-    try
-      {
-        // Rank 0 writes the files of every cycle (the ranks their pieces of
-        // the fields), so only it has a results directory.
-        const auto open_staging = [&]() {
-          return mpi::on_root([&]() {
-            results = std::make_unique<ResultsDirectory>(p.output.directory,
-                                                         p.parameter_file);
-            return results->staging();
-          });
-        };
-        summary = p.kinematics.dimension == 3 ? cycles<3>(p, open_staging, out)
-                                              : cycles<2>(p, open_staging, out);
-      }
-    catch (const WriteError &e)
-      {
-        throw WriteError(std::string(e.what()) + " (Output/Directory '" +
-                         p.output.directory + "')");
-      }
-    if (results)
-      results->commit();
-    out << "  results in " << p.output.directory << std::endl;
-    return summary;
+    // Every cycle's run goes into the one output directory, written aside
+    // and put in place at the end.
+    return run_in_output_directory(
+      p,
+      [&](const std::function<std::string()> &open_staging) {
+        return p.kinematics.dimension == 3 ? cycles<3>(p, open_staging, out)
+                                           : cycles<2>(p, open_staging, out);
+      },
+      out);
   }
 } // namespace thinlayer

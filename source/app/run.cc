@@ -361,7 +361,10 @@ namespace thinlayer
 
 
   RunSummary
-  run_scene(const Parameters &p, std::ostream &out)
+  run_in_output_directory(
+    const Parameters                                                      &p,
+    const std::function<RunSummary(const std::function<std::string()> &)> &work,
+    std::ostream                                                          &out)
   {
     std::unique_ptr<ResultsDirectory> results;
     RunSummary                        summary;
@@ -369,16 +372,13 @@ namespace thinlayer
       {
         // Rank 0 writes every file (OutputWriter), so only it has a
         // results directory.
-        summary = run_in_dimension(
-          p,
-          [&]() {
-            return mpi::on_root([&]() {
-              results = std::make_unique<ResultsDirectory>(p.output.directory,
-                                                           p.parameter_file);
-              return results->staging();
-            });
-          },
-          out);
+        summary = work([&]() {
+          return mpi::on_root([&]() {
+            results = std::make_unique<ResultsDirectory>(p.output.directory,
+                                                         p.parameter_file);
+            return results->staging();
+          });
+        });
       }
     catch (const WriteError &e)
       {
@@ -389,6 +389,18 @@ namespace thinlayer
       results->commit();
     out << "  results in " << p.output.directory << std::endl;
     return summary;
+  }
+
+
+  RunSummary
+  run_scene(const Parameters &p, std::ostream &out)
+  {
+    return run_in_output_directory(
+      p,
+      [&](const std::function<std::string()> &open_directory) {
+        return run_in_dimension(p, open_directory, out);
+      },
+      out);
   }
 
 

@@ -38,6 +38,19 @@ namespace thinlayer
                const std::string &directory,
                std::ostream      &out);
 
+  /**
+   * Run @p work into Output/Directory of @p parameters as one run of it: the
+   * directory is written aside (ResultsDirectory) once @p work calls the
+   * function it is given, which returns where to write (on every rank), and
+   * put in place when @p work returns. A failed write names the directory;
+   * an error leaves the previous run as it was.
+   */
+  RunSummary
+  run_in_output_directory(
+    const Parameters &parameters,
+    const std::function<RunSummary(const std::function<std::string()> &)> &work,
+    std::ostream                                                          &out);
+
   /// The run's first lines: the parameter file, its warnings, the mesh.
   void
   print_run_header(const Parameters &parameters, std::ostream &out);
