@@ -73,7 +73,8 @@ namespace thinlayer
                  std::ostream            &out)
     {
       out << "  adaptive refinement (" << a.indicator << ", " << a.marking
-          << "): " << a.cycles.size() << " cycles\n"
+          << "): " << a.cycles.size()
+          << (a.cycles.size() == 1 ? " cycle\n" : " cycles\n")
           << "    cycle  refined    cells     DoFs  collapse load  "
              "relative error\n";
       for (const CycleSummary &c : a.cycles)
