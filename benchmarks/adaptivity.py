@@ -2,13 +2,14 @@
 """Adaptive refinement against uniform refinement and the hand-graded
 meshes: collapse load against DoFs and time, per scene.
 
-Scenes (each from a coarse mesh, its file's method and programme):
+Scenes (each its file's coarse mesh, method and programme):
 - Prandtl's flexible strip footing (prm/prandtl-strip-footing-adaptive.prm,
   a uniform mesh of 72 cells; the collapse bracketed to 0.1%), (2 + pi) c;
 - the rough rigid circular footing by harmonic 0, pushed down (prm/circular-
-  footing-rigid-settlement.prm, 68 cells), 6.05 c (Eason and Shield);
+  footing-rigid-settlement-adaptive.prm, 68 cells), 6.05 c (Eason and
+  Shield);
 - the smooth pile section on interface elements (prm/circular-inclusion-
-  zero-thickness.prm, 6 cells per quarter circle), 9.181 c D.
+  zero-thickness-adaptive.prm, 6 cells per quarter circle), 9.181 c D.
 
 Per scene three series: the adaptive cycles (bulk marking of the plastic
 work), the uniform refinement of the same coarse mesh, and the hand-graded
@@ -67,7 +68,7 @@ SCENES = [
      "error": 0.005, "ratio": 0.25, "against": "uniform",
      "fraction": 0.6, "cycles": 6, "uniform": 3},
     {"name": "rough rigid circular footing (harmonic 0)",
-     "prm": "prm/circular-footing-rigid-settlement.prm",
+     "prm": "prm/circular-footing-rigid-settlement-adaptive.prm",
      "coarse": "half_width=1, width=5, depth=3, aspect_ratio=10, n_footing=4, n_side=6, "
                "n_depth=5, interface_beyond_footing=1, refinement=1",
      "graded": ["half_width=1, width=5, depth=3, aspect_ratio=10, n_footing=8, n_side=12, "
@@ -75,7 +76,7 @@ SCENES = [
      "entries": (), "error": 0.01, "ratio": 0.25, "against": GRADED,
      "fraction": 0.6, "cycles": 7, "uniform": 3},
     {"name": "smooth pile section, interface elements",
-     "prm": "prm/circular-inclusion-zero-thickness.prm",
+     "prm": "prm/circular-inclusion-zero-thickness-adaptive.prm",
      "coarse": "radius=1, thickness=0.02, outer=20, n_around=6, n_radial=10, growth=1.3, "
                "zero_thickness=1",
      "graded": ["radius=1, thickness=0.02, outer=20, n_around=%d, n_radial=%d, growth=1.2, "
