@@ -196,11 +196,20 @@ namespace thinlayer
     std::vector<types::global_dof_index> dofs;
     for (const auto &group : groups)
       group->add_dofs(dofs);
-    // The DoFs the rank's own constraint lines name: in the cell or at the
-    // node (serendipity, axis) in every scene so far, but a line may name
-    // any DoF.
+    // The DoFs the rank's own constraint lines name, in every set of lines
+    // a vector is distributed or condensed with: a hanging node's masters
+    // lie on its coarse neighbour's side, not on the rank's cells, and
+    // each set keeps masters that the further lines of the next eliminate
+    // (the boundary's; the axis and the components a mode lacks).
+    std::vector<const AffineConstraints<double> *> sets = {
+      &element_constraints};
     for (const auto &system : systems)
-      for (const auto &line : system->constraints.get_lines())
+      {
+        sets.push_back(&system->structural_constraints);
+        sets.push_back(&system->constraints);
+      }
+    for (const AffineConstraints<double> *lines : sets)
+      for (const auto &line : lines->get_lines())
         if (owned.is_element(line.index))
           for (const auto &entry : line.entries)
             dofs.push_back(entry.first);

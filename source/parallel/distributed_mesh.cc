@@ -20,12 +20,15 @@ namespace thinlayer
     auto tria =
       std::make_unique<parallel::fullydistributed::Triangulation<dim>>(
         mpi::communicator());
-    tria->create_triangulation(description);
     // The description carries the manifold ids of the cells and faces, not
-    // the manifolds: the curved sides stay curved on every rank.
+    // the manifolds. They are attached before the cells are made: the
+    // cells of a refined mesh are made by refining its coarse cells again,
+    // and a new vertex on a curved side lies on the curve only if its
+    // manifold is there to place it.
     for (const types::manifold_id id : serial.get_manifold_ids())
       if (id != numbers::flat_manifold_id)
         tria->set_manifold(id, serial.get_manifold(id));
+    tria->create_triangulation(description);
     return tria;
   }
 

@@ -13,7 +13,12 @@
 //   point of both cycles lies within 1e-3 of the contact circle
 //   r = R + t = 1.02 (the quadratic mapping's own error on a side of 30
 //   degrees is about 1.4e-4; a child's side on its parent's chord would
-//   lie up to 0.035 off).
+//   lie up to 0.035 off);
+// - the 3D rough rigid footing and the rough footing by harmonic 0 run a
+//   refined cycle each, with hanging nodes (in 3D on faces and edges).
+// On two ranks (the .mpirun=2 output) every figure is the serial run's: a
+// refined mesh split over the ranks has its curved sides on their curves
+// and each rank the masters of its hanging nodes.
 #include <deal.II/base/mpi.h>
 
 #include <thinlayer/base/file_utilities.h>
@@ -208,5 +213,53 @@ main(int argc, char **argv)
               off_circle);
   expect(off_circle < 1e-3,
          "every interface point within 1e-3 of the circle r = 1.02");
+
+  // The rough rigid footing's quarter body in 3D, one cycle on three steps
+  // of its settlement: hanging faces and edges on a mesh split over the
+  // ranks, whose hanging nodes' masters lie on other ranks' cells.
+  run("circular-footing-rigid-3d.prm",
+      {"Mesh/Geometry parameters=sector=90, footing=0, half_width=1, "
+       "width=5, depth=3, n_around=2, n_footing=2, n_side=4, n_depth=4, "
+       "growth=1",
+       "Loading/Load increments=2, 2*2",
+       "Adaptivity/Cycles=1",
+       "Adaptivity/Marking fraction=0.6",
+       "Adaptivity/Stop tolerance=0"});
+  const auto cycles = run_results::summary("results")["adaptivity"]["cycles"];
+  for (const auto &c : cycles)
+    std::printf("3D footing, cycle %u: %u cells, %u DoFs, %s, load %.5g at "
+                "the last settlement\n",
+                c["cycle"].get<unsigned int>(),
+                c["cells"].get<unsigned int>(),
+                c["dofs"].get<unsigned int>(),
+                c["outcome"].get<std::string>().c_str(),
+                run_results::summary(
+                  "results/cycle-" +
+                  std::to_string(
+                    c["cycle"].get<unsigned int>()))["last_converged_load"]
+                  .get<double>());
+  expect(cycles.size() == 2 && cycles[1]["cells"].get<unsigned int>() >
+                                 cycles[0]["cells"].get<unsigned int>(),
+         "the 3D cycle ran on its refined mesh, to the end of its steps");
+
+  // The rough rigid footing by harmonic 0 (Fourier: the axis and the
+  // harmonic's missing component constrained beside the hanging nodes),
+  // one cycle on two steps of its settlement.
+  run("circular-footing-rigid-settlement-adaptive.prm",
+      {"Loading/Load increments=5, 5", "Adaptivity/Cycles=1"});
+  const auto fourier = run_results::summary("results")["adaptivity"]["cycles"];
+  for (const auto &c : fourier)
+    std::printf("Fourier footing, cycle %u: %u cells, load %.5g at the last "
+                "settlement\n",
+                c["cycle"].get<unsigned int>(),
+                c["cells"].get<unsigned int>(),
+                run_results::summary(
+                  "results/cycle-" +
+                  std::to_string(
+                    c["cycle"].get<unsigned int>()))["last_converged_load"]
+                  .get<double>());
+  expect(fourier.size() == 2 && fourier[1]["cells"].get<unsigned int>() >
+                                  fourier[0]["cells"].get<unsigned int>(),
+         "the Fourier cycle ran on its refined mesh, to the end of its steps");
   return truths::conclude();
 }
