@@ -11,7 +11,7 @@
 // In 2D one cell of a 3x2 grid is refined; in 3D one cell of a 2x2x2 box,
 // so that hanging faces (with a hanging face centre) and hanging edges
 // both occur.
-#include <deal.II/base/function_lib.h>
+#include <deal.II/base/function.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_q.h>
@@ -30,23 +30,6 @@
 #include <random>
 
 using namespace dealii;
-
-template <int dim>
-class Given : public Function<dim>
-{
-public:
-  Given(std::function<double(const Point<dim> &)> f)
-    : f(f)
-  {}
-  double
-  value(const Point<dim> &p, const unsigned int = 0) const override
-  {
-    return f(p);
-  }
-
-private:
-  std::function<double(const Point<dim> &)> f;
-};
 
 // The finite-element function @p u on @p cell at the real point @p p.
 template <int dim>
@@ -150,10 +133,11 @@ check(Triangulation<dim> &tria)
               raw_jump > 1e-3 ? "yes" : "NO",
               jump < 1e-12 ? "not (round-off)" : "YES");
 
-  const Given<dim> serendipity([](const Point<dim> &p) {
-    return p[0] * p[0] * p[1] + 0.5 * p[dim - 1] - 0.3 * p[0] * p[1];
-  });
-  const Given<dim> biquadratic(
+  const ScalarFunctionFromFunctionObject<dim> serendipity(
+    [](const Point<dim> &p) {
+      return p[0] * p[0] * p[1] + 0.5 * p[dim - 1] - 0.3 * p[0] * p[1];
+    });
+  const ScalarFunctionFromFunctionObject<dim> biquadratic(
     [](const Point<dim> &p) { return p[0] * p[0] * p[1] * p[1]; });
   std::printf(
     "%dD: x^2 y interpolated %s; x^2 y^2 %s\n",
