@@ -35,7 +35,7 @@ namespace thinlayer
            const std::vector<IndexSet> &owned_per_rank,
            const bool                   symmetric,
            const double                 block_low_rank_tolerance,
-           const bool                   exact_work_space)
+           const int                    work_space_margin)
       : matrix_id(id)
     {
       rows.reinit(owned_per_rank, mpi::communicator());
@@ -52,12 +52,9 @@ namespace thinlayer
       // mechanism, interface elements too soft for the cells beside
       // them), which L D L^T would otherwise divide by without complaint.
       MatMumpsSetIcntl(factor, 24, 1);
-      // Without pivoting (a positive definite matrix) MUMPS's estimate of
-      // its work space is its need, up to its dynamic scheduling on
-      // several ranks: its default margin of 20% (ICNTL(14)) is memory
-      // held for nothing, a fifth of the factor's.
-      if (exact_work_space)
-        MatMumpsSetIcntl(factor, 14, 0);
+      // The margin (ICNTL(14), per cent) on MUMPS's estimate of its work
+      // space: factorize() chooses it.
+      MatMumpsSetIcntl(factor, 14, work_space_margin);
       // Block low-rank factorisation and solution (ICNTL(35) = 2), the
       // blocks' dropping threshold CNTL(7).
       if (block_low_rank_tolerance > 0)
@@ -79,7 +76,8 @@ namespace thinlayer
   {
     /// MUMPS's codes for a work space that its analysis estimated too
     /// small (INFOG(1)): -8 and -14 integer, -9 real, -20 a reception
-    /// buffer between ranks (met with block low-rank compression).
+    /// buffer between ranks (met with block low-rank compression), each
+    /// sized from the estimate and its margin.
     bool
     work_space_too_small(const PetscInt error_code)
     {
@@ -107,16 +105,18 @@ namespace thinlayer
   {
     ++work_counts().factorisations;
     const WorkTimer timer(work_counts().factorisation_seconds);
-    // Compression makes MUMPS's estimate of its work space a guess: it
-    // keeps its own margin then.
-    const PetscInt error_code = try_factorize(matrix,
-                                              owned_per_rank,
-                                              /*exact_work_space=*/symmetric &&
-                                                block_low_rank_tolerance == 0);
-    // In parallel MUMPS schedules its work as it goes, and may need more
-    // than its estimate: then once more with its own margin.
-    if (work_space_too_small(error_code))
-      try_factorize(matrix, owned_per_rank, false);
+    // Without pivoting (a positive definite matrix) MUMPS's estimate of its
+    // work space is its need, up to its dynamic scheduling on several
+    // ranks: its default margin of 20% is memory held for nothing, a fifth
+    // of the factor's. Compression makes the estimate a guess: MUMPS's own
+    // margin then.
+    const int first_margin =
+      symmetric && block_low_rank_tolerance == 0 ? 0 : 20;
+    // Where the work space (or, compressed, the buffer between the ranks)
+    // still ran short: once more with twice the estimate.
+    if (work_space_too_small(
+          try_factorize(matrix, owned_per_rank, first_margin, false)))
+      try_factorize(matrix, owned_per_rank, 100, true);
   }
 
 
@@ -124,7 +124,8 @@ namespace thinlayer
   DistributedFactorisation::try_factorize(
     const PETScWrappers::MPI::SparseMatrix &matrix,
     const std::vector<IndexSet>            &owned_per_rank,
-    const bool                              exact_work_space)
+    const int                               work_space_margin,
+    const bool                              last)
   {
     const MPI_Comm comm = mpi::communicator();
     Mat            A    = matrix;
@@ -137,7 +138,7 @@ namespace thinlayer
                                         owned_per_rank,
                                         symmetric,
                                         block_low_rank_tolerance,
-                                        exact_work_space);
+                                        work_space_margin);
 
     // A singular matrix is an answer (a mechanism, missing supports), not
     // an error for PETSc to print: it is read off the factor.
@@ -200,7 +201,7 @@ namespace thinlayer
     // it starts afresh.
     if (mumps_failed)
       solver.reset();
-    if (exact_work_space && work_space_too_small(error_code))
+    if (!last && work_space_too_small(error_code))
       return error_code;
     const bool singular = error_code == -10 || singular_pivots > 0 ||
                           factor_error == MAT_FACTOR_NUMERIC_ZEROPIVOT ||

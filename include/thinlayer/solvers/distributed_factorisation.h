@@ -72,15 +72,16 @@ namespace thinlayer
   private:
     /**
      * One attempt of factorize(), with MUMPS's work space as its analysis
-     * estimates it (@p exact_work_space: only for a positive definite
-     * matrix, which MUMPS factorises without pivoting) or with MUMPS's own
-     * margin. Returns 0, or MUMPS's code for too small a work
-     * space when @p exact_work_space; throws as factorize() otherwise.
+     * estimates it plus @p work_space_margin per cent (ICNTL(14), set when
+     * the matrix's pattern is new or the last attempt failed). Returns 0,
+     * or MUMPS's code for too small a work space unless this is the
+     * @p last attempt; throws as factorize() otherwise.
      */
     PetscInt
     try_factorize(const PETScWrappers::MPI::SparseMatrix &matrix,
                   const std::vector<IndexSet>            &owned_per_rank,
-                  const bool                              exact_work_space);
+                  const int                               work_space_margin,
+                  const bool                              last);
 
     const bool   symmetric;
     const double block_low_rank_tolerance;
