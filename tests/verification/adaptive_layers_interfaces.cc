@@ -143,7 +143,9 @@ main(int argc, char **argv)
   // Every rank reads the results once rank 0 has put them in place.
   const auto run = [](const std::string              &prm,
                       const std::vector<std::string> &settings) {
-    // A run that fails leaves no results to read.
+    // A run that fails leaves no results to read; the last run's are
+    // removed once every rank has read them.
+    MPI_Barrier(thinlayer::mpi::communicator());
     if (thinlayer::mpi::is_root())
       std::filesystem::remove_all("results");
     MPI_Barrier(thinlayer::mpi::communicator());
