@@ -392,12 +392,9 @@ namespace
            "Adaptivity/Marking=uniform",
            "-s",
            "Adaptivity/Marking fraction=0.3"});
-    check("refinement cycles with layer profiles",
-          {"good.prm",
-           "-s",
-           "Adaptivity/Cycles=2",
-           "-s",
-           "Layers/Material ids=2"});
+    check(
+      "refinement cycles with layer profiles",
+      {"good.prm", "-s", "Adaptivity/Cycles=2", "-s", "Layers/Material ids=2"});
     check("refinement cycles within a sweep",
           {"good.prm",
            "-s",

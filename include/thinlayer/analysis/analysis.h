@@ -74,9 +74,10 @@ namespace thinlayer
    *
    * Discretisation: FE_Q(2) per component, reduced to the 8-node
    * serendipity element by make_element_constraints() (or kept as Q9), with
-   * the hanging nodes of a refined mesh constrained, 2x2 or 3x3 Gauss points, and a quadratic mapping (identical to the
-   * bilinear one on gmsh's straight-sided cells, curved where the
-   * triangulation has a curved manifold).
+   * the hanging nodes of a refined mesh constrained, 2x2 or 3x3 Gauss points,
+   * and a quadratic mapping (identical to the bilinear one on gmsh's
+   * straight-sided cells, curved where the triangulation has a curved
+   * manifold).
    */
   template <int dim>
   class Analysis : public StepAccess<dim>
