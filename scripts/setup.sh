@@ -83,6 +83,18 @@ build_in() {
 }
 build_in "$build" Release
 
+# Every test program of DIRECTORY, ahead of ctest: each test would build
+# its own, and the tests on several ranks run one at a time, their builds
+# then holding one core of two.
+build_test_programs() {
+  if ! cmake --build "$1" --target thinlayer_test_programs -- -j"$(nproc)" \
+       > "$1/build-tests.log" 2>&1; then
+    grep -E -B2 -A8 "error|Error" "$1/build-tests.log" | head -60
+    echo "thinlayer setup: building the test programs failed; the full log is $1/build-tests.log" >&2
+    exit 1
+  fi
+}
+
 if [ "$mode" = build ]; then
   echo "thinlayer setup: built $build/thinlayer"
 elif [ "$mode" = run ]; then
@@ -102,6 +114,8 @@ else
   # half hour.
   stage() { echo "thinlayer setup: $1 done at ${SECONDS} s"; }
   stage "the Release build"
+  build_test_programs "$build"
+  stage "the Release test programs"
   (cd "$build" && ctest --output-on-failure -j"$(nproc)")
   stage "the Release tests"
   echo "thinlayer setup: the manual (scripts/manual.sh)"
@@ -116,6 +130,8 @@ else
   echo "thinlayer setup: building in Debug ($debug)"
   build_in "$debug" Debug -DTHINLAYER_DEBUG_INFORMATION=OFF
   stage "the Debug build"
+  build_test_programs "$debug"
+  stage "the Debug test programs"
   (cd "$debug" && ctest --output-on-failure -j"$(nproc)")
   stage "the Debug tests"
 
