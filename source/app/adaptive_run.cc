@@ -134,12 +134,12 @@ namespace thinlayer
           const double before = cycles[cycles.size() - 2].collapse_load;
           const double now    = last.collapse_load;
           if (std::isfinite(before) && std::isfinite(now) && before != 0 &&
-              std::abs(now - before) <=
+              std::abs(now - before) <
                 parameters.stop_tolerance * std::abs(before))
             return "the collapse load changed by " +
                    printf("%.2e", std::abs(now - before) / std::abs(before)) +
                    " from cycle " + std::to_string(last.cycle - 1) +
-                   ", within Stop tolerance " +
+                   ", less than Stop tolerance " +
                    printf("%g", parameters.stop_tolerance);
         }
       if (last.cycle >= parameters.cycles)
@@ -236,7 +236,9 @@ namespace thinlayer
               !(indicator.l1_norm() > 0))
             {
               a.stop_reason = "cycle " + std::to_string(cycle) +
-                              " ended without plastic flow to refine toward";
+                              " ended without plastic flow in the continuum to refine "
+                              "toward (a mechanism of interface slip alone, or "
+                              "none)";
               break;
             }
 
