@@ -50,7 +50,8 @@ def sections(runs, quick):
               "file's hand-graded mesh; the line at 1 is the closed form.")] \
         if os.path.isfile(chart) else []
     why = ("Each scene runs its load path from a coarse mesh, and again on the mesh refined "
-           "where the last run's plastic work was (Doerfler's bulk marking of 0.6 of it), "
+           "where the last run's plastic work was (the scene file's marking: Doerfler's bulk "
+           "marking, or a fixed share of the cells where the work concentrates), "
            "cycle after cycle (Adaptivity section); beside it, the same coarse mesh refined "
            "uniformly, and the scene file's mesh graded by hand. Asked: the first adaptive "
            "mesh within the scene's error of the closed form has fewer equations than the "
@@ -59,8 +60,8 @@ def sections(runs, quick):
                "Missed: " + "; ".join("%s (%s): %s" % (v[0], v[1], v[2]) for v in missed) + "."
                if verdicts else "No target could be judged.",
                " Prandtl's footing only, 3 adaptive and 2 uniform cycles (--quick); the full "
-               "report runs the rigid circular footing and the pile section too, and the "
-               "hand-graded meshes." if quick else ""))
+               "report runs the rigid circular footing, the pile section and Case 2 too, and "
+               "the hand-graded meshes." if quick else ""))
     return [Section("adaptive-refinement", "Adaptive refinement",
                     "(not in the paper) meshes graded by hand.",
                     "beyond" if verdicts and not missed else "differs", why, rows=table,
