@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Speed and accuracy benchmarks of thinlayer: the results are not tests.
 
-    /usr/bin/python3 -m benchmarks.run [--quick] [--repeat N]
+    /usr/bin/python3 -m benchmarks.run [--quick] [--repeat N] [--jobs N]
     /usr/bin/python3 -m benchmarks.run --ladder [--repeat N]
     /usr/bin/python3 -m benchmarks.run --stability
     /usr/bin/python3 -m benchmarks.run --performance [--repeat N]
@@ -36,6 +36,7 @@ Peak memory is the maximum resident set size reported by /usr/bin/time
 environment names another binary (so that a build can go on meanwhile).
 """
 import argparse
+import concurrent.futures
 import csv
 import json
 import os
@@ -271,6 +272,9 @@ def main():
     which.add_argument("--performance", action="store_true",
                        help="time to answer on Prandtl, 2048 to 32768 elements "
                        "(benchmarks/performance.py)")
+    parser.add_argument("--jobs", type=int, default=1,
+                        help="cases at a time in the default benchmark (default 1: times of "
+                             "a machine that runs nothing else)")
     parser.add_argument("--output", default=OUT, help="the results directory (default %(default)s)")
     page.add_argument(parser)
     arguments = parser.parse_args()
@@ -290,7 +294,7 @@ def main():
         from benchmarks import performance
         performance.performance((2048, 8192, 32768), repeat, scenes=True)
         return
-    benchmark(arguments.quick, repeat)
+    benchmark(arguments.quick, repeat, max(1, arguments.jobs))
 
 
 def discrete_limit(case, level, prm, geometry):
@@ -303,45 +307,57 @@ def discrete_limit(case, level, prm, geometry):
     return load
 
 
-def benchmark(quick, repeat):
-    """Case x level x method x TOL: both errors, iterations, time, memory."""
+def case_rows(case, level, prm, geometry, tolerances, repeat):
+    """The rows of one case and mesh level: every method at every TOL."""
     rows = []
-    for case, (prm, levels) in CASES.items():
-        for level, geometry in sorted(levels.items()):
-            if level not in BENCHMARK_LEVELS[case] or (quick and level > 1):
-                continue
-            limit = discrete_limit(case, level, prm, geometry)
-            # --quick runs the looser TOL only.
-            tolerances = TOLERANCES[:1] if quick else TOLERANCES
-            for method, criterion in METHODS:
-                for tol in tolerances:
-                    directory = os.path.join(OUT, "runs", "%s-%d-%s-%s" % (
-                        case, level, method.replace(" ", "_"), tol))
-                    summary, median, peak = median_run(
-                        prm, geometry, "cholmod", tol, directory, repeat,
-                        method_entries(method, criterion))
-                    load = results.collapse_load(summary)
-                    row = {
-                        "case": case, "mesh_level": level, "cells": summary["cells"],
-                        "equations": summary["equations"], "method": method,
-                        "tolerance": tol, "outcome": summary["outcome"],
-                        "collapse_detected": int(results.collapse_detected(summary)),
-                        "last_converged_load": summary["last_converged_load"],
-                        "relative_error": results.collapse_error(summary),
-                        "discrete_limit": limit,
-                        "discrete_error": (load - limit) / limit
-                        if load is not None and limit else None,
-                        "total_iterations": summary["total_iterations"],
-                        "wall_median_s": median,
-                        "peak_memory_mb": peak,
-                        "directory": directory,
-                    }
-                    rows.append(row)
-                    print("%-15s level %d %-32s TOL %-5s error %7s (limit %7s) %6d iterations "
-                          "%8.3f s (median of %d) %7.1f MB" % (
-                              case, level, method, tol, percent(row["relative_error"]),
-                              percent(row["discrete_error"]), row["total_iterations"],
-                              row["wall_median_s"], repeat, row["peak_memory_mb"]), flush=True)
+    limit = discrete_limit(case, level, prm, geometry)
+    for method, criterion in METHODS:
+        for tol in tolerances:
+            directory = os.path.join(OUT, "runs", "%s-%d-%s-%s" % (
+                case, level, method.replace(" ", "_"), tol))
+            summary, median, peak = median_run(
+                prm, geometry, "cholmod", tol, directory, repeat,
+                method_entries(method, criterion))
+            load = results.collapse_load(summary)
+            row = {
+                "case": case, "mesh_level": level, "cells": summary["cells"],
+                "equations": summary["equations"], "method": method,
+                "tolerance": tol, "outcome": summary["outcome"],
+                "collapse_detected": int(results.collapse_detected(summary)),
+                "last_converged_load": summary["last_converged_load"],
+                "relative_error": results.collapse_error(summary),
+                "discrete_limit": limit,
+                "discrete_error": (load - limit) / limit
+                if load is not None and limit else None,
+                "total_iterations": summary["total_iterations"],
+                "wall_median_s": median,
+                "peak_memory_mb": peak,
+                "directory": directory,
+            }
+            rows.append(row)
+            print("%-15s level %d %-32s TOL %-5s error %7s (limit %7s) %6d iterations "
+                  "%8.3f s (median of %d) %7.1f MB" % (
+                      case, level, method, tol, percent(row["relative_error"]),
+                      percent(row["discrete_error"]), row["total_iterations"],
+                      row["wall_median_s"], repeat, row["peak_memory_mb"]), flush=True)
+    return rows
+
+
+def benchmark(quick, repeat, jobs=1):
+    """Case x level x method x TOL: both errors, iterations, time, memory.
+    With @p jobs > 1, that many cases (each its discrete limit, then its
+    methods) run at a time: their times are a shared machine's."""
+    tasks = [(case, level, prm, geometry) for case, (prm, levels) in CASES.items()
+             for level, geometry in sorted(levels.items())
+             if level in BENCHMARK_LEVELS[case] and not (quick and level > 1)]
+    # --quick runs the looser TOL only.
+    tolerances = TOLERANCES[:1] if quick else TOLERANCES
+    if jobs > 1:
+        with concurrent.futures.ThreadPoolExecutor(jobs) as pool:
+            per_task = list(pool.map(lambda task: case_rows(*task, tolerances, repeat), tasks))
+    else:
+        per_task = [case_rows(*task, tolerances, repeat) for task in tasks]
+    rows = [row for task_rows in per_task for row in task_rows]
     write_results(rows, "benchmarks",
                   "| case | level | cells | equations | method | TOL | outcome "
                   "| error (analytic) | error (discrete limit) | iterations | wall s (median) "
