@@ -235,10 +235,10 @@ namespace thinlayer
           if (adaptivity.marking != AdaptivityParameters::Marking::uniform &&
               !(indicator.l1_norm() > 0))
             {
-              a.stop_reason = "cycle " + std::to_string(cycle) +
-                              " ended without plastic flow in the continuum to refine "
-                              "toward (a mechanism of interface slip alone, or "
-                              "none)";
+              a.stop_reason =
+                "cycle " + std::to_string(cycle) +
+                " ended without plastic flow in the continuum to refine toward "
+                "(a mechanism of interface slip alone, or none)";
               break;
             }
 
