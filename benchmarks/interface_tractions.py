@@ -92,6 +92,9 @@ def nodal_profile(path):
     values = []
     for run in sorted({r["run"] for r in rows}):
         samples = sorted((r for r in rows if r["run"] == run), key=lambda r: float(r["arc_length"]))
+        if len(samples) % 3:
+            raise SystemExit("interface_tractions: %s: expected 3 Gauss points per element, "
+                             "got %d samples on run %s" % (path, len(samples), run))
         elements = len(samples) // 3
         force, length = [0.0] * (2 * elements + 1), [0.0] * (2 * elements + 1)
         for e in range(elements):
@@ -150,10 +153,11 @@ def measure(output):
         profiles = sorted(glob.glob(os.path.join(directory, "interface-*.csv")) +
                           glob.glob(os.path.join(directory, "layer-*.csv")))
         gauss_elements = scene == INTERFACE and "Interface 4/Integration=lobatto" not in entries
+        last = profile(profiles[-1])
         rows.append({"name": name, "summary": summary, "first": spread(profile(profiles[0])),
-                     "last": spread(profile(profiles[-1])),
+                     "last": spread(last), "samples": len(last),
                      "nodal": spread(nodal_profile(profiles[-1])) if gauss_elements else None,
-                     "samples": len(profile(profiles[-1])), "soil": soil_pressure(directory)})
+                     "soil": soil_pressure(directory)})
     return rows
 
 
