@@ -385,8 +385,16 @@ namespace thinlayer
   {
     std::vector<NamedProfile> result;
     for (const auto &[id, law] : laws)
-      result.push_back({"interface-" + std::to_string(id),
-                        profile(id, solution, step_increment, pending)});
+      {
+        const std::string name = "interface-" + std::to_string(id);
+        Profile raw = profile(id, solution, step_increment, pending, false);
+        Profile recovered = raw;
+        if (const auto r = recoveries.find(id); r != recoveries.end())
+          for (std::vector<InterfaceValues> &values : recovered.stations)
+            r->second.recover(values);
+        result.push_back({name, std::move(recovered)});
+        result.push_back({name + "-gauss", std::move(raw), true});
+      }
     return result;
   }
 
@@ -396,7 +404,8 @@ namespace thinlayer
   InterfaceElements<dim>::profile(const types::boundary_id curve,
                                   const ModeVectors       &solution,
                                   const ModeVectors       &step_increment,
-                                  const bool               pending) const
+                                  const bool               pending,
+                                  const bool               recovered) const
   {
     const unsigned int        n_stations = kinematics->n_stations();
     Profile                   result;
@@ -445,6 +454,9 @@ namespace thinlayer
             values.push_back(v);
           }
         sum_over_ranks(values);
+        if (const auto r = recoveries.find(curve);
+            recovered && r != recoveries.end())
+          r->second.recover(values);
       }
     return result;
   }

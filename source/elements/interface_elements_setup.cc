@@ -36,6 +36,7 @@ namespace thinlayer
     laws.clear();
     elements.clear();
     points.clear();
+    recoveries.clear();
     for (const auto &[id, parameters] : curves)
       laws[id] = std::make_unique<InterfaceLaw>(parameters);
     rank = partition.rank;
@@ -219,8 +220,10 @@ namespace thinlayer
                     {},
                     {}};
     std::map<types::global_dof_index, unsigned int> local;
-    for (const InterfacePointPlace<dim> &place :
-         interface_point_places(pair, curve, mapping, *kinematics))
+    const std::vector<InterfacePointPlace<dim>>     places =
+      interface_point_places(pair, curve, mapping, *kinematics);
+    add_to_recovery(pair, places);
+    for (const InterfacePointPlace<dim> &place : places)
       {
         IntegrationPoint point;
         point.element    = elements.size();
@@ -267,34 +270,95 @@ namespace thinlayer
   }
 
 
+  template <int dim>
+  void
+  InterfaceElements<dim>::add_to_recovery(
+    const FacingSides<dim>                      &pair,
+    const std::vector<InterfacePointPlace<dim>> &places)
+  {
+    // The profile of the pair's curve lists its points in the order they
+    // are added: the element's samples follow those already there.
+    const unsigned int        first = recoveries[pair.curve].n_samples();
+    std::vector<unsigned int> samples;
+    std::vector<std::array<double, 2>> rule_places;
+    std::vector<double>                weights;
+    for (const InterfacePointPlace<dim> &place : places)
+      {
+        samples.push_back(first + samples.size());
+        rule_places.push_back(place.rule_place);
+        weights.push_back(place.weight);
+      }
+    const auto cell = pair.plus_cell;
+    const auto face = cell->face(pair.plus_face);
+    std::function<std::vector<unsigned int>(double, double)> key;
+    if constexpr (dim == 2)
+      {
+        // A side's nodes from its entry: the entry's vertex, both, the
+        // exit's.
+        const bool entry_first = face->vertex(0).distance(pair.entry) <=
+                                 face->vertex(1).distance(pair.entry);
+        const unsigned int entry = face->vertex_index(entry_first ? 0 : 1);
+        const unsigned int exit  = face->vertex_index(entry_first ? 1 : 0);
+        key                      = [entry, exit](const double x, double) {
+          if (x == 0)
+            return std::vector<unsigned int>{entry};
+          if (x == 1)
+            return std::vector<unsigned int>{exit};
+          return std::vector<unsigned int>{std::min(entry, exit),
+                                           std::max(entry, exit)};
+        };
+      }
+    else
+      {
+        // The face's nodes in the plus cell's unit coordinates, as
+        // interface_point_places() lays its rule out.
+        const unsigned int d           = pair.plus_face / 2;
+        const double       across      = pair.plus_face % 2;
+        const unsigned int first_axis  = d == 0 ? 1 : 0;
+        const unsigned int second_axis = d == 2 ? 1 : 2;
+        key                            = [=](const double a, const double b) {
+          Point<dim> unit;
+          unit[first_axis]  = a;
+          unit[second_axis] = b;
+          unit[d]           = across;
+          return TractionRecovery::node_key(cell, unit);
+        };
+      }
+    recoveries[pair.curve].add_element(
+      samples, rule_places, weights, dim == 3, key);
+  }
+
+
   // The class is instantiated in interface_elements.cc; these are the
   // members defined here, for each dimension.
-#define THINLAYER_INSTANTIATE_SETUP(d)                                  \
-  template void InterfaceElements<d>::reinit(                           \
-    const std::vector<FacingSides<d>> &,                                \
-    const DoFHandler<d> &,                                              \
-    const Mapping<d> &,                                                 \
-    const Kinematics &,                                                 \
-    const std::map<types::boundary_id, InterfaceElementParameters> &,   \
-    const std::map<types::material_id, MaterialParameters> &,           \
-    const CellPartition &,                                              \
-    const std::string &);                                               \
-  template void InterfaceElements<d>::reduce_strength(                  \
-    const StrengthReductionParameters &, const double);                 \
-  template InterfaceElements<d>::InitialTractions                       \
-  InterfaceElements<d>::set_initial_tractions(                          \
-    const std::function<SymmetricTensor<2, 3>(const dealii::Point<d> &, \
-                                              types::material_id)> &);  \
-  template void InterfaceElements<d>::check_stiffness(                  \
-    const FacingSides<d> &,                                             \
-    const InterfaceElementParameters &,                                 \
-    const std::map<types::material_id, MaterialParameters> &,           \
-    const std::string &);                                               \
-  template void InterfaceElements<d>::add_element(                      \
-    const FacingSides<d> &,                                             \
-    const InterfaceElementParameters &,                                 \
-    const bool,                                                         \
-    const DoFHandler<d> &,                                              \
+#define THINLAYER_INSTANTIATE_SETUP(d)                                    \
+  template void InterfaceElements<d>::reinit(                             \
+    const std::vector<FacingSides<d>> &,                                  \
+    const DoFHandler<d> &,                                                \
+    const Mapping<d> &,                                                   \
+    const Kinematics &,                                                   \
+    const std::map<types::boundary_id, InterfaceElementParameters> &,     \
+    const std::map<types::material_id, MaterialParameters> &,             \
+    const CellPartition &,                                                \
+    const std::string &);                                                 \
+  template void InterfaceElements<d>::reduce_strength(                    \
+    const StrengthReductionParameters &, const double);                   \
+  template InterfaceElements<d>::InitialTractions                         \
+  InterfaceElements<d>::set_initial_tractions(                            \
+    const std::function<SymmetricTensor<2, 3>(const dealii::Point<d> &,   \
+                                              types::material_id)> &);    \
+  template void InterfaceElements<d>::check_stiffness(                    \
+    const FacingSides<d> &,                                               \
+    const InterfaceElementParameters &,                                   \
+    const std::map<types::material_id, MaterialParameters> &,             \
+    const std::string &);                                                 \
+  template void InterfaceElements<d>::add_to_recovery(                    \
+    const FacingSides<d> &, const std::vector<InterfacePointPlace<d>> &); \
+  template void InterfaceElements<d>::add_element(                        \
+    const FacingSides<d> &,                                               \
+    const InterfaceElementParameters &,                                   \
+    const bool,                                                           \
+    const DoFHandler<d> &,                                                \
     const Mapping<d> &);
 
   THINLAYER_INSTANTIATE_SETUP(2)

@@ -35,6 +35,7 @@ namespace thinlayer
             rule.weight(q) * length * kinematics.area_factor(place.position);
           place.arc_length   = pair.arc_length + rule.point(q)[0] * length;
           place.unit_plus[0] = std::numeric_limits<double>::quiet_NaN();
+          place.rule_place   = {{rule.point(q)[0], 0.}};
           places.push_back(place);
         }
       return places;
@@ -106,6 +107,7 @@ namespace thinlayer
             rule.weight(q) * stretch * kinematics.area_factor(place.position);
           place.arc_length = pair.arc_length + rule.point(q)[0] * chord;
           place.unit_plus  = units[q];
+          place.rule_place = {{rule.point(q)[0], 0.}};
           places.push_back(place);
         }
       return places;
@@ -176,6 +178,7 @@ namespace thinlayer
             place.weight     = rule.weight(i) * rule.weight(j) * area.norm();
             place.arc_length = 0;
             place.unit_plus  = units[q];
+            place.rule_place = {{rule.point(i)[0], rule.point(j)[0]}};
             const double a0 = bounds[i], a1 = bounds[i + 1];
             const double b0 = bounds[j], b1 = bounds[j + 1];
             place.patch = {

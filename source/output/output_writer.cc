@@ -111,6 +111,7 @@ namespace thinlayer
                              const std::string      &directory)
     : directory(directory)
     , vtu_subdivisions(parameters.vtu_subdivisions)
+    , gauss_point_profiles(parameters.gauss_point_profiles)
     , writes(mpi::is_root())
   {
     if (!writes)
@@ -286,11 +287,17 @@ namespace thinlayer
     // Every rank takes part: each holds the points of its own cells.
     std::vector<NamedProfile> profiles;
     for (const LayerProfile<dim> &interface : interfaces)
-      profiles.push_back(
-        {"layer-" + std::to_string(interface.get_material_id()),
-         interface.profile(analysis)});
+      {
+        const std::string name =
+          "layer-" + std::to_string(interface.get_material_id());
+        profiles.push_back({name, interface.profile(analysis)});
+        if (gauss_point_profiles)
+          profiles.push_back(
+            {name + "-gauss", interface.profile(analysis, false), true});
+      }
     for (NamedProfile &profile : analysis.profiles())
-      profiles.push_back(std::move(profile));
+      if (gauss_point_profiles || !profile.gauss_points)
+        profiles.push_back(std::move(profile));
     if (!writes)
       return;
     const Kinematics &kinematics = analysis.get_kinematics();

@@ -554,6 +554,16 @@ namespace thinlayer
                       "while it iterates (its iteration and convergence "
                       "measure); 0 for none, which makes the screen output "
                       "independent of the machine's speed (the tests).");
+    prm.declare_entry("Gauss-point profiles",
+                      "false",
+                      Patterns::Bool(),
+                      "Also write each interface's profile with the raw "
+                      "tractions at its integration points, as "
+                      "NAME-gauss-NNNN.csv (and .vtu with Write VTU) beside "
+                      "NAME-NNNN.csv, whose tractions are recovered at the "
+                      "nodes from the interface's nodal forces. Once the "
+                      "soil flows the raw ones can oscillate from point to "
+                      "point; they are there for studying that.");
     prm.declare_entry("Print timing",
                       "true",
                       Patterns::Bool(),
@@ -577,14 +587,15 @@ namespace thinlayer
     directory = prm.get("Directory");
     if (directory.empty())
       throw InputError(file, "Output/Directory", "expected a directory");
-    write_vtu           = prm.get_bool("Write VTU");
-    fields_interval     = prm.get_integer("Fields interval");
-    fields_of_cut_backs = prm.get_bool("Fields of cut-back attempts");
-    vtu_subdivisions    = prm.get_integer("VTU subdivisions");
-    view_slices         = prm.get_integer("3D view slices");
-    print_timing        = prm.get_bool("Print timing");
-    print_iterations    = prm.get_bool("Print iterations");
-    progress_interval   = prm.get_double("Progress interval");
+    write_vtu            = prm.get_bool("Write VTU");
+    fields_interval      = prm.get_integer("Fields interval");
+    fields_of_cut_backs  = prm.get_bool("Fields of cut-back attempts");
+    vtu_subdivisions     = prm.get_integer("VTU subdivisions");
+    view_slices          = prm.get_integer("3D view slices");
+    print_timing         = prm.get_bool("Print timing");
+    print_iterations     = prm.get_bool("Print iterations");
+    progress_interval    = prm.get_double("Progress interval");
+    gauss_point_profiles = prm.get_bool("Gauss-point profiles");
     prm.leave_subsection();
   }
 } // namespace thinlayer

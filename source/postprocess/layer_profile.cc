@@ -186,15 +186,29 @@ namespace thinlayer
 
     const unsigned int n_1d = static_cast<unsigned int>(
       std::lround(std::sqrt(analysis.n_quadrature_points())));
-    const QGauss<1>     gauss_1d(n_1d);
-    const QGauss<2>     gauss_2d(n_1d);
-    std::vector<double> abscissae;
-    for (const auto &p : gauss_1d.get_points())
-      abscissae.push_back(p[0]);
-    if (!forward)
-      std::reverse(abscissae.begin(), abscissae.end());
-    for (const double along : abscissae)
+    const QGauss<1>           gauss_1d(n_1d);
+    const QGauss<2>           gauss_2d(n_1d);
+    std::vector<unsigned int> order(n_1d);
+    for (unsigned int q = 0; q < n_1d; ++q)
+      order[q] = forward ? q : n_1d - 1 - q;
+    // The cell as an element of the mid-line: its samples' abscissae in
+    // the unit cell, their weights (the rule's times the mid-line's
+    // length element, times r in Fourier scenes), its nodes on the short
+    // faces (and the centre).
+    std::vector<unsigned int>          element_samples;
+    std::vector<std::array<double, 2>> element_places;
+    std::vector<double>                element_weights;
+    for (const unsigned int q : order)
       {
+        const double   along = gauss_1d.point(q)[0];
+        const double   h     = 1e-6;
+        const Point<2> at    = mid(along);
+        element_samples.push_back(samples.size());
+        element_places.push_back({{along, 0.}});
+        element_weights.push_back(
+          gauss_1d.weight(q) * (mid(along + h) - mid(along - h)).norm() /
+          (2 * h) * analysis.get_kinematics().area_factor(at));
+
         const Tensor<1, 2> tangent = tangent_at(along);
         const Tensor<1, 2> normal({-tangent[1], tangent[0]});
         LayerSample<2>     sample;
@@ -213,19 +227,30 @@ namespace thinlayer
                           start + (position - entry).norm(),
                           Point<3>(position[0], position[1], 0)});
       }
+    recovery.add_element(element_samples,
+                         element_places,
+                         element_weights,
+                         false,
+                         [&](const double along, double) {
+                           return TractionRecovery::node_key(
+                             cell, unit_point(long_direction, along, 0.5));
+                         });
     return start + chord.norm();
   }
 
 
   Profile
-  LayerProfile<2>::profile(const AnalysisView<2> &analysis) const
+  LayerProfile<2>::profile(const AnalysisView<2> &analysis,
+                           const bool             recovered) const
   {
     Profile result;
     result.samples = places;
     for (unsigned int station = 0;
          station < analysis.get_kinematics().n_stations();
          ++station)
-      result.stations.push_back(evaluate(analysis, station));
+      result.stations.push_back(recovered
+                                  ? evaluate_recovered(analysis, station)
+                                  : evaluate(analysis, station));
     return result;
   }
 

@@ -122,11 +122,28 @@ namespace thinlayer
       std::lround(std::cbrt(analysis.n_quadrature_points())));
     const QGauss<1> gauss_1d(n_1d);
     const QGauss<3> gauss_3d(n_1d);
-    for (unsigned int i = 0; i < n_1d; ++i)
-      for (unsigned int j = 0; j < n_1d; ++j)
+    // The cell as an element of the mid-surface (TractionRecovery): its
+    // samples' places, second coordinate slower, and weights (the rule's
+    // times the area element).
+    std::vector<unsigned int>          element_samples;
+    std::vector<std::array<double, 2>> element_places;
+    std::vector<double>                element_weights;
+    for (unsigned int j = 0; j < n_1d; ++j)
+      for (unsigned int i = 0; i < n_1d; ++i)
         {
-          const double       a       = gauss_1d.point(i)[0];
-          const double       b       = gauss_1d.point(j)[0];
+          const double a = gauss_1d.point(i)[0];
+          const double b = gauss_1d.point(j)[0];
+          {
+            const double h = 1e-6;
+            element_samples.push_back(samples.size());
+            element_places.push_back({{a, b}});
+            element_weights.push_back(
+              gauss_1d.weight(i) * gauss_1d.weight(j) *
+              cross_product_3d(at(a + h, b, 0.5) - at(a - h, b, 0.5),
+                               at(a, b + h, 0.5) - at(a, b - h, 0.5))
+                .norm() /
+              (4 * h * h));
+          }
           const Tensor<1, 3> normal  = normal_at(a, b);
           const Tensor<1, 3> tangent = first_tangent(normal);
           // Which unit face lies on the +n side.
@@ -158,15 +175,25 @@ namespace thinlayer
                               at(a0, b1, 0.5)}}});
           samples.push_back(sample);
         }
+    recovery.add_element(element_samples,
+                         element_places,
+                         element_weights,
+                         true,
+                         [&](const double a, const double b) {
+                           return TractionRecovery::node_key(
+                             cell, unit_point(thickness, a, b, 0.5));
+                         });
   }
 
 
   Profile
-  LayerProfile<3>::profile(const AnalysisView<3> &analysis) const
+  LayerProfile<3>::profile(const AnalysisView<3> &analysis,
+                           const bool             recovered) const
   {
     Profile result;
     result.surface_samples = places;
-    result.stations.push_back(evaluate(analysis, 0));
+    result.stations.push_back(recovered ? evaluate_recovered(analysis, 0)
+                                        : evaluate(analysis, 0));
     return result;
   }
 

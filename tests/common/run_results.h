@@ -163,16 +163,24 @@ namespace run_results
     return rows;
   }
 
-  /// The newest of the files @p directory/@p prefix*.csv (the last step's
-  /// profile), its name; empty where there is none.
+  /// The newest of the files @p directory/@p prefix NNNN.csv (the last
+  /// step's profile), its name; empty where there is none.
   inline std::string
   newest_csv(const std::string &directory, const std::string &prefix)
   {
     std::string last;
     for (const auto &entry : std::filesystem::directory_iterator(directory))
       {
+        // PREFIX then the step's digits alone: "interface-4-" is not
+        // "interface-4-gauss-".
         const std::string name = entry.path().filename().string();
-        if (name.rfind(prefix, 0) == 0 && entry.path().extension() == ".csv")
+        const std::string step =
+          name.size() > prefix.size() + 4
+            ? name.substr(prefix.size(), name.size() - prefix.size() - 4)
+            : "";
+        if (name.rfind(prefix, 0) == 0 && entry.path().extension() == ".csv" &&
+            !step.empty() &&
+            step.find_first_not_of("0123456789") == std::string::npos)
           last = std::max(last, name);
       }
     return last.empty() ? last : directory + "/" + last;

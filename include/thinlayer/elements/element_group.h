@@ -67,6 +67,9 @@ namespace thinlayer
   {
     std::string name;
     Profile     profile;
+    /// Whether it holds the raw values at the integration points, which
+    /// the output writes only on request (Output/Gauss-point profiles).
+    bool gauss_points = false;
   };
 
 

@@ -14,6 +14,7 @@
 #include <thinlayer/elements/element_group.h>
 #include <thinlayer/elements/interface_geometry.h>
 #include <thinlayer/elements/interface_values.h>
+#include <thinlayer/elements/traction_recovery.h>
 #include <thinlayer/materials/interface_law.h>
 #include <thinlayer/mesh/interface_pairing.h>
 #include <thinlayer/parameters/parameters.h>
@@ -197,20 +198,25 @@ namespace thinlayer
     void
     add_coupled_tangent(const CellMatrixSink &add) override;
 
-    /// One profile per interface, "interface-<id>".
+    /// Two profiles per interface: "interface-<id>", its tractions
+    /// recovered at the nodes (TractionRecovery), and
+    /// "interface-<id>-gauss", the values at the integration points.
     std::vector<NamedProfile>
     profiles(const ModeVectors &solution,
              const ModeVectors &step_increment,
              const bool         pending) const override;
     /// @}
 
-    /// The profile of curve @p curve: with the displacements @p solution
-    /// plus, where @p pending, the step's @p step_increment.
+    /// The profile of curve @p curve at its integration points: with the
+    /// displacements @p solution plus, where @p pending, the step's
+    /// @p step_increment; its tractions @p recovered at the nodes or
+    /// those of the points.
     Profile
     profile(const types::boundary_id curve,
             const ModeVectors       &solution,
             const ModeVectors       &step_increment,
-            const bool               pending) const;
+            const bool               pending,
+            const bool               recovered = true) const;
 
   private:
     /// One term of the jump operator: the side-signed shape value of a
@@ -300,6 +306,12 @@ namespace thinlayer
     unsigned int
     for_each_point(const ModeVectors &step_increment, const Rule &rule);
 
+    /// Add the element of @p pair, whose points lie at @p places, to its
+    /// curve's traction recovery.
+    void
+    add_to_recovery(const FacingSides<dim>                      &pair,
+                    const std::vector<InterfacePointPlace<dim>> &places);
+
     /// The 3 x (modes x element DoFs) map from the element's DoFs of all
     /// modes to the local jump at point @p point and station @p s.
     void
@@ -315,6 +327,8 @@ namespace thinlayer
     std::map<types::boundary_id, std::unique_ptr<InterfaceLaw>> laws;
     std::vector<Element>                                        elements;
     std::vector<IntegrationPoint>                               points;
+    /// Per curve: its tractions' recovery at the nodes.
+    std::map<types::boundary_id, TractionRecovery> recoveries;
     /// Point-major: points[p] at station s is states[p * n_stations + s].
     /// Every point has a slot (the points lie along curves, a small share
     /// of the body's), but only this rank's are ever computed or read.

@@ -36,6 +36,11 @@ namespace thinlayer
     /// The point in the plus cell's unit cell (NaN on a straight side of a
     /// curve, where it is found from @p position).
     Point<dim> unit_plus;
+    /// The point of the rule: on a curve its abscissa from the side's
+    /// entry, in [0, 1]; on a face its two coordinates, along the plus
+    /// cell's unit axes other than the face's normal one, in increasing
+    /// order.
+    std::array<double, 2> rule_place;
   };
 
 

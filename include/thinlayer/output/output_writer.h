@@ -95,7 +95,10 @@ namespace thinlayer
      * The profile of every one of @p interfaces at load step @p step
      * (load factor @p load_factor), as `layer-<id>-NNNN.csv`, and of
      * every curve of zero-thickness elements as
-     * `interface-<id>-NNNN.csv`; @p with_vtu, also each as a VTU
+     * `interface-<id>-NNNN.csv`, their tractions recovered at the nodes;
+     * with Output/Gauss-point profiles also the raw ones as
+     * `layer-<id>-gauss-NNNN.csv` and `interface-<id>-gauss-NNNN.csv`;
+     * @p with_vtu, also each as a VTU
      * polyline, listed in `layer-<id>.pvd` and `interface-<id>.pvd` if
      * the state is @p on_curve (as write_fields()), else in
      * `layer-<id>-attempts.pvd` and `interface-<id>-attempts.pvd`.
@@ -185,6 +188,9 @@ namespace thinlayer
 
     std::string  directory;
     unsigned int vtu_subdivisions;
+    /// Whether the profiles' raw values at the integration points are
+    /// written too (Output/Gauss-point profiles).
+    bool gauss_point_profiles;
     /// Whether this rank writes (rank 0).
     bool          writes;
     std::ofstream history;

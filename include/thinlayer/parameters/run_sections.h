@@ -211,6 +211,9 @@ namespace thinlayer
     bool print_iterations;
     /// Seconds between a long step's progress lines; 0 for none.
     double progress_interval;
+    /// Whether the interfaces' profiles are also written with the raw
+    /// values at their integration points (NAME-gauss-NNNN.csv).
+    bool gauss_point_profiles;
 
     static void
     declare(ParameterHandler &prm);

@@ -8,6 +8,7 @@
 
 #include <thinlayer/analysis/analysis_view.h>
 #include <thinlayer/elements/interface_values.h>
+#include <thinlayer/elements/traction_recovery.h>
 
 #include <vector>
 
@@ -82,6 +83,17 @@ namespace thinlayer
       return evaluate_layer(analysis, samples, station);
     }
 
+    /// As evaluate(), the tractions recovered at the layer's nodes along
+    /// its mid-line or mid-surface (TractionRecovery).
+    std::vector<InterfaceValues>
+    evaluate_recovered(const AnalysisView<dim> &analysis,
+                       const unsigned int       station) const
+    {
+      std::vector<InterfaceValues> values = evaluate(analysis, station);
+      recovery.recover(values);
+      return values;
+    }
+
   protected:
     explicit LayerReading(const types::material_id material_id)
       : material_id(material_id)
@@ -104,6 +116,9 @@ namespace thinlayer
 
     types::material_id            material_id;
     std::vector<LayerSample<dim>> samples;
+    /// The samples of each cell as an element of the mid-line or
+    /// mid-surface, its nodes named by the whole mesh's vertices.
+    TractionRecovery recovery;
   };
 
 
