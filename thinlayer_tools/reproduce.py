@@ -27,7 +27,7 @@ from thinlayer_tools import overrides as command_line_overrides
 from thinlayer_tools.report import (adaptivity, bearing_capacity, case1, case4, continuation,
                                     curved, earth_pressure, footings, limits, methods, page,
                                     parallel, phases, pile, pile_lateral, scaling, solid, speed,
-                                    strength_reduction, wall_friction, weight)
+                                    strength_reduction, tractions, wall_friction, weight)
 from thinlayer_tools.report.runs import DEFAULT, PAPER, Runs
 
 ALL_ALPHAS = "alpha = 10, 20, 30, 40, 45, 50, 60, 70, 80"
@@ -97,6 +97,8 @@ def run_list(quick):
     runs += pile_lateral.run_list(quick)
     # Curved interfaces: a pile section sliding on a circle.
     runs += curved.run_list(quick)
+    # Interface tractions recovered at the nodes, beside the raw ones.
+    runs += tractions.run_list(quick)
     # The same scenes on several MPI ranks (the fourth field), for the
     # section on ranks: every kinematics and element kind, each method kind.
     runs += parallel.ONE_RANK_RUNS
@@ -222,7 +224,7 @@ def sections(runs, quick):
             + bearing_capacity.sections(runs, quick)
             + phases.sections(runs, quick) + pile.sections(runs, quick)
             + pile_lateral.sections(runs, quick)
-            + curved.sections(runs, quick)
+            + curved.sections(runs, quick) + tractions.sections(runs, quick)
             + continuation.sections(runs, quick) + speed.sections(runs, quick)
             + parallel.sections(runs, quick) + scaling.sections(runs, quick)
             + solid.sections(runs, quick) + adaptivity.sections(runs, quick))

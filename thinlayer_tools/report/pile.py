@@ -30,10 +30,15 @@ BETA_LAYER = math.pi * R * L ** 2 * K_LAYER * GAMMA * math.sin(math.radians(PHI_
 STATICS, SLIDING = 0.005, 1e-6
 
 
+# The truths are of the points' own states (Coulomb's law at each): the
+# runs also write the raw profiles, at the Gauss points, which they read.
+RAW = ("Output/Write VTU=false", "Output/Gauss-point profiles=true")
+
+
 def run_list(quick):
-    return [("pile-shaft", SCENE, ("Output/Write VTU=false",)),
+    return [("pile-shaft", SCENE, RAW),
             ("pile-shaft-paper", SCENE, PAPER + ("Output/Write VTU=false",)),
-            ("pile-shaft-layer", LAYER_SCENE, ("Output/Write VTU=false",)),
+            ("pile-shaft-layer", LAYER_SCENE, RAW),
             ("pile-shaft-layer-paper", LAYER_SCENE, PAPER + ("Output/Write VTU=false",))]
 
 
@@ -43,7 +48,7 @@ def layer_integrals(directory):
     that do not yield, the largest excess over Coulomb's line of the layer
     (tau - sigma_n tan(phi_s), relative to the largest traction), and the
     range of tau / sigma_n."""
-    last = sorted(glob.glob(os.path.join(directory, "layer-2-*.csv")))[-1]
+    last = sorted(glob.glob(os.path.join(directory, "layer-2-gauss-*.csv")))[-1]
     rows = sorted(results.read_csv(last), key=lambda r: float(r["y"]))
     shear, elastic, beyond, largest, ratios = 0.0, 0, 0.0, 0.0, []
     for k in range(0, len(rows) - 1, 2):
@@ -63,7 +68,7 @@ def integrals(directory):
     (three per cell side): the shaft's shear, the shear below the toe, the
     normal traction on the shaft, the worst departure from Coulomb's law,
     each force divided by the beta method's estimate; and the samples."""
-    last = sorted(glob.glob(os.path.join(directory, "interface-6-*.csv")))[-1]
+    last = sorted(glob.glob(os.path.join(directory, "interface-6-gauss-*.csv")))[-1]
     rows = sorted(results.read_csv(last), key=lambda r: float(r["y"]))
     tan_delta = math.tan(math.radians(DELTA))
     shaft = below = normal = worst = largest = 0.0
