@@ -13,12 +13,12 @@ Per variant: the collapse load, and the normal traction along the contact
 (the profile's samples, ordered by arc length) at the first step (elastic)
 and at the last converged one: its range and the largest jump between
 neighbouring samples. The resultant is 9-12 c per unit diameter, and a
-smooth profile at collapse ranges over some +-6.5 c. On interface elements
-with Gauss points, also the tractions recovered at the nodes, work-conjugate:
-each element's nodal forces sum_g N_i(xi_g) t_g w_g J, summed over the
-elements of a node and divided by its tributary length sum_g N_i(xi_g) w_g
-J (computed here from the profile's samples, three per element in order,
-J from their arc lengths). With python3-vtk9, also
+smooth profile at collapse ranges over some +-6.5 c. The raw values are
+the profile at the integration points (Output/Gauss-point profiles), the
+recovered ones the profile the run writes: each element's nodal forces
+sum_g N_i(xi_g) t_g w_g over the corner nodes, summed over the elements of
+a node and divided by its tributary length (TractionRecovery). With
+python3-vtk9, also
 the soil's pressure -tr(sigma)/3 as the last VTU writes it at the points
 within 1.0 < r < 1.03 of the pile: range and largest jump by angle. Writes
 DIR/interface_tractions.md (DIR: output/benchmarks) and prints it; the runs
@@ -30,6 +30,7 @@ import glob
 import json
 import math
 import os
+import re
 import subprocess
 
 from thinlayer_tools import THINLAYER, TOP, overrides
@@ -80,35 +81,6 @@ def spread(values):
             max(abs(a - b) for a, b in zip(values, values[1:])) if len(values) > 1 else 0.0)
 
 
-def nodal_profile(path):
-    """The normal traction recovered at the nodes of 3-node interface
-    elements from a profile of their 3 Gauss points each (in order along
-    each run): assembled work-conjugate nodal forces over tributary
-    lengths."""
-    with open(path) as f:
-        rows = list(csv.DictReader(f))
-    g = math.sqrt(3 / 5)
-    abscissae, weights = (-g, 0.0, g), (5 / 9, 8 / 9, 5 / 9)
-    values = []
-    for run in sorted({r["run"] for r in rows}):
-        samples = sorted((r for r in rows if r["run"] == run), key=lambda r: float(r["arc_length"]))
-        if len(samples) % 3:
-            raise SystemExit("interface_tractions: %s: expected 3 Gauss points per element, "
-                             "got %d samples on run %s" % (path, len(samples), run))
-        elements = len(samples) // 3
-        force, length = [0.0] * (2 * elements + 1), [0.0] * (2 * elements + 1)
-        for e in range(elements):
-            points = samples[3 * e:3 * e + 3]
-            jacobian = (float(points[2]["arc_length"]) - float(points[0]["arc_length"])) / (2 * g)
-            for xi, w, point in zip(abscissae, weights, points):
-                shapes = (-xi * (1 - xi) / 2, 1 - xi * xi, xi * (1 + xi) / 2)
-                for node, shape in zip((2 * e, 2 * e + 1, 2 * e + 2), shapes):
-                    force[node] += shape * float(point["normal_traction"]) * w * jacobian
-                    length[node] += shape * w * jacobian
-        values += [f / m for f, m in zip(force, length)]
-    return values
-
-
 def soil_pressure(directory):
     """The soil's pressure near the pile in the last VTU: (largest
     magnitude, largest jump by angle), or None without python3-vtk9."""
@@ -145,33 +117,37 @@ def measure(output):
         command = [THINLAYER, os.path.join(TOP, "prm", scene + ".prm")] + overrides(
             ["Mesh/Geometry parameters=" + geometry, strength,
              "Output/Directory=" + directory, "Output/Write VTU=true",
+             "Output/Gauss-point profiles=true",
              "Output/Print timing=false"] + list(entries))
         if subprocess.run(command, cwd=TOP, stdout=subprocess.DEVNULL).returncode not in (0, 4):
             raise SystemExit("interface_tractions: %s failed (its error above)" % name)
         with open(os.path.join(directory, "summary.json")) as f:
             summary = json.load(f)
-        profiles = sorted(glob.glob(os.path.join(directory, "interface-*.csv")) +
-                          glob.glob(os.path.join(directory, "layer-*.csv")))
-        gauss_elements = scene == INTERFACE and "Interface 4/Integration=lobatto" not in entries
-        last = profile(profiles[-1])
-        rows.append({"name": name, "summary": summary, "first": spread(profile(profiles[0])),
-                     "last": spread(last), "samples": len(last),
-                     "nodal": spread(nodal_profile(profiles[-1])) if gauss_elements else None,
+        def series(name):
+            return sorted(p for p in glob.glob(os.path.join(directory, name + "-*.csv"))
+                          if re.fullmatch(re.escape(name) + r"-\d{4}\.csv",
+                                          os.path.basename(p)))
+
+        contact = "interface-4" if scene == INTERFACE else "layer-2"
+        raw, recovered = series(contact + "-gauss"), series(contact)
+        rows.append({"name": name, "summary": summary, "first": spread(profile(raw[0])),
+                     "last": spread(profile(raw[-1])), "samples": len(profile(raw[-1])),
+                     "recovered": spread(profile(recovered[-1])),
                      "soil": soil_pressure(directory)})
     return rows
 
 
 def table(rows):
-    lines = ["| variant | collapse load / (c D) | outcome | samples | first step: max abs, "
-             "largest jump | last step: max abs, largest jump | last step at the nodes "
-             "(work-conjugate): max abs, largest jump | soil pressure near the pile: "
+    lines = ["| variant | collapse load / (c D) | outcome | samples | first step, raw: max "
+             "abs, largest jump | last step, raw: max abs, largest jump | last step, "
+             "recovered (written): max abs, largest jump | soil pressure near the pile: "
              "max abs, largest jump |", "|" + "---|" * 8]
     for r in rows:
         load = r["summary"].get("collapse_load")
-        soil, nodal = r["soil"], r["nodal"]
+        soil = r["soil"]
         lines.append("| %s | %s | %s | %d | %.1f, %.1f | %.1f, %.1f | %s | %s |" % (
             r["name"], "%.3f" % load if load is not None else "-", r["summary"]["outcome"],
-            r["samples"], *r["first"], *r["last"], "%.1f, %.1f" % nodal if nodal else "-",
+            r["samples"], *r["first"], *r["last"], "%.1f, %.1f" % r["recovered"],
             "%.1f, %.1f" % soil if soil else "-"))
     return lines
 

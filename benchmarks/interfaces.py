@@ -9,8 +9,9 @@ E / L, with E the soil's modulus and L the case's length: column width,
 footing half-width or radius, wall height), all by the default method, and
 tables per run: the outcome, the collapse load (none unless the run ended in
 a collapse or a plateau), its error against the analytic value, iterations,
-wall time, and the oscillation of the normal traction along the interface at
-the last accepted step (the median second difference between neighbouring
+wall time, and the oscillation of the raw normal traction (at the
+integration points, Output/Gauss-point profiles) along the interface at the
+last accepted step (the median second difference between neighbouring
 samples over the median traction: 0 for a linear profile). Writes
 output/benchmarks/interfaces/interfaces.csv, .md (also printed) and
 interfaces.png.
@@ -70,6 +71,11 @@ CASES = {
 }
 ASPECT_RATIOS = [10, 100, 1000, 10000]
 STIFFNESS_FACTORS = [10, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8]
+# The oscillation is the raw tractions' (the profiles' recovered ones are
+# smooth by construction).
+RAW = "Output/Gauss-point profiles=true"
+
+
 def oscillation(directory, pattern):
     """Median |second difference| over median |value| of the normal
     traction along the first run at angle 0, at the last accepted step."""
@@ -198,9 +204,9 @@ def main():
         for ratio in ratios:
             directory = os.path.join(OUT, "%s-thin-%d" % (case, ratio))
             summary = run(thin, geometry.format(ar=ratio), "default", directory,
-                          ["Layers/Material ids=%d" % material] + common)
+                          ["Layers/Material ids=%d" % material, RAW] + common)
             rows.append(measure(case, "thin layer", ratio, summary, directory,
-                                "layer-%d-%%04d.csv" % material))
+                                "layer-%d-gauss-%%04d.csv" % material))
             print(format_row(rows[-1]), flush=True)
         for factor in factors:
             directory = os.path.join(OUT, "%s-zero-%g" % (case, factor))
@@ -208,9 +214,9 @@ def main():
             for curve in curves:
                 entries += ["Interface %d/Normal stiffness=%g" % (curve, factor * E_OVER_L),
                             "Interface %d/Shear stiffness=%g" % (curve, factor * E_OVER_L)]
-            summary = run(zero, zero_geometry, "default", directory, entries + common)
+            summary = run(zero, zero_geometry, "default", directory, entries + [RAW] + common)
             rows.append(measure(case, "zero thickness", factor, summary, directory,
-                                "interface-%d-%%04d.csv" % profiled))
+                                "interface-%d-gauss-%%04d.csv" % profiled))
             print(format_row(rows[-1]), flush=True)
     write_results(rows, "interfaces", HEADER, format_row, OUT)
     chart(rows, os.path.join(OUT, "interfaces.png"))
