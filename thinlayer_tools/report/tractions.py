@@ -6,6 +6,7 @@ footing, Case 2 on interface elements, and Case 3's footing in 3D on
 interface elements and on a thin layer (maps)."""
 import math
 import os
+import re
 import xml.etree.ElementTree as ElementTree
 
 import matplotlib.pyplot as plt
@@ -52,7 +53,7 @@ def pile_run(kind, alpha):
 
 def run_list(quick):
     runs = [(pile_run(kind, alpha), curved.KINDS[kind],
-             curved.overrides(kind, alpha, 12, True) + RAW) for kind, alpha in PILES]
+             curved.overrides(kind, alpha, 12, True) + RAW + MAPS) for kind, alpha in PILES]
     runs += [("tractions-footing", FOOTING, NO_VTU + RAW),
              ("tractions-case2", CASE2, NO_VTU + RAW)]
     for name, scene in (("tractions-3d-interface", CASE3_ZT), ("tractions-3d-layer", CASE3_LAYER)):
@@ -122,6 +123,31 @@ def surface_patches(path, field):
     raise SystemExit("tractions: no %s in %s" % (field, path))
 
 
+def soil_mean_stress(directory, inner, outer):
+    """(angles in degrees, tr(sigma) / 3) of the soil (material 1) at the
+    points of the last fields VTU with inner < r < outer, by angle; None
+    without python3-vtk9 (which the test command installs) or fields."""
+    try:
+        import vtk
+        from vtk.util.numpy_support import vtk_to_numpy
+    except ImportError:
+        return None
+    fields = sorted(p for p in os.listdir(directory) if re.fullmatch(r"fields-\d{4}\.vtu", p))
+    if not fields:
+        return None
+    reader = vtk.vtkXMLUnstructuredGridReader()
+    reader.SetFileName(os.path.join(directory, fields[-1]))
+    reader.Update()
+    grid = reader.GetOutput()
+    data = grid.GetPointData()
+    stress = [vtk_to_numpy(data.GetArray(n)) for n in ("stress_xx", "stress_yy", "stress_zz")]
+    material = vtk_to_numpy(data.GetArray("material_id"))
+    near = sorted((math.degrees(math.atan2(y, x)), (stress[0][k] + stress[1][k] + stress[2][k]) / 3)
+                  for k, (x, y, _) in enumerate(vtk_to_numpy(grid.GetPoints().GetData()))
+                  if inner < math.hypot(x, y) < outer and material[k] == 1)
+    return ([a for a, _ in near], [m for _, m in near]) if near else None
+
+
 def pile_figure(runs):
     fig, axes = plt.subplots(1, 2, figsize=(11, 4), sharey=True)
     for ax, kind in zip(axes, ("interface", "layer")):
@@ -134,6 +160,11 @@ def pile_figure(runs):
             rows = profile(directory, PROFILE[kind], step, raw)
             angle = [math.degrees(math.atan2(float(r["y"]), float(r["x"]))) for r in rows]
             ax.plot(angle, [float(r["normal_traction"]) for r in rows], label=label, **style)
+        # The soil beside the contact (outside the skin or the layer, R + t).
+        soil = soil_mean_stress(directory, 1.02, 1.05)
+        if soil:
+            ax.plot(*soil, color="C2", lw=1, label="soil beside it: mean stress tr(sigma) / 3, "
+                    "last converged")
         ax.axhline(PILE_BOUND, color="k", ls=":", lw=1)
         ax.axhline(-PILE_BOUND, color="k", ls=":", lw=1, label="the truth's bound, 25 c")
         ax.set_ylim(-1.3 * PILE_BOUND, 1.3 * PILE_BOUND)
@@ -296,7 +327,9 @@ def tractions(runs, quick):
         figures=[(pile_figure(runs), "The smooth pile's normal traction around the pile at the "
                   "last converged state: at the Gauss points (grey, beyond the axes on the "
                   "interface elements) and recovered at the nodes (blue), with the first "
-                  "step's recovered profile (elastic, orange)."),
+                  "step's recovered profile (elastic, orange) and, where python3-vtk9 reads "
+                  "the fields, the soil's mean stress beside the contact (green): smooth "
+                  "where the raw tractions are not."),
                  (line_figure(runs), "Left: the smooth footing's contact pressure at collapse; "
                   "right: Case 2's shear traction at its last converged step, sliding."),
                  (map_figure(runs), "Case 3's footing in 3D, its interface seen from above "
