@@ -191,10 +191,9 @@ namespace thinlayer
     std::vector<unsigned int> order(n_1d);
     for (unsigned int q = 0; q < n_1d; ++q)
       order[q] = forward ? q : n_1d - 1 - q;
-    // The cell as an element of the mid-line: its samples' abscissae in
-    // the unit cell, their weights (the rule's times the mid-line's
-    // length element, times r in Fourier scenes), its nodes on the short
-    // faces (and the centre).
+    // The cell as an element of the mid-line (TractionRecovery): its
+    // samples' abscissae in the unit cell, and their weights (the rule's
+    // times the mid-line's length element, times r in Fourier scenes).
     std::vector<unsigned int>          element_samples;
     std::vector<std::array<double, 2>> element_places;
     std::vector<double>                element_weights;

@@ -123,27 +123,24 @@ namespace thinlayer
     const QGauss<1> gauss_1d(n_1d);
     const QGauss<3> gauss_3d(n_1d);
     // The cell as an element of the mid-surface (TractionRecovery): its
-    // samples' places, second coordinate slower, and weights (the rule's
-    // times the area element).
+    // samples' places and weights (the rule's times the area element).
     std::vector<unsigned int>          element_samples;
     std::vector<std::array<double, 2>> element_places;
     std::vector<double>                element_weights;
-    for (unsigned int j = 0; j < n_1d; ++j)
-      for (unsigned int i = 0; i < n_1d; ++i)
+    const double                       h = 1e-6;
+    for (unsigned int i = 0; i < n_1d; ++i)
+      for (unsigned int j = 0; j < n_1d; ++j)
         {
           const double a = gauss_1d.point(i)[0];
           const double b = gauss_1d.point(j)[0];
-          {
-            const double h = 1e-6;
-            element_samples.push_back(samples.size());
-            element_places.push_back({{a, b}});
-            element_weights.push_back(
-              gauss_1d.weight(i) * gauss_1d.weight(j) *
-              cross_product_3d(at(a + h, b, 0.5) - at(a - h, b, 0.5),
-                               at(a, b + h, 0.5) - at(a, b - h, 0.5))
-                .norm() /
-              (4 * h * h));
-          }
+          element_samples.push_back(samples.size());
+          element_places.push_back({{a, b}});
+          element_weights.push_back(
+            gauss_1d.weight(i) * gauss_1d.weight(j) *
+            cross_product_3d(at(a + h, b, 0.5) - at(a - h, b, 0.5),
+                             at(a, b + h, 0.5) - at(a, b - h, 0.5))
+              .norm() /
+            (4 * h * h));
           const Tensor<1, 3> normal  = normal_at(a, b);
           const Tensor<1, 3> tangent = first_tangent(normal);
           // Which unit face lies on the +n side.

@@ -26,8 +26,8 @@ namespace thinlayer
    * Why: once the soil flows, the tractions at the Gauss points of stiff
    * interface elements oscillate from point to point (Schellekens and de
    * Borst), and a thin layer of Q8 2x2 cells carries a mode linear within
-   * each cell, antisymmetric about its centre, whose amplitude can exceed
-   * the signal tenfold. The nodal forces of neighbouring elements at a
+   * each cell, antisymmetric about its centre, whose amplitude can far
+   * exceed the signal. The nodal forces of neighbouring elements at a
    * shared node cancel those modes, so the recovered field is smooth where
    * the point values are not. The recovery keeps the resultant: the sum of
    * the f_i is the sum of the t_g w_g, and the field's integral by the same
