@@ -14,12 +14,19 @@
 //   sideways on Tresca elements of adhesion C_w = 1) at sliding: the shear
 //   traction equals C_w within 2% along the footing, every sample beyond
 //   the first cell from either end.
+// - the smooth pile section on interface elements refined adaptively
+//   (prm/circular-inclusion-zero-thickness-adaptive.prm): at the last
+//   cycle, whose contact has sides of different lengths (hanging vertices
+//   along it, where the recovery's nodes are the fine sides' alone), the
+//   normal traction stays within 25 c and no two neighbouring samples
+//   differ by more than 3 c, as on the uniform mesh.
 // The 3D sliding block's truth (the shear traction uniform at c within 2%)
 // is in unit/interface_elements_3d, the pile section's (smooth and within
 // 25 c) in verification/circular_inclusion.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -28,19 +35,20 @@
 
 namespace
 {
-  /// The profile results/@p prefix NNNN.csv of the last converged and
-  /// accepted step (history.csv), in order along its run.
+  /// The profile @p directory/@p prefix NNNN.csv of the last converged
+  /// and accepted step (history.csv), in order along its run.
   run_results::Table
-  last_profile(const std::string &prefix)
+  last_profile(const std::string &prefix,
+               const std::string &directory = "results")
   {
     unsigned int step = 0;
-    for (const auto &row : run_results::read_csv("results/history.csv"))
+    for (const auto &row : run_results::read_csv(directory + "/history.csv"))
       if (row.at("converged") == 1 && row.at("accepted") == 1)
         step = static_cast<unsigned int>(row.at("step"));
     char number[16];
     std::snprintf(number, sizeof(number), "%04u.csv", step);
     run_results::Table profile =
-      run_results::read_csv("results/" + prefix + number);
+      run_results::read_csv(directory + "/" + prefix + number);
     std::sort(profile.begin(), profile.end(), [](const auto &a, const auto &b) {
       return a.at("arc_length") < b.at("arc_length");
     });
@@ -101,6 +109,46 @@ main()
                 "most %.2f%% from C_w\n",
                 100 * worst);
     expect(worst < 0.02, "equal to C_w within 2%");
+  }
+  {
+    run_results::run_prm("circular-inclusion-zero-thickness-adaptive.prm");
+    unsigned int cycles = 0;
+    while (std::filesystem::exists("results/cycle-" + std::to_string(cycles)))
+      ++cycles;
+    const run_results::Table profile =
+      cycles > 0 ? last_profile("interface-4-",
+                                "results/cycle-" + std::to_string(cycles - 1))
+                 : run_results::Table();
+    // Each side's length from its three Gauss points' arc lengths.
+    double shortest = 1e300, longest = 0;
+    for (unsigned int k = 0; k + 2 < profile.size(); k += 3)
+      {
+        const double side =
+          (profile[k + 2].at("arc_length") - profile[k].at("arc_length")) /
+          std::sqrt(3. / 5.);
+        shortest = std::min(shortest, side);
+        longest  = std::max(longest, side);
+      }
+    double largest = profile.empty() ? 1e300 : 0, jump = 0;
+    for (unsigned int k = 0; k < profile.size(); ++k)
+      {
+        largest = std::max(largest, std::abs(profile[k].at("normal_traction")));
+        if (k > 0)
+          jump = std::max(jump,
+                          std::abs(profile[k].at("normal_traction") -
+                                   profile[k - 1].at("normal_traction")));
+      }
+    std::printf("the pile section refined adaptively, last of %u cycles:\n",
+                cycles);
+    expect(cycles > 1 && profile.size() % 3 == 0 && longest >= 1.9 * shortest,
+           "its contact's sides differ in length (hanging vertices)");
+    std::printf("  |sigma_n| at most %.1f c, neighbours differ by at most "
+                "%.1f c\n",
+                largest,
+                jump);
+    expect(largest < 25 && jump < 3,
+           "the normal traction within 25 c, no jump between neighbours "
+           "above 3 c");
   }
   return truths::conclude();
 }
