@@ -387,11 +387,10 @@ namespace thinlayer
     for (const auto &[id, law] : laws)
       {
         const std::string name = "interface-" + std::to_string(id);
-        Profile raw = profile(id, solution, step_increment, pending, false);
-        Profile recovered = raw;
+        Profile           raw  = profile(id, solution, step_increment, pending);
+        Profile           recovered = raw;
         if (const auto r = recoveries.find(id); r != recoveries.end())
-          for (std::vector<InterfaceValues> &values : recovered.stations)
-            r->second.recover(values);
+          r->second.recover(recovered);
         result.push_back({name, std::move(recovered)});
         result.push_back({name + "-gauss", std::move(raw), true});
       }
@@ -404,8 +403,7 @@ namespace thinlayer
   InterfaceElements<dim>::profile(const types::boundary_id curve,
                                   const ModeVectors       &solution,
                                   const ModeVectors       &step_increment,
-                                  const bool               pending,
-                                  const bool               recovered) const
+                                  const bool               pending) const
   {
     const unsigned int        n_stations = kinematics->n_stations();
     Profile                   result;
@@ -454,9 +452,6 @@ namespace thinlayer
             values.push_back(v);
           }
         sum_over_ranks(values);
-        if (const auto r = recoveries.find(curve);
-            recovered && r != recoveries.end())
-          r->second.recover(values);
       }
     return result;
   }

@@ -290,14 +290,14 @@ namespace thinlayer
       {
         const std::string name =
           "layer-" + std::to_string(interface.get_material_id());
-        profiles.push_back({name, interface.profile(analysis)});
-        if (gauss_point_profiles)
-          profiles.push_back(
-            {name + "-gauss", interface.profile(analysis, false), true});
+        Profile raw       = interface.profile(analysis);
+        Profile recovered = raw;
+        interface.recover(recovered);
+        profiles.push_back({name, std::move(recovered)});
+        profiles.push_back({name + "-gauss", std::move(raw), true});
       }
     for (NamedProfile &profile : analysis.profiles())
-      if (gauss_point_profiles || !profile.gauss_points)
-        profiles.push_back(std::move(profile));
+      profiles.push_back(std::move(profile));
     if (!writes)
       return;
     const Kinematics &kinematics = analysis.get_kinematics();
@@ -318,7 +318,8 @@ namespace thinlayer
       write_file(list + ".pvd", pvd.str());
     };
     for (const NamedProfile &profile : profiles)
-      write(profile.name, profile.profile);
+      if (gauss_point_profiles || !profile.gauss_points)
+        write(profile.name, profile.profile);
   }
 
 

@@ -239,17 +239,14 @@ namespace thinlayer
 
 
   Profile
-  LayerProfile<2>::profile(const AnalysisView<2> &analysis,
-                           const bool             recovered) const
+  LayerProfile<2>::profile(const AnalysisView<2> &analysis) const
   {
     Profile result;
     result.samples = places;
     for (unsigned int station = 0;
          station < analysis.get_kinematics().n_stations();
          ++station)
-      result.stations.push_back(recovered
-                                  ? evaluate_recovered(analysis, station)
-                                  : evaluate(analysis, station));
+      result.stations.push_back(evaluate(analysis, station));
     return result;
   }
 

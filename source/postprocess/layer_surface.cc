@@ -184,13 +184,11 @@ namespace thinlayer
 
 
   Profile
-  LayerProfile<3>::profile(const AnalysisView<3> &analysis,
-                           const bool             recovered) const
+  LayerProfile<3>::profile(const AnalysisView<3> &analysis) const
   {
     Profile result;
     result.surface_samples = places;
-    result.stations.push_back(recovered ? evaluate_recovered(analysis, 0)
-                                        : evaluate(analysis, 0));
+    result.stations.push_back(evaluate(analysis, 0));
     return result;
   }
 

@@ -16,6 +16,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <mpi.h>
@@ -161,6 +162,23 @@ namespace run_results
             rows.back()[name] = std::atof(value.c_str());
       }
     return rows;
+  }
+
+  /// Of the column @p field of a profile's @p rows, in order along the
+  /// interface: the largest magnitude, and the largest difference between
+  /// neighbouring rows (an empty profile: infinity, 0).
+  inline std::pair<double, double>
+  spread(const Table &rows, const std::string &field)
+  {
+    double largest = rows.empty() ? 1e300 : 0, jump = 0;
+    for (unsigned int k = 0; k < rows.size(); ++k)
+      {
+        largest = std::max(largest, std::abs(rows[k].at(field)));
+        if (k > 0)
+          jump =
+            std::max(jump, std::abs(rows[k].at(field) - rows[k - 1].at(field)));
+      }
+    return {largest, jump};
   }
 
   /// The newest of the files @p directory/@p prefix NNNN.csv (the last

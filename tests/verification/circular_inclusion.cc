@@ -108,16 +108,7 @@ namespace
     std::sort(profile.begin(), profile.end(), [](const auto &a, const auto &b) {
       return a.at("arc_length") < b.at("arc_length");
     });
-    double largest = 0, jump = 0;
-    for (unsigned int k = 0; k < profile.size(); ++k)
-      {
-        largest = std::max(largest, std::abs(profile[k].at("normal_traction")));
-        if (k > 0)
-          jump = std::max(jump,
-                          std::abs(profile[k].at("normal_traction") -
-                                   profile[k - 1].at("normal_traction")));
-      }
-    return {profile.empty() ? 1e300 : largest, jump};
+    return run_results::spread(profile, "normal_traction");
   }
 
 

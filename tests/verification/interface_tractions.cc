@@ -129,15 +129,8 @@ main()
         shortest = std::min(shortest, side);
         longest  = std::max(longest, side);
       }
-    double largest = profile.empty() ? 1e300 : 0, jump = 0;
-    for (unsigned int k = 0; k < profile.size(); ++k)
-      {
-        largest = std::max(largest, std::abs(profile[k].at("normal_traction")));
-        if (k > 0)
-          jump = std::max(jump,
-                          std::abs(profile[k].at("normal_traction") -
-                                   profile[k - 1].at("normal_traction")));
-      }
+    const auto [largest, jump] =
+      run_results::spread(profile, "normal_traction");
     std::printf("the pile section refined adaptively, last of %u cycles:\n",
                 cycles);
     expect(cycles > 1 && profile.size() % 3 == 0 && longest >= 1.9 * shortest,

@@ -207,16 +207,14 @@ namespace thinlayer
              const bool         pending) const override;
     /// @}
 
-    /// The profile of curve @p curve at its integration points: with the
-    /// displacements @p solution plus, where @p pending, the step's
-    /// @p step_increment; its tractions @p recovered at the nodes or
-    /// those of the points.
+    /// The profile of curve @p curve, its values those of the integration
+    /// points: with the displacements @p solution plus, where @p pending,
+    /// the step's @p step_increment.
     Profile
     profile(const types::boundary_id curve,
             const ModeVectors       &solution,
             const ModeVectors       &step_increment,
-            const bool               pending,
-            const bool               recovered = true) const;
+            const bool               pending) const;
 
   private:
     /// One term of the jump operator: the side-signed shape value of a

@@ -97,6 +97,14 @@ namespace thinlayer
     void
     recover(std::vector<InterfaceValues> &values) const;
 
+    /// The same at every station of @p profile.
+    void
+    recover(Profile &profile) const
+    {
+      for (std::vector<InterfaceValues> &values : profile.stations)
+        recover(values);
+    }
+
     /// One more than the largest sample of the elements added.
     unsigned int
     n_samples() const

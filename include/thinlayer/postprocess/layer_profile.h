@@ -40,7 +40,7 @@ namespace thinlayer
    *   eps shows eps d, d the offset between those points, t n where the
    *   short sides are normal to the layer);
    * - tractions: the stress averaged over the Gauss points across the
-   *   thickness, on the layer's plane; in profile() recovered at the
+   *   thickness, on the layer's plane; recover() recovers them at the
    *   layer's nodes along its mid-line (TractionRecovery: each cell an
    *   element of the mid-line, its nodes on the short sides), evaluated at
    *   the samples.
@@ -63,11 +63,10 @@ namespace thinlayer
                  const types::material_id material_id,
                  const std::string       &parameter_file);
 
-    /// The values at every sample and station (every rank calls it), the
-    /// tractions @p recovered at the layer's nodes (TractionRecovery) or
-    /// those of the Gauss points.
+    /// The values at every sample and station, those of the Gauss points
+    /// (every rank calls it); recover() recovers its tractions.
     Profile
-    profile(const AnalysisView<2> &analysis, const bool recovered = true) const;
+    profile(const AnalysisView<2> &analysis) const;
 
     /**
      * Cell averages of slip, opening, shear and normal traction at station
@@ -115,9 +114,9 @@ namespace thinlayer
    *   faces of the cell at the sample, differenced (the + face minus the -
    *   face);
    * - tractions: the stress averaged over the Gauss points across the
-   *   thickness, sigma n along t1, t2 and n; in profile() recovered at the
-   *   corners of the cells' mid-surfaces (TractionRecovery), evaluated at
-   *   the samples.
+   *   thickness, sigma n along t1, t2 and n; recover() recovers them at
+   *   the corners of the cells' mid-surfaces (TractionRecovery), evaluated
+   *   at the samples.
    *
    * The output is a surface: each sample stands for the patch of its
    * cell's mid-surface around it.
@@ -133,7 +132,7 @@ namespace thinlayer
 
     /// As LayerProfile<2>'s.
     Profile
-    profile(const AnalysisView<3> &analysis, const bool recovered = true) const;
+    profile(const AnalysisView<3> &analysis) const;
 
     std::vector<Vector<double>>
     cell_fields(const AnalysisView<3> &analysis,

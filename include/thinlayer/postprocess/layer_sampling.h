@@ -83,15 +83,12 @@ namespace thinlayer
       return evaluate_layer(analysis, samples, station);
     }
 
-    /// As evaluate(), the tractions recovered at the layer's nodes along
-    /// its mid-line or mid-surface (TractionRecovery).
-    std::vector<InterfaceValues>
-    evaluate_recovered(const AnalysisView<dim> &analysis,
-                       const unsigned int       station) const
+    /// The tractions of @p profile, one of this layer's, recovered at the
+    /// layer's nodes along its mid-line or mid-surface (TractionRecovery).
+    void
+    recover(Profile &profile) const
     {
-      std::vector<InterfaceValues> values = evaluate(analysis, station);
-      recovery.recover(values);
-      return values;
+      recovery.recover(profile);
     }
 
   protected:
