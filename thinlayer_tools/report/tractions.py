@@ -239,7 +239,9 @@ def map_figure(runs):
     return figures.data_uri(fig, dpi=80)
 
 
-def tractions(runs, quick):
+def truth_table(runs):
+    """The table of the truths, raw beside recovered, and whether every
+    one holds."""
     table = [["scene", "truth asked", "at the Gauss points", "recovered (written)", "holds"]]
     good = True
 
@@ -294,7 +296,11 @@ def tractions(runs, quick):
     add("Case 3 in 3D, interface elements, at sliding (c = 1)",
         "|tau| = c within %g%% of c under the footing" % (100 * SLIDING_WITHIN),
         "%.2f%%" % (100 * off[0]), "%.2f%%" % (100 * off[1]), off[1] <= SLIDING_WITHIN)
+    return table, good
 
+
+def tractions(runs, quick):
+    table, good = truth_table(runs)
     names = [name for name, _, _ in run_list(quick)]
     why = ("What every run writes along an interface (NAME-NNNN.csv, .vtu) are its tractions "
            "recovered at the nodes: the interface's nodal forces (the Gauss points' "
